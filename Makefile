@@ -1,0 +1,37 @@
+# The README's commands. Each target does the set-up it needs, once:
+#   make run    set up if needed, then run the main demo
+#   make test   set up if needed, then ruff and pytest
+#   make setup  only the set-up (venv, install, interface generation)
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+INSTALLED := $(VENV)/.installed
+INTERFACES := $(VENV)/.interfaces
+INTERFACE_SOURCES := $(wildcard interfaces/CMakeLists.txt interfaces/package.xml \
+	interfaces/cmake/*.cmake interfaces/msg/*.msg interfaces/srv/*.srv interfaces/action/*.action)
+
+.PHONY: setup run test lint bench clean
+
+setup: $(INTERFACES)
+
+$(INSTALLED): pyproject.toml
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -e '.[test,interfaces]'
+	touch $@
+
+$(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
+	$(PY) tools/build_interfaces.py
+	touch $@
+
+run: setup
+	$(PY) -m ros_tutorials_topic.demo
+
+lint: setup
+	$(VENV)/bin/ruff check .
+
+test: lint
+	$(PY) -m pytest
+
+clean:
+	rm -rf $(VENV) build

@@ -1,0 +1,105 @@
+"""Helpers for tests: spin until something happens, and run tutorial executables as processes.
+
+Timeouts are generous (tests must pass on a loaded 2-core machine) and fail with a message
+saying what was awaited; nothing here sleeps and hopes.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable
+
+import pytest
+from rclpy.executors import Executor
+
+TIMEOUT = 30.0
+
+
+def spin_until(
+    executor: Executor,
+    condition: Callable[[], bool],
+    timeout: float = TIMEOUT,
+    what: str = "condition",
+) -> None:
+    """Spin until condition() is true; fail the test clearly after timeout seconds."""
+    deadline = time.monotonic() + timeout
+    while not condition():
+        if time.monotonic() > deadline:
+            pytest.fail(f"timed out after {timeout:.0f} s waiting for {what}")
+        executor.spin_once(timeout_sec=0.05)
+
+
+class NodeProcess:
+    """A tutorial executable run as a real process, its output collected line by line."""
+
+    def __init__(self, *args: str, env: dict[str, str] | None = None) -> None:
+        self.args = [sys.executable, *args]
+        self.lines: list[str] = []
+        self._changed = threading.Condition()
+        self.process = subprocess.Popen(
+            self.args,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})},
+            start_new_session=True,
+        )
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        assert self.process.stdout is not None
+        for line in self.process.stdout:
+            with self._changed:
+                self.lines.append(line.rstrip("\n"))
+                self._changed.notify_all()
+        with self._changed:
+            self._changed.notify_all()
+
+    @property
+    def output(self) -> str:
+        with self._changed:
+            return "\n".join(self.lines)
+
+    def wait_for_output(
+        self, condition: Callable[[list[str]], bool], timeout: float = TIMEOUT, what: str = "output"
+    ) -> list[str]:
+        """Wait until condition(lines) holds; fail with the output so far after timeout."""
+        deadline = time.monotonic() + timeout
+        with self._changed:
+            while not condition(self.lines):
+                remaining = deadline - time.monotonic()
+                if remaining <= 0 or (
+                    self.process.poll() is not None and not self._reader.is_alive()
+                ):
+                    pytest.fail(
+                        f"{what} not seen from {' '.join(self.args[1:])}; "
+                        f"output was:\n" + "\n".join(self.lines[-40:])
+                    )
+                self._changed.wait(min(remaining, 0.5))
+            return list(self.lines)
+
+    def interrupt(self, timeout: float = TIMEOUT) -> int:
+        """Ctrl-C the process (SIGINT) and return its exit code."""
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGINT)
+        return self.wait(timeout)
+
+    def wait(self, timeout: float = TIMEOUT) -> int:
+        try:
+            code = self.process.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.kill()
+            pytest.fail(f"{' '.join(self.args[1:])} did not exit within {timeout:.0f} s")
+        self._reader.join(timeout)
+        return code
+
+    def kill(self) -> None:
+        if self.process.poll() is None:
+            os.killpg(self.process.pid, signal.SIGKILL)
+            self.process.wait()
