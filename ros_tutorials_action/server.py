@@ -28,6 +28,7 @@ from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.action.server import ServerGoalHandle
 from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.context import Context
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -207,9 +208,9 @@ def _wait_until_canceling(goal_handle: ServerGoalHandle, timeout: float = 5.0) -
         time.sleep(0.001)
 
 
-def make_executor() -> MultiThreadedExecutor:
+def make_executor(context: Context | None = None) -> MultiThreadedExecutor:
     """One thread executes the goal while others answer goal, cancel and result requests."""
-    return MultiThreadedExecutor(num_threads=4)
+    return MultiThreadedExecutor(num_threads=4, context=context)
 
 
 def main() -> int:
