@@ -131,10 +131,11 @@ class FibonacciActionServer(Node):
     def on_cancel(self, goal_handle: ServerGoalHandle) -> CancelResponse:
         with self._runs_changed:
             run = self._runs.get(_key(goal_handle))
-            if run is None:  # already finished: nothing to cancel
-                return CancelResponse.REJECT
-            run.cancel_requested = True
-            run.wake.set()
+            # No run yet: the goal was accepted but on_accepted has not run; execute() will see
+            # goal_handle.is_cancel_requested. (rclpy does not ask about finished goals.)
+            if run is not None:
+                run.cancel_requested = True
+                run.wake.set()
         return CancelResponse.ACCEPT
 
     def execute(self, goal_handle: ServerGoalHandle) -> Fibonacci.Result:
@@ -147,7 +148,7 @@ class FibonacciActionServer(Node):
             f"with seeds {sequence[0]}, {sequence[1]}"
         )
         for _ in range(order):
-            if run.wake.is_set() or self._stopping:
+            if run.wake.is_set() or self._stopping or goal_handle.is_cancel_requested:
                 break
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
@@ -161,7 +162,7 @@ class FibonacciActionServer(Node):
         a cancel or a new goal cannot change its fate half way."""
         goal_handle, log = run.goal_handle, self.get_logger()
         with self._runs_changed:
-            if run.cancel_requested:
+            if run.cancel_requested or goal_handle.is_cancel_requested:
                 _wait_until_canceling(goal_handle)
                 goal_handle.canceled()
                 log.info(f"{ACTION_NAME}: Canceled")
