@@ -2,6 +2,7 @@
 #   make run    set up if needed, then run the main demo
 #   make test   set up if needed, then ruff and pytest
 #   make setup  only the set-up (venv, install, interface generation)
+#   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -32,6 +33,9 @@ lint: setup
 
 test: lint
 	$(PY) -m pytest
+
+bench: setup
+	$(PY) -m benchmarks
 
 clean:
 	rm -rf $(VENV) build
