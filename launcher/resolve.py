@@ -193,14 +193,16 @@ def _check(element: Element, allowed: set[str]) -> None:
         raise element.error("use either 'if' or 'unless', not both")
 
 
-def _check_tag(element: Element, allowed: set[str], fmt: str, parent: str) -> None:
+def _check_tag(
+    element: Element, allowed: set[str], fmt: str, parent: str, attrs: set[str] | None = None
+) -> None:
     if element.tag not in allowed:
         syntax = "ROS 1 (roslaunch)" if fmt == "ros1" else "ROS 2"
         known = ", ".join(f"<{tag}>" for tag in sorted(allowed))
         raise element.error(
             f"unknown tag <{element.tag}> in <{parent}> ({syntax} format); allowed: {known}"
         )
-    _check(element, (ROS1_TAGS if fmt == "ros1" else ROS2_TAGS)[element.tag])
+    _check(element, attrs or (ROS1_TAGS if fmt == "ros1" else ROS2_TAGS)[element.tag])
 
 
 def _file_args(root: Element) -> list[Element]:
@@ -416,8 +418,7 @@ class Resolver:
         pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
         given = dict(scope.args) if pass_all else {}
         for child in element.children:
-            _check_tag(child, {"arg"}, scope.fmt, "include")
-            _check(child, {"name", "value"})
+            _check_tag(child, {"arg"}, scope.fmt, "include", {"name", "value"})
             if self.enabled(child, scope):
                 given[self.text(child, "name", scope)] = self.text(child, "value", scope)
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
