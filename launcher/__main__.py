@@ -42,7 +42,12 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         "-s", "--show-args", action="store_true", help="list the file's arguments, and exit"
     )
-    parser.add_argument("-d", "--debug", action="store_true", help="show tracebacks of errors")
+    parser.add_argument(
+        "-d",
+        "--debug",
+        action="store_true",
+        help="show tracebacks of errors and each command line as it starts",
+    )
     parser.add_argument(
         "--allow-code",
         action="store_true",
@@ -157,7 +162,7 @@ def main(argv: list[str] | None = None) -> int:
 
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)
-    return Supervisor(specs, make_log_dir()).run()
+    return Supervisor(specs, make_log_dir(), options.debug).run()
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import os
+import shlex
 import signal
 import subprocess
 import sys
@@ -129,7 +130,8 @@ class Child:
 
 
 class Supervisor:
-    def __init__(self, specs: list[ProcessSpec], log_dir: Path) -> None:
+    def __init__(self, specs: list[ProcessSpec], log_dir: Path, debug: bool = False) -> None:
+        self.debug = debug
         self.children = [Child(spec, log_dir) for spec in specs]
         self.log_dir = log_dir
         self.launcher_pid = os.getpid()
@@ -140,22 +142,26 @@ class Supervisor:
         self.failed = False
 
     def say(self, text: str) -> None:
-        with self.output_lock:
-            print(f"[launcher] {text}", flush=True)
+        self.show(f"[launcher] {text}", sys.stdout)
+
+    def show(self, line: str, screen: IO[str]) -> None:
+        # A closed terminal or pipe (launcher | head) must not stop the supervision.
+        with self.output_lock, contextlib.suppress(OSError, ValueError):
+            print(line, file=screen, flush=True)
 
     def run(self) -> int:
         """Start everything, watch until done or told to stop, shut down. The exit code."""
-        self.guardian = Guardian()
         handled = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
         previous = {sig: signal.signal(sig, self._on_signal) for sig in handled}
+        self.guardian = Guardian()
         try:
             self.say(f"logging to {self.log_dir}")
             try:
                 for child in self.children:
                     self.start(child)
                 self.watch()
-            except OSError as error:
-                self.say(f"cannot start {error.filename or 'a process'}: {error.strerror}")
+            except (OSError, subprocess.SubprocessError) as error:
+                self.say(f"cannot start a process: {error}")
                 self.failed = True
             self.shutdown()
         finally:
@@ -209,6 +215,8 @@ class Supervisor:
             self._reader(child, child.process.stderr, sys.stderr),
         ]
         self.say(f"started {spec.label} (pid {child.process.pid})")
+        if self.debug:
+            self.say(f"  command: {shlex.join(spec.command)}")
 
     def _reader(
         self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None
@@ -223,8 +231,7 @@ class Supervisor:
                     log.flush()
                     if screen is not None:
                         line = raw.decode(errors="replace").rstrip("\n")
-                        with self.output_lock:
-                            print(f"[{label}] {line}", file=screen, flush=True)
+                        self.show(f"[{label}] {line}", screen)
             stream.close()
 
         thread = threading.Thread(target=pump, daemon=True)
