@@ -26,7 +26,7 @@ $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 	touch $@
 
 run: setup
-	$(PY) -m ros_tutorials_topic.demo
+	$(PY) -m launcher union.launch
 
 lint: setup
 	$(VENV)/bin/ruff check .
