@@ -11,6 +11,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 import rclpy
+from rclpy.exceptions import ParameterException
 from rclpy.executors import ExternalShutdownException
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.node import Node
@@ -40,7 +41,11 @@ def init(argv: Sequence[str] | None = None) -> None:
 
 
 def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -> int:
-    """Create a node, spin it until Ctrl-C or shutdown, then clean up. Returns the exit code."""
+    """Create a node, spin it until Ctrl-C or shutdown, then clean up. Returns the exit code.
+
+    A parameter given at start that the node refuses (``-p calculation_method:=7``, or a
+    params file with a wrong type) ends the program with one clear line, not a traceback.
+    """
     init(argv)
     node = None
     try:
@@ -48,6 +53,8 @@ def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except ParameterException as error:
+        raise SystemExit(f"error: {error}") from None
     finally:
         if node is not None:
             node.destroy_node()
