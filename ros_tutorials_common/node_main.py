@@ -13,6 +13,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 import rclpy
+from rclpy.exceptions import ParameterException
 from rclpy.executors import Executor, ExternalShutdownException
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.node import Node
@@ -59,6 +60,9 @@ def run_node(
 
     The executor is rclpy's default (single-threaded) unless ``make_executor`` builds one;
     it is called after rclpy.init, since an executor belongs to an initialised context.
+
+    A parameter given at start that the node refuses (``-p calculation_method:=7``, or a
+    params file with a wrong type) ends the program with one clear line, not a traceback.
     """
     init(argv)
     node = None
@@ -69,6 +73,8 @@ def run_node(
         rclpy.spin(node, executor)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except ParameterException as error:
+        raise SystemExit(f"error: {error}") from None
     finally:
         # The node first: it may have work running in the executor's threads to stop.
         if node is not None:
