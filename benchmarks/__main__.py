@@ -1,6 +1,6 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]     groups: launch topic rate memory setup (default: all)
+python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup (default: all)
 """
 
 from __future__ import annotations
@@ -10,11 +10,12 @@ import datetime
 import os
 import platform
 
-from benchmarks import launch, memory, setup_time, topic
+from benchmarks import launch, memory, service, setup_time, topic
 from benchmarks.common import print_table, private_domain
 
 GROUPS = {
     "launch": lambda: launch.launch_and_shutdown() + launch.escalation(),
+    "service": service.round_trip,
     "topic": lambda: topic.latency() + topic.loss_and_throughput(),
     "rate": topic.rate_accuracy,
     "memory": memory.node_memory,
