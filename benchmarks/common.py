@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import statistics
@@ -93,6 +94,14 @@ def start(args: Sequence[str], **kwargs) -> subprocess.Popen:
 
 def python(*args: str) -> list[str]:
     return [sys.executable, *args]
+
+
+def run_worker(module: str, *args: str) -> dict:
+    """Run ``python -m module args`` to the end; its last stdout line is its JSON result."""
+    out = subprocess.run(
+        python("-m", module, *args), capture_output=True, text=True, timeout=300, check=True
+    )
+    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def stop(proc: subprocess.Popen, timeout: float = 10.0) -> None:

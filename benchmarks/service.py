@@ -3,10 +3,9 @@ beside a bare rclpy client -> bare rclpy server pair."""
 
 from __future__ import annotations
 
-import json
 import subprocess
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, start, stop
+from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, start, stop
 
 QUIET = ["--ros-args", "--log-level", "warn"]
 SERVERS = {
@@ -25,14 +24,7 @@ def _round_trips(kind: str, count: int) -> list[float]:
     server = start(SERVERS[kind], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         args = [*CLIENTS[kind], str(count), *(QUIET if kind == "quiet" else [])]
-        out = subprocess.run(
-            python("-m", "benchmarks.service_worker", *args),
-            capture_output=True,
-            text=True,
-            timeout=300,
-            check=True,
-        )
-        return json.loads(out.stdout.strip().splitlines()[-1])["round_trip"]
+        return run_worker("benchmarks.service_worker", *args)["round_trip"]
     finally:
         stop(server)
 

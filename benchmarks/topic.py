@@ -14,20 +14,13 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, start
+from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, start
 
 QUIET = ["--ros-args", "--log-level", "warn"]
 
 
 def _worker(*args: str) -> dict:
-    out = subprocess.run(
-        python("-m", "benchmarks.topic_worker", *args),
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=True,
-    )
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return run_worker("benchmarks.topic_worker", *args)
 
 
 def latency(count: int = 2000, rounds: int = 3) -> list[Row]:
