@@ -52,11 +52,18 @@ def definition_text(
     return "\n".join(lines)
 
 
+def type_name_argument(type_name: str) -> str:
+    """'-' means: read the name from standard input (`rosservice type /spawn | rossrv show`)."""
+    if type_name != "-":
+        return type_name
+    type_name = sys.stdin.readline().strip()
+    if not type_name:
+        raise ToolError("no type name given, and none on standard input")
+    return type_name
+
+
 def show(type_name: str, ros1_style: bool = False) -> None:
-    if type_name == "-":  # `rosservice type /spawn | rossrv show`
-        type_name = sys.stdin.readline().strip()
-        if not type_name:
-            raise ToolError("no type name on standard input")
+    type_name = type_name_argument(type_name)
     package, kind, base = parse_type_name(type_name)
     if ros1_style:
         if "/" not in type_name:  # rosmsg says which package it found the name in

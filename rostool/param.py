@@ -9,6 +9,7 @@ refused value comes back with the node's reason.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -69,6 +70,14 @@ def get_values(graph: Graph, node: str, params: list[str]) -> dict[str, Any]:
 
 def set_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
     """Set parameters on a node; a value the node refuses is a ToolError with its reason."""
+    refused = try_set_values(graph, node, values)
+    if refused:
+        name, reason = next(iter(refused.items()))
+        raise ToolError(f"setting '{name}' on {_node_name(node)} failed: {reason}")
+
+
+def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str, str]:
+    """Set parameters on a node, each on its own; return {name: reason} of those refused."""
     node = _node_name(node)
     try:
         params = [Parameter(name, value=value).to_parameter_msg() for name, value in values.items()]
@@ -76,9 +85,26 @@ def set_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
         raise ToolError(f"cannot use that value as a parameter: {error}") from None
     request = SetParameters.Request(parameters=params)
     response = _call(graph, node, SetParameters, "set_parameters", request)
-    for name, result in zip(values, response.results, strict=True):
-        if not result.successful:
-            raise ToolError(f"setting '{name}' on {node} failed: {result.reason}")
+    return {
+        name: result.reason
+        for name, result in zip(values, response.results, strict=True)
+        if not result.successful
+    }
+
+
+def load_file(graph: Graph, node: str, path: str) -> None:
+    """Set what a params file gives a node; like ros2, report refused ones and go on.
+
+    A dump holds read-only parameters too (start_type_description_service), which no node
+    accepts at run time; loading that dump back should still set everything else.
+    """
+    values = params_from_file(path, _node_name(node))
+    refused = try_set_values(graph, node, values)
+    for name in values:
+        if name in refused:
+            print(f"Set parameter {name} failed: {refused[name]}", file=sys.stderr)
+        else:
+            print(f"Set parameter {name} successful")
 
 
 def dump_data(graph: Graph, node: str) -> dict[str, Any]:
@@ -156,12 +182,6 @@ def dump_command(graph: Graph, node: str) -> None:
     print(yaml.safe_dump(dump_data(graph, node), default_flow_style=False).rstrip())
 
 
-def load_command(graph: Graph, node: str, path: str) -> None:
-    for name, value in params_from_file(path, _node_name(node)).items():
-        set_values(graph, node, {name: value})
-        print(f"Set parameter {name} successful")
-
-
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     parser = verbs.add_parser("param", help="parameters: list, get, set, dump, load")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
@@ -188,4 +208,4 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p = sub.add_parser("load", parents=[common], help="set a node's parameters from a params file")
     p.add_argument("node")
     p.add_argument("file")
-    p.set_defaults(run=lambda graph, a: load_command(graph, a.node, a.file))
+    p.set_defaults(run=lambda graph, a: load_file(graph, a.node, a.file))

@@ -9,6 +9,7 @@ import sys
 import time
 from collections import deque
 from itertools import pairwise
+from typing import Any
 
 import yaml
 from rclpy.duration import Duration
@@ -102,9 +103,10 @@ def echo(
     graph: Graph,
     topic: str,
     type_name: str | None = None,
-    once: bool = False,
+    count: int | None = None,
     field: str | None = None,
 ) -> None:
+    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
     topic = absolute_name(topic)
     msg_type = _message_type(graph, topic, type_name)
     received: deque = deque()
@@ -112,6 +114,7 @@ def echo(
     graph.node.create_subscription(
         msg_type, topic, lambda msg: received.append(msg), compatible_qos(graph, topic)
     )
+    printed = 0
     while True:
         graph.spin_once(0.1)
         while received:
@@ -122,7 +125,8 @@ def echo(
                 value = _pick_field(message_to_data(msg), field)
                 print(_field_text(value))
             print("---", flush=True)
-            if once:
+            printed += 1
+            if printed == count:
                 return
 
 
@@ -136,22 +140,18 @@ def pub(
     graph: Graph,
     topic: str,
     type_name: str,
-    values_yaml: str = "{}",
+    values: Any = None,
     rate: float | None = DEFAULT_PUB_RATE,
     times: int | None = None,
     latch: bool = False,
-    positional: list[str] | None = None,
 ) -> None:
-    """Publish a message built from YAML: `times` times (None: until Ctrl-C) at `rate` Hz.
+    """Publish a message filled from values: `times` times (None: until Ctrl-C) at `rate` Hz.
 
     rate=None publishes once and keeps the publisher alive until Ctrl-C (ROS 1's latching
     mode, with a transient-local publisher so late subscribers that ask for it still get it).
     """
     topic = absolute_name(topic)
     msg_type = load_type(type_name, ("msg",))
-    values = [parse_yaml(v) for v in positional] if positional else parse_yaml(values_yaml)
-    if positional and len(positional) == 1:
-        values = values[0]  # a single value: a dict of fields, or the only field's value
     msg = fill_message(msg_type(), values)
     qos = QoSProfile(depth=10)
     if latch:
@@ -248,7 +248,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("type", nargs="?", help="message type (default: the one in the graph)")
     p.add_argument("--once", action="store_true", help="print one message and exit")
     p.add_argument("--field", help="print only this field, e.g. stamp.sec")
-    p.set_defaults(run=lambda graph, a: echo(graph, a.topic, a.type, a.once, a.field))
+    p.set_defaults(
+        run=lambda graph, a: echo(graph, a.topic, a.type, 1 if a.once else None, a.field)
+    )
 
     p = sub.add_parser("pub", parents=[common], help="publish a message given as YAML")
     p.add_argument("topic")
@@ -260,7 +262,12 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     group.add_argument("-t", "--times", type=int, help="publish this many messages, then exit")
     p.set_defaults(
         run=lambda graph, a: pub(
-            graph, a.topic, a.type, a.values, _positive(a.rate, "rate"), 1 if a.once else a.times
+            graph,
+            a.topic,
+            a.type,
+            parse_yaml(a.values),
+            positive_rate(a.rate),
+            1 if a.once else a.times,
         )
     )
 
@@ -285,7 +292,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.set_defaults(run=lambda graph, a: find(graph, a.type))
 
 
-def _positive(value: float, what: str) -> float:
+def positive_rate(value: float) -> float:
     if value <= 0:
-        raise ToolError(f"{what} must be positive, got {value:g}")
+        raise ToolError(f"the rate must be positive, got {value:g}")
     return value
