@@ -25,7 +25,7 @@ from ros_tutorials_common import init
 from rostool.errors import ToolError
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
-DEFAULT_SPIN_TIME = 3.0  # the most a listing command waits for discovery
+DEFAULT_SPIN_TIME = 4.0  # the most a listing command waits for discovery (slow case ~3 s)
 QUIET_TIME = 0.25  # a listing is complete once the graph has not changed for this long
 POLL_PERIOD = 0.02
 

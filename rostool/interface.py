@@ -62,9 +62,9 @@ def type_name_argument(type_name: str) -> str:
     return type_name
 
 
-def show(type_name: str, ros1_style: bool = False) -> None:
+def show(type_name: str, ros1_style: bool = False, kinds: tuple[str, ...] = KINDS) -> None:
     type_name = type_name_argument(type_name)
-    package, kind, base = parse_type_name(type_name)
+    package, kind, base = parse_type_name(type_name, kinds)
     if ros1_style:
         if "/" not in type_name:  # rosmsg says which package it found the name in
             print(f"[{package}/{base}]:")

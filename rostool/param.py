@@ -60,6 +60,9 @@ def get_values(graph: Graph, node: str, params: list[str]) -> dict[str, Any]:
     node = _node_name(node)
     request = GetParameters.Request(names=params)
     response = _call(graph, node, GetParameters, "get_parameters", request)
+    if len(response.values) != len(params):  # rclpy answers nothing for unknown names
+        missing = set(params) - set(names(graph, node))
+        raise ToolError(f"node '{node}' has no parameter '{', '.join(sorted(missing))}'")
     values = {}
     for name, value in zip(params, response.values, strict=True):
         if value.type == ParameterType.PARAMETER_NOT_SET:

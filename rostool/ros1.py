@@ -305,7 +305,7 @@ def _show(type_name: str, kind: str) -> None:
     if type_name.count("/") == 1:  # ROS 1's pkg/Name: this tool says which kind
         package, base = type_name.split("/")
         type_name = f"{package}/{kind}/{base}"
-    interface.show(type_name, ros1_style=True)
+    interface.show(type_name, ros1_style=True, kinds=(kind,))
 
 
 def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:

@@ -49,20 +49,18 @@ def call(
     `rosservice call` did (``result: 15``). Returns the response.
     """
     service = absolute_name(service)
-    srv_type = load_type(type_name or graph.wait_for_service_type(service), ("srv",))
-    request = fill_message(srv_type.Request(), values)
+    srv_type = load_type(type_name, ("srv",)) if type_name else None
+    request = fill_message(srv_type.Request(), values) if srv_type else None  # check input first
+    offered = graph.wait_for_service_type(service)
+    if srv_type is None:
+        srv_type = load_type(offered, ("srv",))
+        request = fill_message(srv_type.Request(), values)
+    elif full_type_name(srv_type) != offered:
+        raise ToolError(f"service '{service}' has type {offered}, not {full_type_name(srv_type)}")
     client = graph.node.create_client(srv_type, service)
     if not ros1_output:
         print(f"requester: making request: {request}\n", flush=True)
-    try:
-        response = graph.call(client, request, f"cannot call '{service}'")
-    except ToolError:
-        offered = graph.service_types().get(service)
-        if offered and full_type_name(srv_type) not in offered:
-            raise ToolError(
-                f"service '{service}' has type {offered[0]}, not {full_type_name(srv_type)}"
-            ) from None
-        raise
+    response = graph.call(client, request, f"cannot call '{service}'")
     print(message_to_yaml(response) if ros1_output else f"response:\n{response}")
     return response
 

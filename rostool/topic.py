@@ -164,10 +164,16 @@ def pub(
         except ToolError:
             print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     if rate is None:
-        publisher.publish(msg)
         print("publishing and latching message. Press ctrl-C to terminate", flush=True)
+        served = 0
         while True:
-            graph.spin_once(1.0)
+            # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
+            # subscription would miss one sent before it matched, so send it again on each join.
+            subscribers = publisher.get_subscription_count()
+            if subscribers > served:
+                publisher.publish(msg)
+            served = subscribers
+            graph.spin_once(0.1)
     print("publisher: beginning loop", flush=True)
     count = 0
     next_time = time.monotonic()
