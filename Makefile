@@ -2,6 +2,7 @@
 #   make run    set up if needed, then run the main demo
 #   make test   set up if needed, then ruff and pytest
 #   make setup  only the set-up (venv, install, interface generation)
+#   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -25,13 +26,16 @@ $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 	touch $@
 
 run: setup
-	$(PY) -m ros_tutorials_topic.demo
+	$(PY) -m launcher union.launch
 
 lint: setup
 	$(VENV)/bin/ruff check .
 
 test: lint
 	$(PY) -m pytest
+
+bench: setup
+	$(PY) -m benchmarks
 
 clean:
 	rm -rf $(VENV) build

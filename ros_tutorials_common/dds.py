@@ -8,10 +8,17 @@ before rclpy.init(), which is when rcl reads it; the launcher passes it to its c
 
 from __future__ import annotations
 
+import fcntl
 import os
+import random
+import tempfile
 from collections.abc import MutableMapping
+from pathlib import Path
+from typing import IO
 
 DDS_DEFAULTS = {"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+# Every RMW accepts domain ids 0..101 (Fast DDS maps them to ports); 0 is everyone's default.
+PRIVATE_DOMAIN_IDS = range(1, 102)
 
 
 def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMapping[str, str]:
@@ -21,3 +28,24 @@ def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMa
     for name, value in DDS_DEFAULTS.items():
         env.setdefault(name, value)
     return env
+
+
+def claim_private_domain_id() -> tuple[int, IO[str]]:
+    """Claim a ROS_DOMAIN_ID no other test run or benchmark on this machine holds.
+
+    Each id has a lock file; the returned handle holds the lock until it is closed (or the
+    process ends), so concurrent runs never see each other's nodes.
+    """
+    lock_dir = Path(tempfile.gettempdir()) / "ros_tutorials_domains"
+    lock_dir.mkdir(exist_ok=True)
+    candidates = list(PRIVATE_DOMAIN_IDS)
+    random.shuffle(candidates)
+    for domain_id in candidates:
+        handle = open(lock_dir / f"{domain_id}.lock", "w")  # noqa: SIM115 - held by the caller
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            handle.close()
+            continue
+        return domain_id, handle
+    raise RuntimeError("no free ROS_DOMAIN_ID: every id in 1..101 is held by another run")

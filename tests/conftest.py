@@ -1,18 +1,14 @@
 """Shared fixtures: a private ROS domain per test session, rclpy contexts, processes.
 
-Every pytest session claims a ROS_DOMAIN_ID nobody else on this machine holds (an flock on a
-file per id), so concurrent test runs, benchmarks and demos never see each other's nodes.
+Every pytest session claims a ROS_DOMAIN_ID nobody else on this machine holds, so
+concurrent test runs, benchmarks and demos never see each other's nodes.
 The DDS defaults (localhost only) are applied before anything initialises rclpy.
 """
 
 from __future__ import annotations
 
-import fcntl
 import os
-import random
-import tempfile
 from collections.abc import Callable, Iterator
-from pathlib import Path
 
 import pytest
 import rclpy
@@ -20,32 +16,13 @@ from helpers import NodeProcess
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 
-from ros_tutorials_common import apply_dds_defaults
-
-# Fast DDS maps domain ids 0..232 to ports; stay in the range every RMW accepts.
-DOMAIN_IDS = range(1, 102)
-
-
-def _claim_domain_id() -> tuple[int, object]:
-    lock_dir = Path(tempfile.gettempdir()) / "ros_tutorials_domains"
-    lock_dir.mkdir(exist_ok=True)
-    candidates = list(DOMAIN_IDS)
-    random.shuffle(candidates)
-    for domain_id in candidates:
-        handle = open(lock_dir / f"{domain_id}.lock", "w")  # noqa: SIM115 - held for the session
-        try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            handle.close()
-            continue
-        return domain_id, handle
-    raise RuntimeError("no free ROS_DOMAIN_ID: every id in 1..101 is held by another run")
+from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 
 
 @pytest.fixture(scope="session", autouse=True)
 def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     """This session's own ROS_DOMAIN_ID, set in os.environ for rclpy and for child processes."""
-    domain_id, lock = _claim_domain_id()
+    domain_id, lock = claim_private_domain_id()
     os.environ["ROS_DOMAIN_ID"] = str(domain_id)
     os.environ["ROS_LOG_DIR"] = str(tmp_path_factory.mktemp("ros_log"))
     apply_dds_defaults()

@@ -99,8 +99,12 @@ def test_nodes_take_standard_ros_arguments(node_process, context, executor):
     probe.create_subscription(MsgTutorial, "/demo/other_topic", received.append, 100)
     executor.add_node(probe)
     spin_until(executor, lambda: bool(received), what="a message on /demo/other_topic")
-    names = {(ns, name) for name, ns in probe.get_node_names_and_namespaces()}
-    assert ("/demo", "renamed") in names
+    # Node names travel separately from the data (ros_discovery_info): wait for them too.
+    spin_until(
+        executor,
+        lambda: ("renamed", "/demo") in probe.get_node_names_and_namespaces(),
+        what="node /demo/renamed in the ROS graph",
+    )
     assert publisher.interrupt() == 0
 
 

@@ -1,0 +1,45 @@
+"""make bench: every figure beside its baseline from the same run, printed as one table.
+
+python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup (default: all)
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import os
+import platform
+
+from benchmarks import launch, memory, service, setup_time, topic
+from benchmarks.common import print_table, private_domain
+
+GROUPS = {
+    "launch": lambda: launch.launch_and_shutdown() + launch.escalation(),
+    "service": service.round_trip,
+    "topic": lambda: topic.latency() + topic.loss_and_throughput(),
+    "rate": topic.rate_accuracy,
+    "memory": memory.node_memory,
+    "setup": setup_time.setup_times,
+}
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(prog="python -m benchmarks", description=__doc__)
+    parser.add_argument("groups", nargs="*", choices=[*GROUPS, []], default=list(GROUPS))
+    args = parser.parse_args()
+    domain = private_domain()
+    print(
+        f"# ros-tutorials benchmarks, {datetime.date.today()}, {platform.machine()}, "
+        f"{os.cpu_count()} cores, Python {platform.python_version()}, ROS_DOMAIN_ID={domain}"
+    )
+    rows = []
+    for name in args.groups or GROUPS:
+        print(f"# running {name} ...", flush=True)
+        rows += GROUPS[name]()
+    print()
+    print_table(rows)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

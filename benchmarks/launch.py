@@ -1,0 +1,130 @@
+"""Launcher figures (issue items 1, 2 and 7): launch to ready against a shell script,
+shutdown after Ctrl-C, escalation for a node that ignores SIGINT, the launcher's memory."""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import time
+from pathlib import Path
+
+from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, wait_for_lines
+
+HERE = Path(__file__).resolve().parent
+READY = ("[ns1.topic_subscriber]: recieve msg", "[ns2.topic_subscriber]: recieve msg")
+
+
+def descendants(pid: int) -> set[int]:
+    """Every live process below pid (children, grandchildren, ...)."""
+    parents: dict[int, int] = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as stat:
+                    parents[int(entry)] = int(stat.read().rsplit(")", 1)[1].split()[1])
+            except OSError:
+                continue
+    found, frontier = set(), {pid}
+    while frontier:
+        frontier = {child for child, parent in parents.items() if parent in frontier} - found
+        found |= frontier
+    return found
+
+
+def alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as stat:
+            return stat.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
+    """Start, wait until both subscribers heard their group, Ctrl-C, wait until all are gone.
+
+    Returns (seconds to ready, seconds from Ctrl-C to every process gone, launcher RSS MiB).
+    """
+    seen: set[str] = set()
+
+    def both_ready(line: str) -> bool:
+        seen.update(marker for marker in READY if marker in line)
+        return len(seen) == len(READY)
+
+    began = time.monotonic()
+    proc = start(args, env={"PYTHON": sys.executable})
+    if not wait_for_lines(proc, both_ready, timeout=120):
+        os.killpg(proc.pid, signal.SIGKILL)
+        raise RuntimeError(f"{args} never got both groups talking")
+    ready = time.monotonic() - began
+    rss = peak_rss_mib(proc.pid)
+    family = descendants(proc.pid) | {proc.pid}
+    stopping = time.monotonic()
+    os.kill(proc.pid, signal.SIGINT)  # Ctrl-C to the launcher alone, as a terminal would not
+    proc.communicate(timeout=60)
+    while any(alive(pid) for pid in family):
+        time.sleep(0.005)
+    return ready, time.monotonic() - stopping, rss
+
+
+def launch_and_shutdown(rounds: int = 10) -> list[Row]:
+    launcher = python("-m", "launcher", "union.launch")
+    shell = ["sh", str(HERE / "union.sh")]
+    results: dict[str, list[tuple[float, float, float]]] = {"launcher": [], "shell": []}
+    for _ in range(rounds):  # interleaved, so machine load hits both alike
+        results["launcher"].append(_ready_then_stop(launcher))
+        results["shell"].append(_ready_then_stop(shell))
+    ready = {k: [r[0] for r in v] for k, v in results.items()}
+    down = {k: [r[1] for r in v] for k, v in results.items()}
+    ratio = p50(ready["launcher"]) / p50(ready["shell"])
+    rss = max(r[2] for r in results["launcher"])
+    return [
+        Row(
+            f"union.launch to both groups talking, p50/p99 of {rounds}",
+            f"{p50(ready['launcher']):.2f} s / {p99(ready['launcher']):.2f} s",
+            f"{p50(ready['shell']):.2f} s / {p99(ready['shell']):.2f} s (shell script)",
+            ratio,
+            "ratio <= 1.15",
+            ratio <= 1.15,
+        ),
+        Row(
+            "Ctrl-C to every process gone, p50/p99",
+            f"{p50(down['launcher']):.2f} s / {p99(down['launcher']):.2f} s",
+            f"{p50(down['shell']):.2f} s / {p99(down['shell']):.2f} s (shell script)",
+            p50(down["launcher"]) / p50(down["shell"]),
+            "<= 1 s",
+            p99(down["launcher"]) <= 1.0,
+        ),
+        Row("peak RSS, the launcher process (union.launch)", f"{rss:.0f} MiB"),
+    ]
+
+
+def escalation(rounds: int = 3) -> list[Row]:
+    """A child that ignores SIGINT: the launcher must escalate to SIGTERM after 1 s."""
+    samples = []
+    for _ in range(rounds):
+        proc = start(
+            python("-m", "launcher", str(HERE / "stubborn.launch.xml")),
+            env={"PYTHON": sys.executable},
+        )
+        if not wait_for_lines(proc, lambda line: "ignoring SIGINT" in line, timeout=60):
+            os.killpg(proc.pid, signal.SIGKILL)
+            raise RuntimeError("the stubborn process never started")
+        family = descendants(proc.pid) | {proc.pid}
+        stopping = time.monotonic()
+        os.kill(proc.pid, signal.SIGINT)
+        proc.communicate(timeout=60)
+        while any(alive(pid) for pid in family):
+            time.sleep(0.005)
+        samples.append(time.monotonic() - stopping)
+    worst = max(samples)
+    return [
+        Row(
+            "Ctrl-C to all gone, one child ignoring SIGINT (sigterm_timeout 1 s), worst of 3",
+            f"{worst:.2f} s",
+            "",
+            None,
+            "<= 1 s + escalation",
+            worst <= 1.0 + 1.0,
+        )
+    ]

@@ -1,0 +1,46 @@
+"""Set-up: a fresh clone to ready (make setup), then a second `make test` that rebuilds nothing."""
+
+from __future__ import annotations
+
+import subprocess
+import tempfile
+import time
+from pathlib import Path
+
+from benchmarks.common import Row
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _timed(args: list[str], cwd: Path) -> float:
+    start = time.monotonic()
+    subprocess.run(args, cwd=cwd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.monotonic() - start
+
+
+def setup_times() -> list[Row]:
+    with tempfile.TemporaryDirectory() as tmp:
+        clone = Path(tmp) / "clone"
+        subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True)
+        fresh = _timed(["make", "setup"], clone)
+        noop = _timed(["make", "setup"], clone)
+        up_to_date = subprocess.run(["make", "-q", "setup"], cwd=clone).returncode == 0
+        second_test = _timed(["make", "test"], clone)
+        pytest_only = _timed([str(clone / ".venv/bin/python"), "-m", "pytest", "-q"], clone)
+    return [
+        Row("fresh clone to ready (make setup; pip cache warm)", f"{fresh:.0f} s"),
+        Row(
+            "make setup again, nothing changed",
+            f"{noop:.2f} s",
+            "",
+            None,
+            "make -q: up to date",
+            up_to_date,
+        ),
+        Row(
+            "second make test (lint + tests, no rebuild)",
+            f"{second_test:.1f} s",
+            f"{pytest_only:.1f} s (pytest alone)",
+            second_test / pytest_only,
+        ),
+    ]

@@ -1,0 +1,13 @@
+#!/bin/sh
+# The baseline of the launch benchmark: union.launch's four nodes started from a plain shell,
+# each with the same ROS arguments the launcher gives them. Ctrl-C stops them all.
+py=${PYTHON:-python3}
+pids=""
+for ns in ns1 ns2; do
+  for node in publisher subscriber; do
+    "$py" -m ros_tutorials_topic.$node --ros-args -r __node:=topic_$node -r __ns:=/$ns &
+    pids="$pids $!"
+  done
+done
+trap 'kill -INT $pids; wait' INT TERM
+wait

@@ -1,0 +1,169 @@
+"""The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import traceback
+from pathlib import Path
+
+from launcher import LaunchError, packages
+from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
+from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
+
+EXAMPLES = """\
+examples:
+  python -m launcher union.launch                     the topic lesson, two namespaces
+  python -m launcher ros_tutorials_topic union.launch like roslaunch PKG FILE
+  python -m launcher union.launch --print             show the processes, start nothing
+  python -m launcher FILE name:=value                 set a launch argument
+
+exit code: 0 all ended cleanly, 1 a process failed or the launch could not start,
+130 after Ctrl-C (143 after SIGTERM)."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="python -m launcher",
+        description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument(
+        "words",
+        nargs="*",
+        metavar="[PKG] FILE [name:=value ...]",
+        help="a launch file (a path, or a file name in a package's launch/ folder) and arguments",
+    )
+    parser.add_argument("--screen", action="store_true", help="show every process's stdout too")
+    parser.add_argument(
+        "-p", "--print", action="store_true", help="print the processes it would start, and exit"
+    )
+    parser.add_argument(
+        "-s", "--show-args", action="store_true", help="list the file's arguments, and exit"
+    )
+    parser.add_argument(
+        "-d",
+        "--debug",
+        action="store_true",
+        help="show tracebacks of errors and each command line as it starts",
+    )
+    parser.add_argument(
+        "--allow-code",
+        action="store_true",
+        help="allow $(eval) and $(command), which run code written in the launch file",
+    )
+    parser.add_argument(
+        "--sigterm-timeout",
+        type=float,
+        default=DEFAULT_SIGTERM_TIMEOUT,
+        metavar="S",
+        help="seconds from SIGINT to SIGTERM when stopping (default %(default)s)",
+    )
+    parser.add_argument(
+        "--sigkill-timeout",
+        type=float,
+        default=DEFAULT_SIGKILL_TIMEOUT,
+        metavar="S",
+        help="seconds from SIGTERM to SIGKILL when stopping (default %(default)s)",
+    )
+    return parser
+
+
+def find_launch_file(names: list[str]) -> Path:
+    """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
+    if len(names) == 2:
+        package, name = names
+        if package not in packages.package_dirs():
+            known = ", ".join(packages.package_dirs())
+            raise LaunchError(f"unknown package {package!r}; known packages: {known}")
+        path = packages.package_dirs()[package] / "launch" / name
+        if not path.is_file():
+            have = ", ".join(p.name for p in packages.launch_files(package)) or "none"
+            raise LaunchError(f"{package} has no launch file {name!r}; it has: {have}")
+        return path
+    if len(names) != 1:
+        raise LaunchError(f"expected [PKG] FILE, got: {' '.join(names) or 'nothing'}")
+    path = Path(names[0])
+    if path.is_file() or "/" in names[0]:
+        if not path.is_file():
+            raise LaunchError(f"no launch file {path}")
+        return path
+    shipped = {package: packages.launch_files(package) for package in packages.package_dirs()}
+    matches = [file for files in shipped.values() for file in files if file.name == names[0]]
+    if len(matches) == 1:
+        return matches[0]
+    if matches:
+        where = ", ".join(file.parent.parent.name for file in matches)
+        raise LaunchError(
+            f"{names[0]} is in several packages ({where}); say which: python -m launcher PKG FILE"
+        )
+    have = ", ".join(f"{pkg} {file.name}" for pkg, files in shipped.items() for file in files)
+    raise LaunchError(f"no launch file {names[0]!r} here or in any package; known: {have}")
+
+
+def split_words(words: list[str]) -> tuple[list[str], dict[str, str]]:
+    """The file words and the name:=value arguments."""
+    names, args = [], {}
+    for word in words:
+        if ":=" not in word:
+            names.append(word)
+            continue
+        name, _, value = word.partition(":=")
+        if not valid_name(name):
+            raise LaunchError(f"malformed argument {word!r}: expected name:=value")
+        args[name] = value
+    return names, args
+
+
+def format_args(infos: list[ArgInfo]) -> str:
+    if not infos:
+        return "This launch file has no arguments."
+    lines = ["Arguments (pass arguments as '<name>:=<value>'):"]
+    for info in infos:
+        lines += ["", f"    {info.name!r}:"]
+        if info.description:
+            lines.append(f"        {info.description}")
+        if info.choices:
+            lines.append(f"        Valid choices are: {info.choices}")
+        if info.fixed:
+            lines.append(f"        (fixed value: {info.default!r}; cannot be set)")
+        elif info.default is None:
+            lines.append("        (required)")
+        else:
+            lines.append(f"        (default: {info.default!r})")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    options = build_parser().parse_intermixed_args(argv)
+    try:
+        names, args = split_words(options.words)
+        path = find_launch_file(names)
+        if options.show_args:
+            print(format_args(describe_args(path)))
+            return 0
+        launch = resolve(path, args, Options(allow_code=options.allow_code))
+        specs = make_plan(launch, options.screen, options.sigterm_timeout, options.sigkill_timeout)
+    except (LaunchError, RecursionError) as error:
+        if options.debug:
+            traceback.print_exc()
+        if isinstance(error, RecursionError):
+            error = LaunchError("the launch file is nested too deeply")
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+    if options.print:
+        print(format_plan(specs, launch.messages))
+        return 0
+    # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
+    from launcher.supervise import Supervisor, make_log_dir
+
+    for message in launch.messages:
+        print(f"[launcher] {message}", flush=True)
+    return Supervisor(specs, make_log_dir(), options.debug).run()
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,182 @@
+"""Plan: node declarations -> process specs with their full command lines.
+
+A plan is plain data: it can be printed (``--print``) and tested without starting anything.
+This is the one place where (package, executable) becomes a command line, and where a node's
+name, namespace, remaps and parameters become standard ROS arguments:
+``--ros-args -r __node:=NAME -r __ns:=/NS -r from:=to -p name:=value --params-file FILE``.
+"""
+
+from __future__ import annotations
+
+import json
+import shlex
+import shutil
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from launcher import LaunchError, packages
+from launcher.resolve import Launch, NodeDecl
+
+DEFAULT_SIGTERM_TIMEOUT = 5.0  # seconds after SIGINT before SIGTERM, as ros2 launch
+DEFAULT_SIGKILL_TIMEOUT = 5.0  # seconds after SIGTERM before SIGKILL
+
+
+@dataclass
+class ProcessSpec:
+    """Everything needed to start, watch and stop one process."""
+
+    label: str  # output prefix and log file name: the node's full name without the first /
+    command: list[str]
+    where: str  # file:line of the declaration
+    node: str | None = None  # full node name, if it is a named ROS node
+    env: dict[str, str | None] = field(default_factory=dict)  # changes; None unsets
+    output: str = "log"
+    respawn: bool = False
+    respawn_delay: float = 0.0
+    respawn_max_retries: int = 0
+    required: bool = False
+    sigterm_timeout: float = DEFAULT_SIGTERM_TIMEOUT
+    sigkill_timeout: float = DEFAULT_SIGKILL_TIMEOUT
+    cwd: str | None = None
+    remaps: list[tuple[str, str]] = field(default_factory=list)  # shown by --print
+    params: list[tuple[str, Any]] = field(default_factory=list)
+
+
+def command_for(package: str, executable: str, where: str) -> list[str]:
+    """The command line that runs one executable of a tutorial package."""
+    known = packages.executables(package)
+    if not known:
+        names = ", ".join(packages.runnable_packages())
+        raise LaunchError(f"{where}: unknown package {package!r}; known packages: {names}")
+    # The book's ROS 1 files sometimes name scripts with their suffix (type="talker.py").
+    command = known.get(executable) or known.get(executable.removesuffix(".py"))
+    if command is None:
+        raise LaunchError(
+            f"{where}: package {package!r} has no executable {executable!r}; "
+            f"it has: {', '.join(known)}"
+        )
+    return list(command)
+
+
+def ros_value(value: Any) -> str:
+    """A parameter value as ``-p name:=value`` needs it: rcl reads it as YAML."""
+    if isinstance(value, str):
+        try:
+            plain = yaml.safe_load(value) == value and value == value.strip()
+        except yaml.YAMLError:
+            plain = False
+        if plain:
+            return value
+    return json.dumps(value)  # JSON is YAML: quoted strings, true/false, numbers, lists
+
+
+def ros_arguments(node: NodeDecl) -> list[str]:
+    """The standard ROS arguments that give a node its name, namespace, remaps, params."""
+    rules = []
+    if node.name:
+        rules += ["-r", f"__node:={node.name}"]
+    if node.namespace != "/":
+        rules += ["-r", f"__ns:={node.namespace}"]
+    for source, target in node.remaps:
+        rules += ["-r", f"{source}:={target}"]
+    for name, value in node.params:
+        rules += ["-p", f"{name}:={ros_value(value)}"]
+    for path in node.params_files:
+        rules += ["--params-file", path]
+    rules += node.ros_args
+    return ["--ros-args", *rules] if rules else []
+
+
+def _label(node: NodeDecl) -> str:
+    if node.name:
+        return f"{node.namespace.rstrip('/')}/{node.name}".lstrip("/")
+    base = node.executable if node.cmd is None else node.cmd[0].rsplit("/", 1)[-1]
+    return f"{node.namespace.rstrip('/')}/{base}".lstrip("/")
+
+
+def make_plan(
+    launch: Launch,
+    screen: bool = False,
+    sigterm_timeout: float = DEFAULT_SIGTERM_TIMEOUT,
+    sigkill_timeout: float = DEFAULT_SIGKILL_TIMEOUT,
+) -> list[ProcessSpec]:
+    """Turn a resolved launch into process specs; every lookup error is raised here."""
+    specs: list[ProcessSpec] = []
+    named: dict[str, str] = {}
+    labels: dict[str, int] = {}
+    for node in launch.nodes:
+        if node.cmd is not None:
+            command = node.cmd + node.args
+        else:
+            command = command_for(node.package or "", node.executable or "", node.where)
+            command += node.args + ros_arguments(node)
+        command = node.launch_prefix + command
+        if shutil.which(command[0]) is None:
+            raise LaunchError(f"{node.where}: program {command[0]!r} not found")
+        label = _label(node)
+        full_name = "/" + label if node.name and node.cmd is None else None
+        if full_name in named:
+            raise LaunchError(
+                f"{node.where}: a second node named {full_name} "
+                f"(the first is at {named[full_name]})"
+            )
+        if full_name:
+            named[full_name] = node.where
+        labels[label] = labels.get(label, 0) + 1
+        if labels[label] > 1:  # unnamed processes of the same executable
+            label = f"{label}-{labels[label]}"
+        specs.append(
+            ProcessSpec(
+                label=label,
+                command=command,
+                where=node.where,
+                node=full_name,
+                env=node.env,
+                output="screen" if screen else node.output,
+                respawn=node.respawn,
+                respawn_delay=node.respawn_delay,
+                respawn_max_retries=node.respawn_max_retries,
+                required=node.required,
+                sigterm_timeout=node.sigterm_timeout
+                if node.sigterm_timeout is not None
+                else sigterm_timeout,
+                sigkill_timeout=node.sigkill_timeout
+                if node.sigkill_timeout is not None
+                else sigkill_timeout,
+                cwd=node.cwd,
+                remaps=node.remaps,
+                params=node.params,
+            )
+        )
+    return specs
+
+
+def format_plan(specs: list[ProcessSpec], messages: list[str]) -> str:
+    """The plan as text, for --print."""
+    lines = [f"log: {message}" for message in messages]
+    for spec in specs:
+        lines.append(f"[{spec.label}]  ({spec.where})")
+        if spec.node:
+            lines.append(f"    node:    {spec.node}")
+        lines.append(f"    command: {shlex.join(spec.command)}")
+        for source, target in spec.remaps:
+            lines.append(f"    remap:   {source} -> {target}")
+        for name, value in spec.params:
+            lines.append(f"    param:   {name} = {value!r}")
+        for name, value in spec.env.items():
+            lines.append(
+                f"    env:     {name}={value}" if value is not None else f"    unset:   {name}"
+            )
+        options = [f"output={spec.output}"]
+        if spec.respawn:
+            options.append(
+                f"respawn (delay {spec.respawn_delay:g} s, max {spec.respawn_max_retries} retries)"
+            )
+        if spec.required:
+            options.append("required (its exit ends the launch)")
+        if spec.cwd:
+            options.append(f"cwd={spec.cwd}")
+        lines.append(f"    options: {', '.join(options)}")
+    return "\n".join(lines)

@@ -1,0 +1,236 @@
+"""Substitutions: the ``$(...)`` expressions in attribute values.
+
+ROS 1: $(arg x) $(find pkg) $(env V) $(optenv V [default]) $(anon name) $(dirname) $(eval ...)
+ROS 2: $(var x) $(env V [default]) $(find-pkg-share pkg) $(find-pkg-prefix pkg) $(dirname)
+       $(anon name) $(not x) $(and x y) $(or x y) $(equals x y) $(eval ...) $(command ...)
+Substitutions nest (``$(var $(var which))``). $(eval) and $(command) run code, so they are
+refused unless the user passes --allow-code.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import shlex
+import subprocess
+from pathlib import Path
+from typing import Protocol
+
+from launcher import packages
+from launcher.parse import Element
+
+TRUE_WORDS = ("true", "1")
+FALSE_WORDS = ("false", "0")
+
+
+class Context(Protocol):
+    """What a substitution can see: the scope it is written in (resolve.Scope)."""
+
+    fmt: str
+    file: Path
+    args: dict[str, str]
+
+    @property
+    def allow_code(self) -> bool: ...
+
+    def anon(self, name: str) -> str: ...
+
+
+def to_bool(value: str, element: Element, what: str) -> bool:
+    word = value.strip().lower()
+    if word in TRUE_WORDS:
+        return True
+    if word in FALSE_WORDS:
+        return False
+    raise element.error(f"{what} must be true, false, 1 or 0, not {value!r}")
+
+
+def substitute(text: str, context: Context, element: Element) -> str:
+    """Replace every $(...) in text."""
+    out, position = [], 0
+    while (start := text.find("$(", position)) >= 0:
+        out.append(text[position:start])
+        end = _closing_paren(text, start, element)
+        out.append(_evaluate(text[start + 2 : end].strip(), context, element))
+        position = end + 1
+    out.append(text[position:])
+    return "".join(out)
+
+
+def _closing_paren(text: str, start: int, element: Element) -> int:
+    depth = 0
+    for index in range(start + 1, len(text)):
+        if text[index] == "(":
+            depth += 1
+        elif text[index] == ")":
+            depth -= 1
+            if depth == 0:
+                return index
+    raise element.error(f"unterminated substitution in {text!r}")
+
+
+def _split_words(text: str) -> list[str]:
+    """Split on spaces that are outside quotes and outside nested $(...); drop the quotes."""
+    words, current, depth, quote, started = [], "", 0, "", False
+    for char in text:
+        if quote:
+            if char == quote and depth == 0:
+                quote = ""
+                continue
+        elif char in "'\"" and depth == 0:
+            quote, started = char, True  # '' is an empty word, not no word
+            continue
+        elif char.isspace() and depth == 0:
+            if started:
+                words.append(current)
+            current, started = "", False
+            continue
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        current, started = current + char, True
+    if started:
+        words.append(current)
+    return words
+
+
+def _evaluate(inner: str, context: Context, element: Element) -> str:
+    name, _, rest = inner.partition(" ")
+    table = ROS1 if context.fmt == "ros1" else ROS2
+    if name not in table:
+        known = ", ".join(f"$({known})" for known in table)
+        raise element.error(f"unknown substitution $({name}); known here: {known}")
+    if name in ("eval", "command") and not context.allow_code:
+        raise element.error(
+            f"$({name}) runs code from the launch file; pass --allow-code to allow it"
+        )
+    if context.fmt == "ros1" and name == "eval":
+        return _ros1_eval(rest, context, element)  # ROS 1 eval sees raw Python, not $(...)
+    words = [substitute(word, context, element) for word in _split_words(rest)]
+    function, counts = table[name]
+    if len(words) not in counts:
+        raise element.error(f"$({name}) takes {_plural(counts)}, got {len(words)}: $({inner})")
+    return function(words, context, element)
+
+
+def _plural(counts: range) -> str:
+    low, high = counts.start, counts.stop - 1
+    return f"{low} argument(s)" if low == high else f"{low} to {high} arguments"
+
+
+def _arg(words: list[str], context: Context, element: Element) -> str:
+    name = words[0]
+    if name not in context.args:
+        known = ", ".join(sorted(context.args)) or "none"
+        raise element.error(f"argument {name!r} is not declared here (declared: {known})")
+    return context.args[name]
+
+
+def _env(words: list[str], _context: Context, element: Element) -> str:
+    value = os.environ.get(words[0], words[1] if len(words) > 1 else None)
+    if value is None:
+        raise element.error(f"environment variable {words[0]} is not set")
+    return value
+
+
+def _optenv(words: list[str], _context: Context, _element: Element) -> str:
+    return os.environ.get(words[0], " ".join(words[1:]))
+
+
+def package_dir(package: str, element: Element) -> Path:
+    found = packages.package_dirs()
+    if package not in found:
+        raise element.error(f"unknown package {package!r}; known: {', '.join(found)}")
+    return found[package]
+
+
+def _find(words: list[str], _context: Context, element: Element) -> str:
+    return str(package_dir(words[0], element))
+
+
+def _find_prefix(words: list[str], _context: Context, element: Element) -> str:
+    return str(package_dir(words[0], element).parent)
+
+
+def _dirname(_words: list[str], context: Context, _element: Element) -> str:
+    return str(context.file.parent)
+
+
+def _anon(words: list[str], context: Context, _element: Element) -> str:
+    return context.anon(words[0])
+
+
+def _not(words: list[str], _context: Context, element: Element) -> str:
+    return str(not to_bool(words[0], element, "$(not) argument")).lower()
+
+
+def _and(words: list[str], _context: Context, element: Element) -> str:
+    return str(all(to_bool(word, element, "$(and) argument") for word in words)).lower()
+
+
+def _or(words: list[str], _context: Context, element: Element) -> str:
+    return str(any(to_bool(word, element, "$(or) argument") for word in words)).lower()
+
+
+def _equals(words: list[str], _context: Context, _element: Element) -> str:
+    return str(words[0] == words[1]).lower()
+
+
+def _python_eval(expression: str, names: dict, element: Element) -> str:
+    scope = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
+    scope.update(names)
+    try:
+        return str(eval(expression, scope))  # opted in with --allow-code
+    except Exception as error:
+        raise element.error(f"$(eval {expression}) failed: {error}") from None
+
+
+def _ros1_eval(expression: str, context: Context, element: Element) -> str:
+    names = {"true": True, "false": False, **context.args}
+    names["arg"] = lambda name: _arg([name], context, element)
+    names["env"] = lambda name: _env([name], context, element)
+    names["optenv"] = lambda name, default="": os.environ.get(name, default)
+    names["find"] = lambda package: _find([package], context, element)
+    names["anon"] = context.anon
+    names["dirname"] = lambda: str(context.file.parent)
+    return _python_eval(expression, names, element)
+
+
+def _ros2_eval(words: list[str], _context: Context, element: Element) -> str:
+    return _python_eval(" ".join(words), {}, element)
+
+
+def _command(words: list[str], _context: Context, element: Element) -> str:
+    command = shlex.split(" ".join(words))
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.TimeoutExpired) as error:
+        raise element.error(f"$(command {' '.join(words)}) failed: {error}") from None
+    if done.returncode != 0:
+        reason = done.stderr.strip().splitlines()[-1:] or [f"exit code {done.returncode}"]
+        raise element.error(f"$(command {' '.join(words)}) failed: {reason[0]}")
+    return done.stdout
+
+
+ANY = range(1, 100)
+ROS1 = {
+    "arg": (_arg, range(1, 2)),
+    "find": (_find, range(1, 2)),
+    "env": (_env, range(1, 2)),
+    "optenv": (_optenv, ANY),
+    "anon": (_anon, range(1, 2)),
+    "dirname": (_dirname, range(0, 1)),
+    "eval": (None, ANY),
+}
+ROS2 = {
+    "var": (_arg, range(1, 2)),
+    "env": (_env, range(1, 3)),
+    "find-pkg-share": (_find, range(1, 2)),
+    "find-pkg-prefix": (_find_prefix, range(1, 2)),
+    "dirname": (_dirname, range(0, 1)),
+    "anon": (_anon, range(1, 2)),
+    "not": (_not, range(1, 2)),
+    "and": (_and, range(2, 100)),
+    "or": (_or, range(2, 100)),
+    "equals": (_equals, range(2, 3)),
+    "eval": (_ros2_eval, ANY),
+    "command": (_command, ANY),
+}

@@ -1,0 +1,325 @@
+"""Supervise: start the planned processes, show their output, respawn them, shut them down.
+
+How nothing is left behind:
+- each child runs in its own process group (``start_new_session``), so a signal to the group
+  reaches the grandchildren too, and a Ctrl-C in the terminal reaches only the launcher, which
+  then stops the children in order: SIGINT, after ``sigterm_timeout`` SIGTERM, after
+  ``sigkill_timeout`` SIGKILL;
+- each child asks the kernel to SIGKILL it when the launcher dies (``PR_SET_PDEATHSIG``), even
+  if the launcher is SIGKILLed and can do nothing. The kernel ties this to the *thread* that
+  forked, so every child is started from the main thread;
+- a tiny guardian process, forked before anything else, kills the process groups the launcher
+  leaves behind if it dies, which covers the grandchildren PDEATHSIG does not reach;
+- when a child exits, whatever it left in its process group is killed before it is reaped.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ctypes
+import os
+import shlex
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+from typing import IO
+
+from launcher.plan import ProcessSpec
+from ros_tutorials_common.dds import apply_dds_defaults
+
+POLL_SECONDS = 0.05
+STABLE_RUN_SECONDS = 10.0  # a process that ran this long before exiting did not "fail quickly"
+BACKOFF_FIRST_SECONDS = 0.5  # extra respawn delay after the first quick failure, doubled each time
+BACKOFF_MAX_SECONDS = 30.0
+PR_SET_PDEATHSIG = 1
+
+_libc = ctypes.CDLL(None, use_errno=True)
+
+
+def make_log_dir() -> Path:
+    """A new folder for this launch's logs, under $ROS_LOG_DIR or ~/.ros/log."""
+    base = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
+    path = base / f"launch_{time.strftime('%Y-%m-%d-%H-%M-%S')}_{os.getpid()}"
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def _exited(pid: int) -> bool:
+    """Has the child exited? Leaves it unreaped, so its process group id stays reserved."""
+    try:
+        return os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None
+    except ChildProcessError:
+        return True
+
+
+def _kill_group(pgid: int, sig: int) -> None:
+    with contextlib.suppress(ProcessLookupError, PermissionError):  # already gone
+        os.killpg(pgid, sig)
+
+
+def _describe(code: int) -> str:
+    if code == 0:
+        return "exited cleanly"
+    if code < 0:
+        return f"was killed by {signal.Signals(-code).name}"
+    return f"died with exit code {code}"
+
+
+class Guardian:
+    """A helper process that kills what the launcher leaves behind if the launcher dies.
+
+    The launcher tells it which process groups are alive through a pipe. When the pipe
+    closes (the launcher exited, crashed or was SIGKILLed), it kills the groups still listed.
+    """
+
+    def __init__(self) -> None:
+        read_end, self._write_end = os.pipe()
+        self.pid = os.fork()  # before any thread exists, so forking without exec is safe
+        if self.pid == 0:
+            os.close(self._write_end)
+            self._guard(read_end)
+        os.close(read_end)
+
+    @staticmethod
+    def _guard(read_end: int) -> None:
+        try:
+            os.setsid()  # leave the terminal's process group: a Ctrl-C is for the launcher
+            devnull = os.open(os.devnull, os.O_RDWR)
+            for fd in (0, 1, 2):  # hold none of the launcher's output pipes open
+                os.dup2(devnull, fd)
+            groups: set[int] = set()
+            with os.fdopen(read_end, "rb") as pipe:
+                for line in pipe:
+                    (groups.add if line.startswith(b"+") else groups.discard)(int(line[1:]))
+            for pgid in groups:
+                _kill_group(pgid, signal.SIGKILL)
+        finally:
+            os._exit(0)
+
+    def _tell(self, message: str) -> None:
+        with contextlib.suppress(OSError):  # the guardian is gone; PDEATHSIG still protects
+            os.write(self._write_end, message.encode())
+
+    def watch(self, pgid: int) -> None:
+        self._tell(f"+{pgid}\n")
+
+    def forget(self, pgid: int) -> None:
+        self._tell(f"-{pgid}\n")
+
+    def close(self) -> None:
+        os.close(self._write_end)
+        os.waitpid(self.pid, 0)
+
+
+class Child:
+    """One planned process and its current run."""
+
+    def __init__(self, spec: ProcessSpec, log_dir: Path) -> None:
+        self.spec = spec
+        self.log_path = log_dir / f"{spec.label.replace('/', '.')}.log"
+        self.process: subprocess.Popen | None = None
+        self.readers: list[threading.Thread] = []
+        self.started_at = 0.0
+        self.quick_failures = 0  # in a row
+        self.restart_at: float | None = None
+        self.stage = 0  # the last signal sent while shutting down
+        self.deadline = 0.0
+
+
+class Supervisor:
+    def __init__(self, specs: list[ProcessSpec], log_dir: Path, debug: bool = False) -> None:
+        self.debug = debug
+        self.children = [Child(spec, log_dir) for spec in specs]
+        self.log_dir = log_dir
+        self.launcher_pid = os.getpid()
+        self.output_lock = threading.Lock()
+        self.stop_signal: int | None = None
+        self.hurry = False  # another signal arrived while shutting down
+        self.ending = False  # a required process exited
+        self.failed = False
+
+    def say(self, text: str) -> None:
+        self.show(f"[launcher] {text}", sys.stdout)
+
+    def show(self, line: str, screen: IO[str]) -> None:
+        # A closed terminal or pipe (launcher | head) must not stop the supervision.
+        with self.output_lock, contextlib.suppress(OSError, ValueError):
+            print(line, file=screen, flush=True)
+
+    def run(self) -> int:
+        """Start everything, watch until done or told to stop, shut down. The exit code."""
+        handled = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+        previous = {sig: signal.signal(sig, self._on_signal) for sig in handled}
+        self.guardian = Guardian()
+        try:
+            self.say(f"logging to {self.log_dir}")
+            try:
+                for child in self.children:
+                    self.start(child)
+                self.watch()
+            except (OSError, subprocess.SubprocessError) as error:
+                self.say(f"cannot start a process: {error}")
+                self.failed = True
+            self.shutdown()
+        finally:
+            self.guardian.close()
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
+        if self.stop_signal is not None:
+            return 128 + self.stop_signal  # 130 after Ctrl-C, like a shell
+        return 1 if self.failed else 0
+
+    def _on_signal(self, signum: int, _frame: object) -> None:
+        if self.stop_signal is None:
+            self.stop_signal = signum
+        else:
+            self.hurry = True
+
+    def _die_with_launcher(self) -> None:
+        # Runs in the child between fork and exec.
+        _libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
+            os.kill(os.getpid(), signal.SIGKILL)
+
+    def start(self, child: Child) -> None:
+        spec = child.spec
+        env = dict(os.environ)
+        for name, value in spec.env.items():
+            if value is None:
+                env.pop(name, None)
+            else:
+                env[name] = value
+        env["PYTHONUNBUFFERED"] = "1"  # output appears as it is written, not at exit
+        env["ROS_LOG_DIR"] = str(self.log_dir)  # the nodes' own log files go here too
+        apply_dds_defaults(env)
+        child.process = subprocess.Popen(
+            spec.command,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            env=env,
+            cwd=spec.cwd,
+            start_new_session=True,
+            preexec_fn=self._die_with_launcher,
+        )
+        self.guardian.watch(child.process.pid)
+        child.started_at, child.restart_at = time.monotonic(), None
+        # As roslaunch: stderr (where ROS 2 logging writes) always reaches the screen,
+        # stdout only with output="screen"; the log file gets both.
+        to_screen = spec.output in ("screen", "both")
+        child.readers = [
+            self._reader(child, child.process.stdout, sys.stdout if to_screen else None),
+            self._reader(child, child.process.stderr, sys.stderr),
+        ]
+        self.say(f"started {spec.label} (pid {child.process.pid})")
+        if self.debug:
+            self.say(f"  command: {shlex.join(spec.command)}")
+
+    def _reader(
+        self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None
+    ) -> threading.Thread:
+        label, log_path = child.spec.label, child.log_path
+
+        def pump() -> None:
+            assert stream is not None
+            with log_path.open("ab") as log:
+                for raw in iter(stream.readline, b""):
+                    log.write(raw)
+                    log.flush()
+                    if screen is not None:
+                        line = raw.decode(errors="replace").rstrip("\n")
+                        self.show(f"[{label}] {line}", screen)
+            stream.close()
+
+        thread = threading.Thread(target=pump, daemon=True)
+        thread.start()
+        return thread
+
+    def reap(self, child: Child) -> int:
+        assert child.process is not None
+        pid = child.process.pid
+        _kill_group(pid, signal.SIGKILL)  # what it left running in its group
+        code = child.process.wait()
+        self.guardian.forget(pid)
+        for reader in child.readers:
+            reader.join(timeout=2.0)  # print its last lines before saying it exited
+        child.process = None
+        return code
+
+    def watch(self) -> None:
+        while self.stop_signal is None and not self.ending:
+            now = time.monotonic()
+            for child in self.children:
+                if child.process is not None and _exited(child.process.pid):
+                    self.on_exit(child, self.reap(child), now)
+                elif child.restart_at is not None and now >= child.restart_at:
+                    self.start(child)
+            if all(child.process is None and child.restart_at is None for child in self.children):
+                return
+            time.sleep(POLL_SECONDS)
+
+    def on_exit(self, child: Child, code: int, now: float) -> None:
+        spec = child.spec
+        what = f"{spec.label} {_describe(code)}"
+        if spec.required:
+            self.say(f"{what}; it is required, so the launch ends")
+            self.failed |= code != 0
+            self.ending = True
+        elif spec.respawn:
+            ran_long = now - child.started_at >= STABLE_RUN_SECONDS
+            child.quick_failures = 0 if ran_long else child.quick_failures + 1
+            limit = spec.respawn_max_retries
+            if 0 <= limit < child.quick_failures:
+                self.say(f"{what}; not respawning it after {limit} quick restarts in a row")
+                self.failed = True
+                return
+            delay = spec.respawn_delay
+            if child.quick_failures:  # back off so a crashing process cannot spin the CPU
+                backoff = BACKOFF_FIRST_SECONDS * 2 ** (child.quick_failures - 1)
+                delay += min(backoff, BACKOFF_MAX_SECONDS)
+            self.say(f"{what}; respawning in {delay:.1f} s")
+            child.restart_at = now + delay
+        else:
+            self.say(what)
+            self.failed |= code != 0
+
+    def shutdown(self) -> None:
+        for child in self.children:
+            child.restart_at = None
+        alive = [child for child in self.children if child.process is not None]
+        if alive:
+            self.say(f"stopping {len(alive)} process(es)")
+        for child in alive:
+            self._escalate(child)
+        count = len(alive)
+        while alive:
+            now = time.monotonic()
+            for child in list(alive):
+                assert child.process is not None
+                if _exited(child.process.pid):
+                    self.reap(child)
+                    alive.remove(child)
+                elif now >= child.deadline or self.hurry:
+                    self._escalate(child)
+            self.hurry = False
+            time.sleep(POLL_SECONDS)
+        if count:
+            self.say(f"all {count} process(es) stopped")
+
+    def _escalate(self, child: Child) -> None:
+        """Send the next signal of SIGINT -> SIGTERM -> SIGKILL to the child's group."""
+        assert child.process is not None
+        spec, now = child.spec, time.monotonic()
+        if child.stage == 0:
+            child.stage, child.deadline = signal.SIGINT, now + spec.sigterm_timeout
+        elif child.stage == signal.SIGINT:
+            self.say(f"{spec.label} still running after SIGINT: sending SIGTERM")
+            child.stage, child.deadline = signal.SIGTERM, now + spec.sigkill_timeout
+        else:
+            if child.stage == signal.SIGTERM:
+                self.say(f"{spec.label} still running after SIGTERM: sending SIGKILL")
+            child.stage, child.deadline = signal.SIGKILL, float("inf")
+        _kill_group(child.process.pid, child.stage)

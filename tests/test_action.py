@@ -1,0 +1,294 @@
+"""The action lesson: the Fibonacci server in-process, and the client CLI as a real process.
+
+Goals that must not finish on their own run with a step period of an hour: if the server only
+noticed a cancel, a new goal or a shutdown at the end of a step, these tests would time out.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Iterator
+
+import pytest
+from action_msgs.msg import GoalStatus, GoalStatusArray
+from helpers import spin_until
+from rclpy.action import ActionClient
+from rclpy.action.client import ClientGoalHandle
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.qos import qos_profile_action_status_default
+from ros_tutorials_interfaces.action import Fibonacci
+
+from ros_tutorials_action.server import (
+    ACTION_NAME,
+    INT32_MAX,
+    MAX_ORDER,
+    FibonacciActionServer,
+    make_executor,
+)
+
+FAST = 0.01  # seconds per step, for goals that should finish
+FOREVER = 3600.0  # seconds per step, for goals that must be stopped
+CLIENT = ("-m", "ros_tutorials_action.client")
+
+
+def fibonacci(order: int) -> list[int]:
+    """The book's sequence of an order: the seeds 0, 1 and `order` more terms."""
+    sequence = [0, 1]
+    for _ in range(order):
+        sequence.append(sequence[-1] + sequence[-2])
+    return sequence
+
+
+@pytest.fixture
+def start_server(context) -> Iterator[Callable[[float], FibonacciActionServer]]:
+    """Start the action server in this process, spun by its own multi-threaded executor."""
+    started = []
+
+    def start(step_period: float) -> FibonacciActionServer:
+        server = FibonacciActionServer(
+            context=context, parameter_overrides=[Parameter("step_period", value=step_period)]
+        )
+        executor = make_executor(context)
+        executor.add_node(server)
+        stop = threading.Event()
+
+        def spin() -> None:
+            while not stop.is_set():
+                executor.spin_once(timeout_sec=0.1)
+
+        thread = threading.Thread(target=spin, daemon=True)
+        thread.start()
+        started.append((server, executor, stop, thread))
+        return server
+
+    yield start
+    for server, executor, stop, thread in started:
+        stop.set()
+        thread.join()
+        server.destroy_node()
+        executor.shutdown()
+
+
+class Probe:
+    """A test's own action client, plus what the action's status topic says about each goal."""
+
+    def __init__(self, context, executor) -> None:
+        self.executor = executor
+        self.node = Node("probe", context=context)
+        self.client = ActionClient(self.node, Fibonacci, ACTION_NAME)
+        self.statuses: dict[bytes, int] = {}
+        self.node.create_subscription(
+            GoalStatusArray,
+            f"{ACTION_NAME}/_action/status",
+            self.on_status,
+            qos_profile_action_status_default,
+        )
+        executor.add_node(self.node)
+
+    def on_status(self, msg: GoalStatusArray) -> None:
+        for status in msg.status_list:
+            self.statuses[bytes(status.goal_info.goal_id.uuid)] = status.status
+
+    def send(self, order: int) -> tuple[ClientGoalHandle, list[list[int]]]:
+        """Send a goal; its handle once the server answered, and the feedback list it fills."""
+        spin_until(self.executor, self.client.server_is_ready, what="the action server")
+        feedback: list[list[int]] = []
+        future = self.client.send_goal_async(
+            Fibonacci.Goal(order=order),
+            feedback_callback=lambda msg: feedback.append(list(msg.feedback.sequence)),
+        )
+        spin_until(self.executor, future.done, what=f"the answer to a goal of order {order}")
+        return future.result(), feedback
+
+    def result(self, goal_handle: ClientGoalHandle) -> tuple[int, list[int]]:
+        future = goal_handle.get_result_async()
+        spin_until(self.executor, future.done, what="the result of a goal")
+        return future.result().status, list(future.result().result.sequence)
+
+    def wait_for_status(self, status: int) -> None:
+        spin_until(
+            self.executor,
+            lambda: status in self.statuses.values(),
+            what=f"a goal with status {status} on the status topic",
+        )
+
+
+@pytest.fixture
+def probe(context, executor) -> Probe:
+    return Probe(context, executor)
+
+
+def test_max_order_is_the_largest_that_fits_in_int32():
+    assert fibonacci(MAX_ORDER)[-1] <= INT32_MAX < fibonacci(MAX_ORDER + 1)[-1]
+    assert MAX_ORDER == 45  # the book's note: F(47) does not fit
+
+
+def test_goal_succeeds_with_one_feedback_per_step(start_server, probe):
+    server = start_server(FAST)
+    # Feedback is a topic: make sure the probe's subscription is known before the goal starts.
+    spin_until(
+        probe.executor,
+        lambda: server.count_subscribers(f"/{ACTION_NAME}/_action/feedback") >= 1,
+        what="the probe's feedback subscription",
+    )
+    goal_handle, feedback = probe.send(8)
+    assert goal_handle.accepted
+
+    assert probe.result(goal_handle) == (GoalStatus.STATUS_SUCCEEDED, fibonacci(8))
+    assert feedback == [fibonacci(step) for step in range(1, 9)]
+
+
+def test_bad_orders_are_rejected_and_the_server_carries_on(start_server, probe, capfd):
+    start_server(FAST)
+    for order in (-1, MAX_ORDER + 1, INT32_MAX, -(2**31)):
+        goal_handle, _ = probe.send(order)
+        assert not goal_handle.accepted, f"order {order} was accepted"
+    log = capfd.readouterr().err
+    assert f"Rejected goal of order -1: the order must be 0 to {MAX_ORDER}" in log
+    assert f"Rejected goal of order {MAX_ORDER + 1}" in log
+
+    goal_handle, _ = probe.send(MAX_ORDER)
+    status, sequence = probe.result(goal_handle)
+    assert status == GoalStatus.STATUS_SUCCEEDED
+    assert sequence[-1] == 1836311903 and len(sequence) == MAX_ORDER + 2
+
+
+def test_order_zero_returns_the_seeds(start_server, probe):
+    start_server(FOREVER)  # no step at all, so no wait either
+    goal_handle, feedback = probe.send(0)
+    assert probe.result(goal_handle) == (GoalStatus.STATUS_SUCCEEDED, [0, 1])
+    assert feedback == []
+
+
+def test_cancel_stops_the_goal_within_the_step(start_server, probe, capfd):
+    start_server(FOREVER)
+    goal_handle, feedback = probe.send(5)
+    spin_until(probe.executor, lambda: bool(feedback), what="the first feedback")
+
+    cancel = goal_handle.cancel_goal_async()
+    spin_until(probe.executor, cancel.done, what="the answer to the cancel request")
+    assert len(cancel.result().goals_canceling) == 1, "cancel request refused"
+
+    assert probe.result(goal_handle) == (GoalStatus.STATUS_CANCELED, [0, 1, 1])
+    assert "ros_tutorial_action: Canceled" in capfd.readouterr().err
+
+
+def test_new_goal_preempts_the_running_one(start_server, probe, capfd):
+    start_server(FOREVER)
+    first, feedback = probe.send(5)
+    spin_until(probe.executor, lambda: bool(feedback), what="the first goal's first feedback")
+
+    second, _ = probe.send(0)
+    assert second.accepted
+
+    assert probe.result(first) == (GoalStatus.STATUS_ABORTED, [0, 1, 1])
+    assert probe.result(second) == (GoalStatus.STATUS_SUCCEEDED, [0, 1])
+    assert "ros_tutorial_action: Preempted" in capfd.readouterr().err
+
+
+@pytest.mark.parametrize("value", [0.0, -1.0, float("inf"), "fast", True])
+def test_step_period_must_be_a_positive_number(context, value):
+    with pytest.raises(SystemExit, match="step_period must be"):
+        FibonacciActionServer(
+            context=context, parameter_overrides=[Parameter("step_period", value=value)]
+        )
+
+
+def test_step_period_can_change_but_only_to_a_positive_number(context):
+    server = FibonacciActionServer(
+        context=context, parameter_overrides=[Parameter("step_period", value=2)]
+    )
+    try:
+        assert server.step_period == 2.0
+        (refused,) = server.set_parameters([Parameter("step_period", value=0.0)])
+        assert not refused.successful and "greater than 0" in refused.reason
+        (accepted,) = server.set_parameters([Parameter("step_period", value=0.5)])
+        assert accepted.successful and server.step_period == 0.5
+    finally:
+        server.destroy_node()
+
+
+# --- the client CLI, as a real process ---------------------------------------------------
+
+
+def test_client_computes_the_books_order_20_by_default(start_server, node_process):
+    start_server(FAST)
+    client = node_process(*CLIENT)
+    assert client.wait() == 0, client.output
+    out = client.output
+    assert "Waiting for action server to start." in out
+    assert "Action server started, sending goal." in out
+    assert f"Result: {fibonacci(20)}" in out
+    assert "Action finished: SUCCEEDED" in out
+    feedback = [line for line in out.splitlines() if "Received feedback: " in line]
+    assert feedback and feedback[-1].endswith(f"Received feedback: {fibonacci(20)}")
+
+
+@pytest.mark.parametrize(
+    "args",
+    [["abc"], ["1", "2"], ["99999999999"], ["--timeout", "0"], ["--result-timeout", "x"]],
+)
+def test_client_usage_errors(node_process, args):
+    client = node_process(*CLIENT, *args)
+    assert client.wait() == 2
+    assert "usage: action_client" in client.output
+    assert "Traceback" not in client.output
+
+
+def test_client_without_server_gives_up(node_process):
+    client = node_process(*CLIENT, "3", "--timeout", "1")
+    assert client.wait() == 1
+    assert f"Action server {ACTION_NAME} not available after 1 s" in client.output
+    assert "Traceback" not in client.output
+
+
+def test_client_reports_a_rejected_goal(start_server, node_process):
+    start_server(FAST)
+    client = node_process(*CLIENT, str(MAX_ORDER + 1))
+    assert client.wait() == 1
+    assert f"Goal of order {MAX_ORDER + 1} rejected" in client.output
+
+
+def test_ctrl_c_on_client_cancels_the_goal_on_the_server(start_server, probe, node_process):
+    start_server(FOREVER)
+    client = node_process(*CLIENT, "5")
+    client.wait_for_output(
+        lambda lines: any("Received feedback: [0, 1, 1]" in line for line in lines),
+        what="the first feedback",
+    )
+    assert client.interrupt() == 130
+    assert "Action finished: CANCELED" in client.output
+    assert "Traceback" not in client.output
+    probe.wait_for_status(GoalStatus.STATUS_CANCELED)
+
+
+def test_client_cancels_the_goal_after_its_result_timeout(start_server, probe, node_process):
+    start_server(FOREVER)
+    client = node_process(*CLIENT, "5", "--result-timeout", "1")
+    assert client.wait() == 1
+    assert "Action did not finish before the time out." in client.output
+    assert "Action finished: CANCELED" in client.output
+    probe.wait_for_status(GoalStatus.STATUS_CANCELED)
+
+
+def test_server_stops_mid_goal_on_ctrl_c_and_the_client_notices(node_process):
+    server = node_process(
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", f"step_period:={FOREVER}"
+    )
+    client = node_process(*CLIENT, "5")
+    client.wait_for_output(
+        lambda lines: any("Received feedback: [0, 1, 1]" in line for line in lines),
+        what="the first feedback",
+    )
+    assert server.interrupt() == 0
+    assert "Traceback" not in server.output
+    assert client.wait() == 1
+    assert f"Action server {ACTION_NAME} went away before the goal finished" in client.output
+
+
+def test_server_refuses_a_bad_step_period(node_process):
+    server = node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0")
+    assert server.wait() != 0
+    assert "error: step_period must be greater than 0 seconds" in server.output
+    assert "Traceback" not in server.output

@@ -1,0 +1,140 @@
+"""The service lesson: servers in-process, client command lines as real processes."""
+
+from __future__ import annotations
+
+import pytest
+from helpers import spin_until
+from rclpy.node import Node
+from ros_tutorials_interfaces.srv import AddTwoInts, SrvTutorial
+
+from ros_tutorials_common.int64 import INT64_MAX, INT64_MIN
+from ros_tutorials_service.add_two_ints_server import AddTwoIntsServer
+from ros_tutorials_service.server import ServiceServer
+
+# (client module, the service it calls)
+CLIENTS = [
+    ("ros_tutorials_service.client", "ros_tutorial_srv"),
+    ("ros_tutorials_parameter.client", "ros_tutorial_srv"),
+    ("ros_tutorials_service.add_two_ints_client", "add_two_ints"),
+]
+
+
+def call(executor, client, a: int, b: int):
+    """Send one request through client and return the response, spinning until it comes."""
+    spin_until(executor, client.service_is_ready, what=f"service {client.srv_name}")
+    future = client.call_async(client.srv_type.Request(a=a, b=b))
+    spin_until(executor, future.done, what=f"the answer of {client.srv_name} to {a}, {b}")
+    return future.result()
+
+
+def test_service_server_adds_and_logs_like_the_book(context, executor, capfd):
+    server = ServiceServer(context=context)
+    probe = Node("probe", context=context)
+    client = probe.create_client(SrvTutorial, "ros_tutorial_srv")
+    for node in (server, probe):
+        executor.add_node(node)
+
+    assert call(executor, client, 2, 3).result == 5
+    assert call(executor, client, -7, 3).result == -4
+
+    log = capfd.readouterr().err
+    assert "[service_server]: ready srv server!" in log
+    assert "[service_server]: request: x=2, y=3" in log
+    assert "[service_server]: sending back response: 5" in log
+
+
+def test_service_server_answers_0_on_int64_overflow_and_keeps_serving(context, executor, capfd):
+    server = ServiceServer(context=context)
+    probe = Node("probe", context=context)
+    client = probe.create_client(SrvTutorial, "ros_tutorial_srv")
+    for node in (server, probe):
+        executor.add_node(node)
+
+    assert call(executor, client, INT64_MAX, 1).result == 0
+    assert call(executor, client, INT64_MIN, -1).result == 0
+    assert call(executor, client, INT64_MAX, INT64_MIN).result == -1
+    assert call(executor, client, 2, 3).result == 5, "the server stopped answering"
+
+    log = capfd.readouterr().err
+    assert "[WARN]" in log and f"{INT64_MAX} + 1 = {INT64_MAX + 1} does not fit in int64" in log
+    assert f"{INT64_MIN} + -1 = {INT64_MIN - 1} does not fit in int64" in log
+
+
+def test_add_two_ints_round_trip(context, executor, capfd):
+    server = AddTwoIntsServer(context=context)
+    probe = Node("probe", context=context)
+    client = probe.create_client(AddTwoInts, "add_two_ints")
+    for node in (server, probe):
+        executor.add_node(node)
+
+    assert call(executor, client, 1, 2).sum == 3
+    assert call(executor, client, INT64_MAX, INT64_MAX).sum == 0
+    assert call(executor, client, -40, 2).sum == -38
+
+    log = capfd.readouterr().err
+    assert "[add_two_ints_server]: Ready to add two ints." in log
+    assert "[add_two_ints_server]: request: x=1, y=2" in log
+    assert "[add_two_ints_server]: sending back response: [3]" in log
+
+
+def test_service_client_calls_the_server(node_process):
+    server = node_process("-m", "ros_tutorials_service.server")
+    server.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines))
+    client = node_process("-m", "ros_tutorials_service.client", "2", "3", "--timeout", "60")
+
+    assert client.wait(90) == 0, client.output
+    assert "[service_client]: send srv, srv.Request.a and b: 2, 3" in client.output
+    assert "[service_client]: receive srv, srv.Response.result: 5" in client.output
+    server.wait_for_output(lambda lines: any("sending back response: 5" in x for x in lines))
+    assert server.interrupt() == 0
+
+
+def test_add_two_ints_client_calls_the_server(node_process):
+    server = node_process("-m", "ros_tutorials_service.add_two_ints_server")
+    client = node_process(
+        "-m", "ros_tutorials_service.add_two_ints_client", "--timeout", "60", "-5", "12"
+    )
+
+    assert client.wait(90) == 0, client.output
+    assert "[add_two_ints_client]: Sum: 7" in client.output
+    assert server.interrupt() == 0
+
+
+@pytest.mark.parametrize("module", [module for module, _ in CLIENTS])
+@pytest.mark.parametrize(
+    ("args", "complaint"),
+    [
+        ([], "the following arguments are required"),
+        (["1"], "the following arguments are required"),
+        (["1", "2", "3"], "unrecognized arguments: 3"),
+        (["1.5", "2"], "'1.5' is not an integer"),
+        (["1", "two"], "'two' is not an integer"),
+        (["9223372036854775808", "0"], "does not fit in a 64-bit integer"),
+        (["1", "2", "--timeout", "-1"], "'-1' is not a positive number of seconds"),
+    ],
+)
+def test_client_usage_errors(node_process, module, args, complaint):
+    client = node_process("-m", module, *args)
+    assert client.wait() == 2
+    assert "usage: " in client.output
+    assert complaint in client.output
+    assert "Traceback" not in client.output
+
+
+@pytest.mark.parametrize(("module", "service"), CLIENTS)
+def test_client_without_server_fails_clearly(node_process, module, service):
+    # The test session's ROS domain is private: no server exists.
+    client = node_process("-m", module, "1", "2", "--timeout", "1.5")
+    assert client.wait() == 1
+    assert f"Failed to call service {service}: no server within 1.5 s" in client.output
+    assert "Traceback" not in client.output
+
+
+def test_client_interrupted_while_waiting_exits_cleanly(node_process):
+    client = node_process("-m", "ros_tutorials_service.client", "1", "2", "--timeout", "120")
+    client.wait_for_output(
+        lambda lines: any("waiting for service ros_tutorial_srv" in x for x in lines)
+    )
+    assert client.interrupt() == 130
+    assert "interrupted" in client.output
+    assert "Traceback" not in client.output
