@@ -314,3 +314,42 @@ def test_a_parameter_on_several_nodes_asks_for_the_node(fixture_node, node_proce
     assert ok("rosparam", "get", "/second_server/calculation_method").strip() == "1"
     # Nothing died from the bad requests.
     assert fixture_node.process.poll() is None and other.process.poll() is None
+
+
+# Against the real lessons' nodes, as the book does it.
+
+
+def _ready(proc) -> None:
+    proc.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines), what="ready")
+
+
+def test_rosservice_call_against_the_service_lesson(node_process):
+    _ready(node_process("-m", "ros_tutorials_service.server"))
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
+
+
+def test_the_books_walk_through_against_the_parameter_lesson(node_process):
+    _ready(node_process("-m", "ros_tutorials_parameter.server"))
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
+    for method, result in ((2, 5), (3, 50), (4, 2)):
+        ok("rosparam", "set", "/calculation_method", str(method))
+        assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == (
+            f"result: {result}"
+        )
+    assert "out of range" in fails("rosparam", "set", "/calculation_method", "7")
+
+
+def test_send_goal_against_the_action_lesson(node_process):
+    node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0.1")
+    out = ok(
+        "rostool", "action", "send_goal", "/ros_tutorial_action",
+        "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    result = out.split("Result:")[1]
+    numbers = [
+        int(line.strip("- ")) for line in result.splitlines() if line.strip().startswith("-")
+    ]
+    assert numbers == [0, 1, 1, 2, 3, 5, 8]
+    assert out.count("Feedback:") >= 1
+    assert out.strip().endswith("Goal finished with status: SUCCEEDED")
