@@ -18,7 +18,7 @@ from rclpy.executors import ExternalShutdownException
 
 from rostool import action, interface, node, param, service, topic
 from rostool.errors import ToolError
-from rostool.graph import DEFAULT_SPIN_TIME, DEFAULT_TIMEOUT, Graph
+from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 
 
 def common_options() -> argparse.ArgumentParser:
@@ -33,8 +33,8 @@ def common_options() -> argparse.ArgumentParser:
     common.add_argument(
         "--spin-time",
         type=float,
-        default=DEFAULT_SPIN_TIME,
-        help="most seconds a list waits for discovery (default %(default)g)",
+        help="seconds a list waits for discovery (default: until the graph is quiet, "
+        f"at most {MAX_SETTLE_TIME:g})",
     )
     return common
 
@@ -54,7 +54,7 @@ def execute(
     command: Callable[[Graph | None], None],
     offline: bool = False,
     timeout: float = DEFAULT_TIMEOUT,
-    spin_time: float = DEFAULT_SPIN_TIME,
+    spin_time: float | None = None,
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes."""
     graph = None
@@ -86,5 +86,5 @@ def main(argv: Sequence[str] | None = None) -> int:
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),
         timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
-        spin_time=getattr(args, "spin_time", DEFAULT_SPIN_TIME),
+        spin_time=getattr(args, "spin_time", None),
     )

@@ -7,7 +7,9 @@ only after up to about 3 s (measured here with Fast DDS). So a command never sle
 fixed time: it polls until what it needs appears (``wait_for``), and reports "unknown
 ..." only when its timeout has passed. Listing commands cannot know what they have not
 seen yet; they wait until another node has shown up and the graph has been quiet for a
-moment (``settle``), bounded by ``spin_time``.
+moment (``settle``, at most MAX_SETTLE_TIME), or exactly ``spin_time`` seconds if given:
+discovery can also deliver a node's endpoints in parts seconds apart, and only a fixed
+wait long enough makes a list complete.
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ from ros_tutorials_common import init
 from rostool.errors import ToolError
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
-DEFAULT_SPIN_TIME = 4.0  # the most a listing command waits for discovery (slow case ~3 s)
+MAX_SETTLE_TIME = 4.0  # the most a listing command waits for discovery (slow case ~3 s)
 QUIET_TIME = 0.25  # a listing is complete once the graph has not changed for this long
 POLL_PERIOD = 0.02
 
@@ -56,7 +58,7 @@ def is_hidden(name: str) -> bool:
 class Graph:
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
-    def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float = DEFAULT_SPIN_TIME):
+    def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float | None = None):
         self.timeout = timeout
         self.spin_time = spin_time
         init(["rostool"])
@@ -96,9 +98,13 @@ class Graph:
     def settle(self) -> None:
         """Let discovery run before listing: until other nodes are seen and nothing changes."""
         start = time.monotonic()
+        if self.spin_time is not None:
+            while time.monotonic() - start < self.spin_time:
+                self.spin_once()
+            return
         last_change = start
         snapshot = None
-        while time.monotonic() - start < self.spin_time:
+        while time.monotonic() - start < MAX_SETTLE_TIME:
             current = (
                 sorted(self.node.get_node_names_and_namespaces()),
                 sorted(self.node.get_topic_names_and_types()),

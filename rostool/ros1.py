@@ -27,7 +27,7 @@ import yaml
 from rostool import interface, node, param, service, topic
 from rostool.cli import common_options, execute
 from rostool.errors import ToolError
-from rostool.graph import DEFAULT_SPIN_TIME, DEFAULT_TIMEOUT, Graph, absolute_name
+from rostool.graph import DEFAULT_TIMEOUT, Graph, absolute_name
 from rostool.messages import parse_yaml
 from rostool.typenames import load_type
 
@@ -321,7 +321,7 @@ def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),
         timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
-        spin_time=getattr(args, "spin_time", DEFAULT_SPIN_TIME),
+        spin_time=getattr(args, "spin_time", None),
     )
 
 

@@ -139,16 +139,17 @@ def test_offline_errors_are_one_clear_line(args, message):
 
 
 def test_topic_list_type_info_and_node_list(publisher):
-    assert "/ros_tutorial_msg" in ok("rostopic", "list", "--spin-time", "20").split()
+    assert "/ros_tutorial_msg" in ok("rostopic", "list", "--spin-time", "5").split()
+    # A fixed --spin-time makes a list complete even when discovery comes in parts.
     assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in ok(
-        "rostool", "topic", "list", "-t"
+        "rostool", "topic", "list", "-t", "--spin-time", "5"
     )
     assert ok("rostool", "topic", "type", "/ros_tutorial_msg").strip() == (
         "ros_tutorials_interfaces/msg/MsgTutorial"
     )
     info = ok("rostool", "topic", "info", "/ros_tutorial_msg", "-v")
     assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
-    nodes = ok("rosnode", "list", "--spin-time", "20").split()
+    nodes = ok("rosnode", "list", "--spin-time", "5").split()
     assert nodes == ["/topic_publisher"]  # the tool's own node is hidden
     assert "/ros_tutorial_msg: ros_tutorials_interfaces/msg/MsgTutorial" in ok(
         "rostool", "node", "info", "/topic_publisher"
@@ -213,7 +214,7 @@ def test_service_call_in_both_spellings(fixture_node):
     out = ok("rostool", "service", "call", "/ros_tutorial_srv", SRV, "{a: 10, b: 5}")
     assert "SrvTutorial_Response(result=15)" in out
     assert ok("rosservice", "args", "/ros_tutorial_srv").strip() == "a b"
-    assert "/ros_tutorial_srv" in ok("rosservice", "list").split()
+    assert "/ros_tutorial_srv" in ok("rosservice", "list", "--spin-time", "5").split()
     assert ok("rostool", "service", "type", "/ros_tutorial_srv").strip() == SRV
 
 
@@ -225,7 +226,9 @@ def test_the_books_parameter_walk_through(fixture_node):
             f"result: {result}"
         )
     assert ok("rosparam", "get", "/calculation_method").strip() == "4"
-    assert "/service_server/calculation_method" in ok("rosparam", "list").split()
+    assert (
+        "/service_server/calculation_method" in ok("rosparam", "list", "--spin-time", "5").split()
+    )
 
 
 def test_ros2_param_verbs(fixture_node, tmp_path):
@@ -245,7 +248,7 @@ def test_ros2_param_verbs(fixture_node, tmp_path):
 
 
 def test_action_send_goal_with_feedback(fixture_node):
-    assert "/ros_tutorial_action" in ok("rostool", "action", "list").split()
+    assert "/ros_tutorial_action" in ok("rostool", "action", "list", "--spin-time", "5").split()
     out = ok(
         "rostool", "action", "send_goal", "/ros_tutorial_action",
         "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback",
