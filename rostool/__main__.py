@@ -1,0 +1,5 @@
+"""`python -m rostool ...` is the same as `rostool ...`."""
+
+from rostool.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,90 @@
+"""`rostool VERB COMMAND ...`: the command line, and how every command runs and fails.
+
+Each verb lives in its own module (topic.py, service.py, ...) and registers its commands
+here. A command is a function of the graph and the parsed arguments. `execute` gives all
+of them the same behaviour: a ToolError or a bad name prints one line and exits 1,
+Ctrl-C exits 0 (it is how `echo`, `hz` and `pub` are meant to end).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections.abc import Callable, Sequence
+
+from rclpy.exceptions import NameValidationException
+from rclpy.executors import ExternalShutdownException
+
+from rostool import action, interface, node, param, service, topic
+from rostool.errors import ToolError
+from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
+
+
+def common_options() -> argparse.ArgumentParser:
+    """Options every graph command takes (added to each command so they go after it)."""
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument(
+        "--timeout",
+        type=float,
+        default=DEFAULT_TIMEOUT,
+        help=f"seconds to wait for what the command names to appear (default {DEFAULT_TIMEOUT:g})",
+    )
+    common.add_argument(
+        "--spin-time",
+        type=float,
+        help="seconds a list waits for discovery (default: until the graph is quiet, "
+        f"at most {MAX_SETTLE_TIME:g})",
+    )
+    return common
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="rostool", description="Look inside a running ROS 2 graph (like the ros2 command)."
+    )
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+    common = common_options()
+    for module in (topic, service, param, node, action, interface):
+        module.register(verbs, common)
+    return parser
+
+
+def execute(
+    command: Callable[[Graph | None], None],
+    offline: bool = False,
+    timeout: float = DEFAULT_TIMEOUT,
+    spin_time: float | None = None,
+) -> int:
+    """Run one command with a graph node (unless offline); map failures to exit codes."""
+    graph = None
+    try:
+        if not offline:
+            graph = Graph(timeout, spin_time)
+        command(graph)
+    except ToolError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    except NameValidationException as error:
+        print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
+        return 1
+    except (KeyboardInterrupt, ExternalShutdownException):
+        return 0
+    except BrokenPipeError:
+        # `rostool topic echo /t | head`: the reader left; leave quietly too.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+    finally:
+        if graph is not None:
+            graph.close()
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    return execute(
+        lambda graph: args.run(graph, args),
+        offline=getattr(args, "offline", False),
+        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
+        spin_time=getattr(args, "spin_time", None),
+    )

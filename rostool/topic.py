@@ -1,0 +1,304 @@
+"""`rostool topic ...`: list, echo, pub, hz, bw, info, type and find topics (like `ros2 topic`)."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import statistics
+import sys
+import time
+from collections import deque
+from itertools import pairwise
+from typing import Any
+
+import yaml
+from rclpy.duration import Duration
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+from rostool.errors import ToolError
+from rostool.graph import Graph, absolute_name
+from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
+from rostool.typenames import full_type_name, load_type
+
+DEFAULT_PUB_RATE = 1.0  # Hz, as `ros2 topic pub`
+
+
+def list_topics(graph: Graph, show_types: bool = False) -> None:
+    graph.settle()
+    for topic, types in sorted(graph.topic_types().items()):
+        print(f"{topic} [{', '.join(types)}]" if show_types else topic)
+
+
+def print_type(graph: Graph, topic: str) -> None:
+    print(graph.wait_for_topic_type(absolute_name(topic)))
+
+
+def find(graph: Graph, type_name: str) -> None:
+    wanted = full_type_name(load_type(type_name, ("msg",)))
+    graph.settle()
+    for topic, types in sorted(graph.topic_types().items()):
+        if wanted in types:
+            print(topic)
+
+
+def info(graph: Graph, topic: str, verbose: bool = False) -> None:
+    topic = absolute_name(topic)
+    type_name = graph.wait_for_topic_type(topic)
+    if verbose:
+        # Endpoints are discovered before the names of their nodes; wait a little for those.
+        with contextlib.suppress(ToolError):  # after that, print what is known
+            graph.wait_for(lambda: _node_names_known(graph, topic), "", timeout=1.0)
+    publishers = graph.node.get_publishers_info_by_topic(topic)
+    subscriptions = graph.node.get_subscriptions_info_by_topic(topic)
+    print(f"Type: {type_name}")
+    for title, endpoints in (("Publisher", publishers), ("Subscription", subscriptions)):
+        print(f"{title} count: {len(endpoints)}")
+        if not verbose:
+            continue
+        for endpoint in endpoints:
+            qos = endpoint.qos_profile
+            print(f"  Node: {endpoint.node_namespace.rstrip('/')}/{endpoint.node_name}")
+            print(f"    Reliability: {qos.reliability.name}, Durability: {qos.durability.name}")
+
+
+def _node_names_known(graph: Graph, topic: str) -> bool:
+    endpoints = [
+        *graph.node.get_publishers_info_by_topic(topic),
+        *graph.node.get_subscriptions_info_by_topic(topic),
+    ]
+    return all(not e.node_name.startswith("_NODE_NAME_UNKNOWN") for e in endpoints)
+
+
+def compatible_qos(graph: Graph, topic: str) -> QoSProfile:
+    """A subscription QoS that matches every current publisher, as `ros2 topic echo` picks it.
+
+    A reliable subscription gets nothing from a best-effort publisher, and only a
+    transient-local one receives what a latching publisher sent before we joined.
+    """
+    publishers = graph.node.get_publishers_info_by_topic(topic)
+    qos = QoSProfile(depth=10)
+    if publishers and all(
+        p.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in publishers
+    ):
+        qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
+    if any(p.qos_profile.reliability == ReliabilityPolicy.BEST_EFFORT for p in publishers):
+        qos.reliability = ReliabilityPolicy.BEST_EFFORT
+    return qos
+
+
+def _message_type(graph: Graph, topic: str, type_name: str | None) -> type:
+    return load_type(type_name or graph.wait_for_topic_type(topic), ("msg",))
+
+
+def _pick_field(data: object, field: str) -> object:
+    """`--field stamp.sec`: walk into the message data one field at a time."""
+    for name in field.split("."):
+        if not isinstance(data, dict) or name not in data:
+            raise ToolError(f"the message has no field '{field}'")
+        data = data[name]
+    return data
+
+
+def echo(
+    graph: Graph,
+    topic: str,
+    type_name: str | None = None,
+    count: int | None = None,
+    field: str | None = None,
+) -> None:
+    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
+    topic = absolute_name(topic)
+    msg_type = _message_type(graph, topic, type_name)
+    received: deque = deque()
+    # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
+    graph.node.create_subscription(
+        msg_type, topic, lambda msg: received.append(msg), compatible_qos(graph, topic)
+    )
+    printed = 0
+    while True:
+        graph.spin_once(0.1)
+        while received:
+            msg = received.popleft()
+            if field is None:
+                print(message_to_yaml(msg))
+            else:
+                value = _pick_field(message_to_data(msg), field)
+                print(_field_text(value))
+            print("---", flush=True)
+            printed += 1
+            if printed == count:
+                return
+
+
+def _field_text(value: object) -> str:
+    if isinstance(value, (dict, list)):
+        return yaml.safe_dump(value, default_flow_style=False, sort_keys=False).rstrip()
+    return str(value)
+
+
+def pub(
+    graph: Graph,
+    topic: str,
+    type_name: str,
+    values: Any = None,
+    rate: float | None = DEFAULT_PUB_RATE,
+    times: int | None = None,
+    latch: bool = False,
+) -> None:
+    """Publish a message filled from values: `times` times (None: until Ctrl-C) at `rate` Hz.
+
+    rate=None publishes once and keeps the publisher alive until Ctrl-C (ROS 1's latching
+    mode, with a transient-local publisher so late subscribers that ask for it still get it).
+    """
+    topic = absolute_name(topic)
+    msg_type = load_type(type_name, ("msg",))
+    msg = fill_message(msg_type(), values)
+    qos = QoSProfile(depth=10)
+    if latch:
+        qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
+    publisher = graph.node.create_publisher(msg_type, topic, qos)
+    if times is not None:
+        # A one-shot publication into a void is lost: give subscribers time to match first.
+        try:
+            graph.wait_for(publisher.get_subscription_count, "no subscriber")
+        except ToolError:
+            print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
+    if rate is None:
+        print("publishing and latching message. Press ctrl-C to terminate", flush=True)
+        served = 0
+        while True:
+            # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
+            # subscription would miss one sent before it matched, so send it again on each join.
+            subscribers = publisher.get_subscription_count()
+            if subscribers > served:
+                publisher.publish(msg)
+            served = subscribers
+            graph.spin_once(0.1)
+    print("publisher: beginning loop", flush=True)
+    count = 0
+    next_time = time.monotonic()
+    while times is None or count < times:
+        wait = next_time - time.monotonic()
+        if wait > 0:
+            graph.spin_once(min(wait, 0.1))
+            continue
+        count += 1
+        publisher.publish(msg)
+        print(f"publishing #{count}: {msg}", flush=True)
+        next_time += 1.0 / rate
+    # Reliable delivery of the last message before the process goes away.
+    publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
+
+
+class _RateMeter:
+    """Arrival times in a sliding window, and the statistics `hz` prints."""
+
+    def __init__(self, window: int) -> None:
+        self.times: deque[float] = deque(maxlen=window + 1)
+        self.sizes: deque[int] = deque(maxlen=window)
+
+    def add(self, raw: bytes) -> None:
+        self.times.append(time.monotonic())
+        self.sizes.append(len(raw))
+
+    def periods(self) -> list[float]:
+
+        return [b - a for a, b in pairwise(self.times)]
+
+
+def hz(graph: Graph, topic: str, window: int = 10000, bandwidth: bool = False) -> None:
+    """Print the publishing rate (or bandwidth) of a topic once a second until Ctrl-C."""
+    topic = absolute_name(topic)
+    msg_type = _message_type(graph, topic, None)
+    meter = _RateMeter(window)
+    # raw=True: count serialized messages without the cost of deserializing them.
+    graph.node.create_subscription(
+        msg_type, topic, meter.add, compatible_qos(graph, topic), raw=True
+    )
+    print(f"subscribed to [{topic}]", flush=True)
+    last_report = time.monotonic()
+    while True:
+        graph.spin_once(0.1)
+        if time.monotonic() - last_report < 1.0:
+            continue
+        last_report = time.monotonic()
+        periods = meter.periods()
+        if not periods:
+            print("no new messages", flush=True)
+            continue
+        mean = statistics.fmean(periods)
+        if bandwidth:
+            rate = sum(meter.sizes) / (meter.times[-1] - meter.times[0] or 1.0)
+            print(f"{rate:.2f} B/s from {len(meter.sizes)} messages", flush=True)
+            print(f"\tMessage size mean: {statistics.fmean(meter.sizes):.0f} B", flush=True)
+            continue
+        print(f"average rate: {1.0 / mean:.3f}", flush=True)
+        std = statistics.pstdev(periods)
+        print(
+            f"\tmin: {min(periods):.3f}s max: {max(periods):.3f}s "
+            f"std dev: {std:.5f}s window: {len(periods) + 1}",
+            flush=True,
+        )
+
+
+def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    parser = verbs.add_parser("topic", help="topics: list, echo, pub, hz, bw, info, type, find")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    p = sub.add_parser("list", parents=[common], help="list the topics in the graph")
+    p.add_argument("-t", "--show-types", action="store_true", help="show each topic's type")
+    p.set_defaults(run=lambda graph, a: list_topics(graph, a.show_types))
+
+    p = sub.add_parser("echo", parents=[common], help="print the messages on a topic")
+    p.add_argument("topic")
+    p.add_argument("type", nargs="?", help="message type (default: the one in the graph)")
+    p.add_argument("--once", action="store_true", help="print one message and exit")
+    p.add_argument("--field", help="print only this field, e.g. stamp.sec")
+    p.set_defaults(
+        run=lambda graph, a: echo(graph, a.topic, a.type, 1 if a.once else None, a.field)
+    )
+
+    p = sub.add_parser("pub", parents=[common], help="publish a message given as YAML")
+    p.add_argument("topic")
+    p.add_argument("type", help="message type, e.g. std_msgs/msg/String")
+    p.add_argument("values", nargs="?", default="{}", help="the fields as YAML, e.g. '{data: hi}'")
+    p.add_argument("-r", "--rate", type=float, default=DEFAULT_PUB_RATE, help="Hz (default 1)")
+    group = p.add_mutually_exclusive_group()
+    group.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
+    group.add_argument("-t", "--times", type=int, help="publish this many messages, then exit")
+    p.set_defaults(
+        run=lambda graph, a: pub(
+            graph,
+            a.topic,
+            a.type,
+            parse_yaml(a.values),
+            positive_rate(a.rate),
+            1 if a.once else a.times,
+        )
+    )
+
+    for name, bandwidth in (("hz", False), ("bw", True)):
+        what = "bandwidth" if bandwidth else "publishing rate"
+        p = sub.add_parser(name, parents=[common], help=f"print the {what} of a topic")
+        p.add_argument("topic")
+        p.add_argument("-w", "--window", type=int, default=10000, help="messages to average")
+        p.set_defaults(run=lambda graph, a, bw=bandwidth: hz(graph, a.topic, a.window, bw))
+
+    p = sub.add_parser("info", parents=[common], help="type, publishers and subscriptions")
+    p.add_argument("topic")
+    p.add_argument("-v", "--verbose", action="store_true", help="list the endpoints")
+    p.set_defaults(run=lambda graph, a: info(graph, a.topic, a.verbose))
+
+    p = sub.add_parser("type", parents=[common], help="print the message type of a topic")
+    p.add_argument("topic")
+    p.set_defaults(run=lambda graph, a: print_type(graph, a.topic))
+
+    p = sub.add_parser("find", parents=[common], help="list the topics of a message type")
+    p.add_argument("type")
+    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+
+
+def positive_rate(value: float) -> float:
+    if value <= 0:
+        raise ToolError(f"the rate must be positive, got {value:g}")
+    return value

@@ -1,0 +1,100 @@
+"""Interface type names: 'pkg/msg/Name' (ROS 2), 'pkg/Name' (ROS 1), and where they live.
+
+Types are found the way ROS 2 finds them: the ament resource index lists, per package,
+the interface files it installed (share/ament_index/resource_index/rosidl_interfaces/PKG),
+the definitions are in share/PKG/{msg,srv,action}/, and the Python classes are imported
+from PKG.msg, PKG.srv, PKG.action.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+from pathlib import Path
+
+from rostool.errors import ToolError
+
+KINDS = ("msg", "srv", "action")
+KIND_NAMES = {"msg": "message", "srv": "service", "action": "action"}
+
+
+def prefixes() -> list[Path]:
+    """Install prefixes to search: AMENT_PREFIX_PATH if set, and this environment's prefix."""
+    paths = [Path(p) for p in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
+    return [*paths, Path(sys.prefix)]
+
+
+def interface_index() -> dict[str, list[str]]:
+    """{package: ['msg/Num', 'srv/AddTwoInts', ...]} for every package in the index."""
+    index: dict[str, list[str]] = {}
+    for prefix in prefixes():
+        folder = prefix / "share" / "ament_index" / "resource_index" / "rosidl_interfaces"
+        if not folder.is_dir():
+            continue
+        for entry in sorted(folder.iterdir()):
+            names = index.setdefault(entry.name, [])
+            for line in entry.read_text().splitlines():
+                stem, _, extension = line.strip().rpartition(".")
+                if extension in KINDS and stem not in names:
+                    names.append(stem)
+    return index
+
+
+def parse_type_name(name: str, kinds: tuple[str, ...] = KINDS) -> tuple[str, str, str]:
+    """'pkg/msg/Name', 'pkg/Name' or 'Name[.msg]' -> (package, kind, Name), checked in the index."""
+    parts = name.strip().split("/")
+    base = parts[-1]
+    for kind in KINDS:  # `rosmsg show UserRecord.msg` names the file
+        if base.endswith("." + kind):
+            base, kinds = base[: -len(kind) - 1], (kind,)
+    if len(parts) == 3 and parts[1] in kinds:
+        package, kinds = parts[0], (parts[1],)
+    elif len(parts) == 2:
+        package = parts[0]
+    elif len(parts) == 1:
+        package = None  # ROS 1 style: search every package
+    else:
+        expected = " or ".join(f"'pkg/{kind}/Name'" for kind in kinds)
+        raise ToolError(f"invalid type name '{name}': expected {expected}")
+    index = interface_index()
+    packages = [package] if package else sorted(index)
+    matches = [
+        (pkg, kind, base)
+        for pkg in packages
+        for kind in kinds
+        if f"{kind}/{base}" in index.get(pkg, [])
+    ]
+    what = "/".join(KIND_NAMES[kind] for kind in kinds)
+    if not matches:
+        if package and package not in index:
+            raise ToolError(f"unknown {what} type '{name}': no interface package '{package}'")
+        raise ToolError(f"unknown {what} type '{name}'")
+    if len(matches) > 1 and package is None:
+        found = ", ".join("/".join(match) for match in matches)
+        raise ToolError(f"type name '{name}' is ambiguous: {found}; name the package")
+    return matches[0]
+
+
+def load_type(name: str, kinds: tuple[str, ...] = KINDS) -> type:
+    """Import the Python class of an interface type, e.g. 'std_msgs/String' -> String."""
+    package, kind, base = parse_type_name(name, kinds)
+    try:
+        module = importlib.import_module(f"{package}.{kind}")
+        return getattr(module, base)
+    except (ImportError, AttributeError) as error:
+        raise ToolError(f"cannot import {package}/{kind}/{base}: {error}") from None
+
+
+def full_type_name(cls: type) -> str:
+    """The ROS 2 name of a generated class, e.g. 'std_msgs/msg/String'."""
+    package, kind = cls.__module__.split(".")[:2]
+    return f"{package}/{kind}/{cls.__name__}"
+
+
+def definition_path(package: str, kind: str, base: str) -> Path:
+    for prefix in prefixes():
+        path = prefix / "share" / package / kind / f"{base}.{kind}"
+        if path.is_file():
+            return path
+    raise ToolError(f"no definition file for {package}/{kind}/{base}")

@@ -1,0 +1,359 @@
+"""rostool and its ROS 1 spellings, run as real processes against real nodes.
+
+The topic nodes of the topic lesson run as processes; a small fixture node
+(rostool_fixture_node.py) offers the service, parameter and action the other lessons use.
+Every command is the installed console script, as a learner types it.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from helpers import TIMEOUT
+
+BIN = Path(sys.executable).parent
+FIXTURE = str(Path(__file__).with_name("rostool_fixture_node.py"))
+PROJECT_TYPES = {
+    "msg": ["AandB", "MsgTutorial", "Num", "UserRecord"],
+    "srv": ["AddTwoInts", "SrvTutorial"],
+    "action": ["Fibonacci"],
+}
+SRV = "ros_tutorials_interfaces/srv/SrvTutorial"
+
+
+def tool(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
+    """Run a console script (`rostool`, `rostopic`, ...) to completion."""
+    command = [str(BIN / args[0]), *args[1:]]
+    try:
+        return subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+
+
+def ok(*args: str) -> str:
+    result = tool(*args)
+    assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
+    assert "Traceback" not in result.stderr
+    return result.stdout
+
+
+def fails(*args: str) -> str:
+    """A command that must fail: non-zero exit, one line on stderr, no traceback."""
+    result = tool(*args)
+    assert result.returncode != 0, f"{' '.join(args)} succeeded:\n{result.stdout}"
+    assert "Traceback" not in result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
+    return lines[0]
+
+
+@pytest.fixture
+def publisher(node_process):
+    proc = node_process("-m", "ros_tutorials_topic.publisher")
+    proc.wait_for_output(lambda lines: any("send msg" in line for line in lines), what="send msg")
+    return proc
+
+
+@pytest.fixture
+def fixture_node(node_process):
+    proc = node_process(FIXTURE)
+    proc.wait_for_output(lambda lines: any("fixture ready" in line for line in lines))
+    return proc
+
+
+# Interfaces: no graph needed.
+
+
+@pytest.mark.parametrize(
+    "kind,name", [(kind, name) for kind, names in PROJECT_TYPES.items() for name in names]
+)
+def test_interface_show_prints_each_project_type(kind, name):
+    source = (Path(__file__).parents[1] / "interfaces" / kind / f"{name}.{kind}").read_text()
+    shown = ok("rostool", "interface", "show", f"ros_tutorials_interfaces/{kind}/{name}")
+    # Every line of the definition, in order (nested types add indented lines in between).
+    top_level = [line for line in shown.splitlines() if not line.startswith("\t")]
+    assert top_level == source.rstrip("\n").splitlines()
+
+
+def test_interface_show_expands_nested_types():
+    shown = ok("rostool", "interface", "show", "ros_tutorials_interfaces/msg/MsgTutorial")
+    assert shown.splitlines() == [
+        "builtin_interfaces/Time stamp",
+        "\tint32 sec",
+        "\tuint32 nanosec",
+        "int32 data",
+    ]
+
+
+def test_interface_list_has_project_and_common_types():
+    listed = ok("rostool", "interface", "list").split()
+    for kind, names in PROJECT_TYPES.items():
+        for name in names:
+            assert f"ros_tutorials_interfaces/{kind}/{name}" in listed
+    for common in ("std_msgs/msg/String", "geometry_msgs/msg/Twist", "std_srvs/srv/Empty"):
+        assert common in listed
+
+
+def test_rosmsg_and_rossrv_show_as_the_seeds_print_them():
+    assert ok("rosmsg", "show", "UserRecord.msg").splitlines() == [
+        "[ros_tutorials_interfaces/UserRecord]:",
+        "string first_name",
+        "string last_name",
+        "uint8 age",
+        "uint32 score",
+    ]
+    assert ok("rossrv", "show", "ros_tutorials_interfaces/AddTwoInts").splitlines() == [
+        "int64 a",
+        "int64 b",
+        "---",
+        "int64 sum",
+    ]
+    assert "int32 data" in ok("rosmsg", "show", "ros_tutorials_interfaces/MsgTutorial")
+    piped = subprocess.run(
+        [str(BIN / "rossrv"), "show"], input=SRV + "\n", capture_output=True, text=True
+    )
+    assert piped.returncode == 0 and "int64 result" in piped.stdout
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (("rostool", "interface", "show", "nope_msgs/msg/X"), "no interface package 'nope_msgs'"),
+        (("rostool", "interface", "show", "std_msgs/msg/Nope"), "unknown message type"),
+        (("rosmsg", "show", "Nope"), "unknown message type 'Nope'"),
+        (("rosmsg", "md5", "std_msgs/String"), "no ROS 2 meaning"),
+        (("rosnode", "kill", "/talker"), "no ROS 2 meaning"),
+        (("rosservice", "uri", "/x"), "no ROS 2 meaning"),
+        (("rosparam", "delete", "/x"), "no ROS 2 meaning"),
+    ],
+)
+def test_offline_errors_are_one_clear_line(args, message):
+    assert message in fails(*args)
+
+
+# Topics, against the topic lesson's nodes.
+
+
+def test_topic_list_type_info_and_node_list(publisher):
+    assert "/ros_tutorial_msg" in ok("rostopic", "list", "--spin-time", "5").split()
+    # A fixed --spin-time makes a list complete even when discovery comes in parts.
+    assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in ok(
+        "rostool", "topic", "list", "-t", "--spin-time", "5"
+    )
+    assert ok("rostool", "topic", "type", "/ros_tutorial_msg").strip() == (
+        "ros_tutorials_interfaces/msg/MsgTutorial"
+    )
+    info = ok("rostool", "topic", "info", "/ros_tutorial_msg", "-v")
+    assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
+    nodes = ok("rosnode", "list", "--spin-time", "5").split()
+    assert "/topic_publisher" in nodes
+    assert not [name for name in nodes if "_rostool" in name]  # the tool's own node is hidden
+    assert "/ros_tutorial_msg: ros_tutorials_interfaces/msg/MsgTutorial" in ok(
+        "rostool", "node", "info", "/topic_publisher"
+    )
+
+
+def test_topic_echo_prints_messages_as_yaml(publisher):
+    out = ok("rostopic", "echo", "/ros_tutorial_msg", "-n", "2")
+    messages = [m for m in out.split("---\n") if m.strip()]
+    assert len(messages) == 2
+    lines = messages[0].splitlines()
+    assert lines[0] == "stamp:" and lines[1].startswith("  sec: ")
+    assert lines[2].startswith("  nanosec: ") and lines[3].startswith("data: ")
+    data = [int(m.split("data: ")[1]) for m in messages]
+    assert data[1] == data[0] + 1
+    field = ok("rostool", "topic", "echo", "/ros_tutorial_msg", "--once", "--field", "data")
+    assert int(field.split("\n")[0]) > 0
+
+
+def test_long_running_verbs_stop_with_exit_0_on_ctrl_c(publisher, node_process):
+    echo = node_process("-m", "rostool", "topic", "echo", "/ros_tutorial_msg")
+    hz = node_process("-m", "rostool", "topic", "hz", "/ros_tutorial_msg")
+    pub = node_process(
+        "-m", "rostool", "topic", "pub", "/other", "std_msgs/msg/String", "{data: hi}", "-r", "5"
+    )
+    echo.wait_for_output(lambda lines: "---" in lines, what="an echoed message")
+    lines = hz.wait_for_output(
+        lambda lines: any("average rate" in line for line in lines), what="a rate"
+    )
+    rate = float(next(line for line in lines if "average rate" in line).split(": ")[1])
+    assert 5.0 < rate < 20.0  # the publisher runs at 10 Hz
+    pub.wait_for_output(lambda lines: any("publishing #2" in line for line in lines))
+    for proc in (echo, hz, pub):
+        assert proc.interrupt() == 0
+        assert "Traceback" not in proc.output
+
+
+def test_topic_pub_reaches_a_subscriber_in_both_spellings(node_process):
+    subscriber = node_process("-m", "ros_tutorials_topic.subscriber")
+    ok("rostool", "topic", "pub", "--once", "/ros_tutorial_msg",
+       "ros_tutorials_interfaces/msg/MsgTutorial", "{data: 42}")  # fmt: skip
+    subscriber.wait_for_output(lambda lines: any("recieve msg = 42" in x for x in lines))
+
+    listener = node_process("-m", "ros_tutorials_topic.listener")
+    latched = node_process(str(BIN / "rostopic"), "pub", "/chatter", "std_msgs/String", "Hello")
+    listener.wait_for_output(lambda lines: any("I heard: [Hello]" in x for x in lines))
+    assert latched.interrupt() == 0
+    # ROS 1's option in the middle, and a rate.
+    rated = node_process(
+        str(BIN / "rostopic"), "pub", "/chatter", "-r", "10", "std_msgs/String", "{data: again}"
+    )
+    listener.wait_for_output(lambda lines: sum("[again]" in x for x in lines) >= 3)
+    assert rated.interrupt() == 0
+
+
+# Services, parameters and actions, against the fixture node.
+
+
+def test_service_call_in_both_spellings(fixture_node):
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
+    out = ok("rostool", "service", "call", "/ros_tutorial_srv", SRV, "{a: 10, b: 5}")
+    assert "SrvTutorial_Response(result=15)" in out
+    assert ok("rosservice", "args", "/ros_tutorial_srv").strip() == "a b"
+    assert "/ros_tutorial_srv" in ok("rosservice", "list", "--spin-time", "5").split()
+    assert ok("rostool", "service", "type", "/ros_tutorial_srv").strip() == SRV
+
+
+def test_the_books_parameter_walk_through(fixture_node):
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
+    for method, result in ((2, 5), (3, 50), (4, 2)):
+        ok("rosparam", "set", "/calculation_method", str(method))
+        assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == (
+            f"result: {result}"
+        )
+    assert ok("rosparam", "get", "/calculation_method").strip() == "4"
+    assert (
+        "/service_server/calculation_method" in ok("rosparam", "list", "--spin-time", "5").split()
+    )
+
+
+def test_ros2_param_verbs(fixture_node, tmp_path):
+    ok("rostool", "param", "set", "/service_server", "calculation_method", "3")
+    assert ok("rostool", "param", "get", "/service_server", "calculation_method").strip() == (
+        "Integer value is: 3"
+    )
+    assert "  calculation_method" in ok("rostool", "param", "list", "/service_server")
+    dump = ok("rostool", "param", "dump", "/service_server")
+    assert "calculation_method: 3" in dump
+    params = tmp_path / "params.yaml"
+    params.write_text("/**:\n  ros__parameters:\n    calculation_method: 2\n")
+    assert "Set parameter calculation_method successful" in ok(
+        "rostool", "param", "load", "/service_server", str(params)
+    )
+    assert ok("rosparam", "get", "/service_server/calculation_method").strip() == "2"
+
+
+def test_action_send_goal_with_feedback(fixture_node):
+    assert "/ros_tutorial_action" in ok("rostool", "action", "list", "--spin-time", "5").split()
+    out = ok(
+        "rostool", "action", "send_goal", "/ros_tutorial_action",
+        "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback",
+    )  # fmt: skip
+    assert "Goal accepted with ID:" in out and "Feedback:" in out
+    result = out.split("Result:")[1]
+    numbers = [
+        int(line.strip("- ")) for line in result.splitlines() if line.strip().startswith("-")
+    ]
+    assert numbers == [0, 1, 1, 2, 3, 5]
+    assert out.strip().endswith("Goal finished with status: SUCCEEDED")
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (("rostopic", "echo", "/nope", "--timeout", "1"), "unknown topic '/nope'"),
+        (("rosservice", "call", "/nope", "1", "--timeout", "1"), "unknown service '/nope'"),
+        (("rostool", "node", "info", "/nope", "--timeout", "1"), "unknown node '/nope'"),
+        (("rostool", "param", "get", "/nope", "x", "--timeout", "1"), "unknown node '/nope'"),
+        (("rosparam", "get", "/nope", "--timeout", "1"), "no node declares a parameter 'nope'"),
+        (("rostool", "service", "call", "/ros_tutorial_srv", "x_msgs/srv/X", "{}"), "x_msgs"),
+        (("rosservice", "call", "/ros_tutorial_srv", "{a: 1"), "invalid YAML"),
+        (("rosservice", "call", "/ros_tutorial_srv", "{c: 1}"), "'c' is not a field"),
+        (("rosservice", "call", "/ros_tutorial_srv", "10"), "takes 2 value(s) (a b), got 1"),
+        (("rosservice", "call", "/ros_tutorial_srv", "1e99", "1"), "a is an integer (int64)"),
+        (
+            ("rosservice", "call", "/ros_tutorial_srv", "99999999999999999999", "1"),
+            "out of range for int64",
+        ),
+        (("rosparam", "set", "/calculation_method", "9"), "out of range"),
+        (("rosparam", "set", "/calculation_method", "two"), "Wrong parameter type"),
+        (("rostool", "param", "get", "/service_server", "nope"), "has no parameter 'nope'"),
+        (
+            (
+                "rostool",
+                "service",
+                "call",
+                "/ros_tutorial_srv",
+                "ros_tutorials_interfaces/srv/AddTwoInts",
+                "{}",
+                "--timeout",
+                "1",
+            ),
+            "has type ros_tutorials_interfaces/srv/SrvTutorial",
+        ),
+        (("rostopic", "pub", "/t", "std_msgs/String", "linear: x: 0.2"), "invalid YAML"),
+        (("rostopic", "pub", "/t", "ros_tutorials_interfaces/Num", "{num: x}"), "integer"),
+    ],
+)
+def test_errors_are_one_clear_line(fixture_node, args, message):
+    assert message in fails(*args)
+
+
+def test_a_parameter_on_several_nodes_asks_for_the_node(fixture_node, node_process):
+    other = node_process(FIXTURE, "--ros-args", "-r", "__node:=second_server")
+    other.wait_for_output(lambda lines: any("fixture ready" in line for line in lines))
+    # A new process may discover one node before the other; ask until it has seen both.
+    deadline = time.monotonic() + TIMEOUT
+    result = tool("rosparam", "get", "/calculation_method")
+    while "several nodes" not in result.stderr and time.monotonic() < deadline:
+        result = tool("rosparam", "get", "/calculation_method")
+    assert result.returncode == 1, f"never saw both nodes; last answer: {result.stdout}"
+    line = result.stderr.strip()
+    assert "\n" not in line and "/second_server" in line and "/service_server" in line
+    assert ok("rosparam", "get", "/second_server/calculation_method").strip() == "1"
+    # Nothing died from the bad requests.
+    assert fixture_node.process.poll() is None and other.process.poll() is None
+
+
+# Against the real lessons' nodes, as the book does it.
+
+
+def _ready(proc) -> None:
+    proc.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines), what="ready")
+
+
+def test_rosservice_call_against_the_service_lesson(node_process):
+    _ready(node_process("-m", "ros_tutorials_service.server"))
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
+
+
+def test_the_books_walk_through_against_the_parameter_lesson(node_process):
+    _ready(node_process("-m", "ros_tutorials_parameter.server"))
+    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
+    for method, result in ((2, 5), (3, 50), (4, 2)):
+        ok("rosparam", "set", "/calculation_method", str(method))
+        assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == (
+            f"result: {result}"
+        )
+    assert "out of range" in fails("rosparam", "set", "/calculation_method", "7")
+
+
+def test_send_goal_against_the_action_lesson(node_process):
+    node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0.1")
+    out = ok(
+        "rostool", "action", "send_goal", "/ros_tutorial_action",
+        "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    result = out.split("Result:")[1]
+    numbers = [
+        int(line.strip("- ")) for line in result.splitlines() if line.strip().startswith("-")
+    ]
+    assert numbers == [0, 1, 1, 2, 3, 5, 8]
+    assert out.count("Feedback:") >= 1
+    assert out.strip().endswith("Goal finished with status: SUCCEEDED")
