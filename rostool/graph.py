@@ -2,8 +2,9 @@
 
 Every command starts one node (its name begins with ``_`` so ``node list`` hides it, as
 ros2cli hides its own) and asks the graph. DDS discovery is asynchronous: a node that
-is already running shows up in a new process after a few milliseconds, and sometimes
-only after up to about 3 s (measured here with Fast DDS). So a command never sleeps a
+is already running shows up in a new process after a few milliseconds, or after the
+running participants' next announcement (every 0.25 s with this project's Fast DDS
+profile, every 3 s with Fast DDS's default). So a command never sleeps a
 fixed time: it polls until what it needs appears (``wait_for``), and reports "unknown
 ..." only when its timeout has passed. Listing commands cannot know what they have not
 seen yet; they wait until another node has shown up and the graph has been quiet for a
