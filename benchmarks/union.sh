@@ -1,6 +1,7 @@
 #!/bin/sh
 # The baseline of the launch benchmark: union.launch's four nodes started from a plain shell,
-# each with the same ROS arguments the launcher gives them. Ctrl-C stops them all.
+# each with the same ROS arguments the launcher gives them. Ctrl-C stops them all: with
+# SIGTERM, because a non-interactive shell starts background jobs with SIGINT ignored.
 py=${PYTHON:-python3}
 pids=""
 for ns in ns1 ns2; do
@@ -9,5 +10,5 @@ for ns in ns1 ns2; do
     pids="$pids $!"
   done
 done
-trap 'kill -INT $pids; wait' INT TERM
+trap 'kill -TERM $pids; wait' INT TERM
 wait

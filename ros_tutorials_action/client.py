@@ -33,10 +33,10 @@ from ros_tutorials_interfaces.action import Fibonacci
 
 from ros_tutorials_action.server import ACTION_NAME
 from ros_tutorials_common import init, user_args
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
 
 DEFAULT_ORDER = 20
 CANCEL_TIMEOUT = 5.0
-EXIT_INTERRUPTED = 130  # what shells report for a command ended by Ctrl-C (128 + SIGINT)
 # Waits spin in slices this long, so that a Ctrl-C is noticed at once (see on_sigint) ...
 SPIN_SLICE = 0.1
 # ... and check this often that the action server is still there (it may crash or be stopped).
@@ -101,7 +101,7 @@ class FibonacciActionClient(Node):
             if not self.spin_until(
                 executor, self.result_future.done, result_timeout, server_needed=True
             ):
-                log.warn("Action did not finish before the time out.")
+                log.warning("Action did not finish before the time out.")
                 self.cancel(executor)
                 return 1
         except Interrupted:
@@ -174,7 +174,7 @@ class FibonacciActionClient(Node):
             log.error(f"No answer to the cancel request within {CANCEL_TIMEOUT:g} s")
             return
         if not response.goals_canceling:
-            log.warn("The server did not cancel the goal (it had already finished)")
+            log.warning("The server did not cancel the goal (it had already finished)")
         if self.result_future is None:
             self.result_future = goal_handle.get_result_async()
         result = wait(self.result_future)
@@ -191,45 +191,25 @@ def parse_args(args: Sequence[str]) -> argparse.Namespace:
         "order",
         metavar="ORDER",
         nargs="?",
-        type=int32,
+        type=signed_int(32),
         default=DEFAULT_ORDER,
         help=f"how many terms to append to the seeds 0, 1 (default {DEFAULT_ORDER})",
     )
     parser.add_argument(
         "--timeout",
-        type=seconds,
+        type=positive_seconds,
         default=10.0,
         metavar="SECONDS",
         help="how long to wait for the action server (default 10)",
     )
     parser.add_argument(
         "--result-timeout",
-        type=seconds,
+        type=positive_seconds,
         default=30.0,
         metavar="SECONDS",
         help="how long to wait for the result before canceling the goal (default 30, the book's)",
     )
     return parser.parse_args(args)
-
-
-def int32(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
-    if not -(2**31) <= value < 2**31:
-        raise argparse.ArgumentTypeError(f"{value} does not fit in int32")
-    return value
-
-
-def seconds(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
-    if not 0 < value < float("inf"):
-        raise argparse.ArgumentTypeError(f"must be more than 0 seconds: {text!r}")
-    return value
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -113,7 +113,7 @@ class FibonacciActionServer(Node):
 
     def on_goal(self, goal: Fibonacci.Goal) -> GoalResponse:
         if not 0 <= goal.order <= MAX_ORDER:
-            self.get_logger().warn(
+            self.get_logger().warning(
                 f"{ACTION_NAME}: Rejected goal of order {goal.order}: the order must be 0 to "
                 f"{MAX_ORDER}, so that the sequence fits in int32"
             )

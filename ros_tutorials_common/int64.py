@@ -1,4 +1,4 @@
-"""64-bit integers, as in ``int64 a``: parse them from the command line, keep results in range.
+"""64-bit integers, as in ``int64 a``: keep the servers' results in range.
 
 Python integers never overflow, but a ROS ``int64`` field refuses anything outside
 -2**63 .. 2**63-1 (rclpy raises when the value is assigned). A server that computed
@@ -11,17 +11,6 @@ from rclpy.impl.rcutils_logger import RcutilsLogger
 
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
-
-
-def parse_int64(text: str) -> int:
-    """The int64 written in text; ValueError with a readable message if it is not one."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise ValueError(f"{text!r} is not an integer") from None
-    if not INT64_MIN <= value <= INT64_MAX:
-        raise ValueError(f"{text} does not fit in a 64-bit integer ({INT64_MIN} .. {INT64_MAX})")
-    return value
 
 
 def int64_or_zero(value: int, expression: str, logger: RcutilsLogger) -> int:

@@ -24,9 +24,15 @@ from ros_tutorials_common.dds import apply_dds_defaults
 
 
 def user_args(argv: Sequence[str] | None = None) -> list[str]:
-    """The command-line arguments meant for the program, without the ROS ones."""
+    """The command-line arguments meant for the program, without the ROS ones.
+
+    Malformed ROS arguments end the program here already, with one clear line.
+    """
     argv = sys.argv if argv is None else argv
-    return remove_ros_args(args=list(argv))[1:]
+    try:
+        return remove_ros_args(args=list(argv))[1:]
+    except _rclpy.RCLError as error:
+        raise _invalid_ros_arguments(error) from None
 
 
 def init(
@@ -47,8 +53,12 @@ def init(
             signal_handler_options=signal_handler_options,
         )
     except _rclpy.RCLError as error:
-        reason = str(error).split(", at ")[0]
-        raise SystemExit(f"error: invalid ROS arguments: {reason}") from None
+        raise _invalid_ros_arguments(error) from None
+
+
+def _invalid_ros_arguments(error: Exception) -> SystemExit:
+    reason = str(error).split(", at ")[0]  # rcl appends its source file and line
+    return SystemExit(f"error: invalid ROS arguments: {reason}")
 
 
 def run_node(

@@ -19,7 +19,6 @@ parameter: it belongs to this one run of the program, and ``-h`` shows it.
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -31,7 +30,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.impl.rcutils_logger import RcutilsLogger
 
-from ros_tutorials_common.int64 import parse_int64
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
 from ros_tutorials_common.node_main import init, user_args
 
 DEFAULT_TIMEOUT = 5.0
@@ -40,7 +39,6 @@ QUIET_WAIT = 1.0
 POLL_PERIOD = 0.05
 
 EXIT_CALL_FAILED = 1
-EXIT_INTERRUPTED = 130
 
 
 class OneShotClient(Protocol):
@@ -64,12 +62,14 @@ def parse_operands(
         description="Call the service once with two 64-bit integers and log the answer.",
         epilog="ROS arguments go after --ros-args, e.g. --ros-args -r __ns:=/robot1",
     )
-    parser.add_argument("a", metavar=operands[0], type=_int64, help="first operand (int64)")
-    parser.add_argument("b", metavar=operands[1], type=_int64, help="second operand (int64)")
+    parser.add_argument("a", metavar=operands[0], type=signed_int(64), help="first operand (int64)")
+    parser.add_argument(
+        "b", metavar=operands[1], type=signed_int(64), help="second operand (int64)"
+    )
     parser.add_argument(
         "--timeout",
         metavar="SECONDS",
-        type=_seconds,
+        type=positive_seconds,
         default=DEFAULT_TIMEOUT,
         help=f"how long to wait for the server, then for its answer (default {DEFAULT_TIMEOUT:g})",
     )
@@ -148,20 +148,3 @@ def _raise_if_shut_down(client: Client) -> None:
     # Ctrl-C and SIGTERM shut the rclpy context down; end the wait as interrupted.
     if not client.context.ok():
         raise ExternalShutdownException()
-
-
-def _int64(text: str) -> int:
-    try:
-        return parse_int64(text)
-    except ValueError as error:
-        raise argparse.ArgumentTypeError(str(error)) from None
-
-
-def _seconds(text: str) -> float:
-    try:
-        seconds = float(text)
-    except ValueError:
-        seconds = math.nan
-    if not (math.isfinite(seconds) and seconds > 0):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a positive number of seconds")
-    return seconds

@@ -111,6 +111,7 @@ def test_add_two_ints_client_calls_the_server(node_process):
         (["1", "two"], "'two' is not an integer"),
         (["9223372036854775808", "0"], "does not fit in a 64-bit integer"),
         (["1", "2", "--timeout", "-1"], "'-1' is not a positive number of seconds"),
+        (["1", "2", "--timeout", "nan"], "'nan' is not a positive number of seconds"),
     ],
 )
 def test_client_usage_errors(node_process, module, args, complaint):
@@ -118,6 +119,16 @@ def test_client_usage_errors(node_process, module, args, complaint):
     assert client.wait() == 2
     assert "usage: " in client.output
     assert complaint in client.output
+    assert "Traceback" not in client.output
+
+
+@pytest.mark.parametrize(
+    "module", [*(module for module, _ in CLIENTS), "ros_tutorials_action.client"]
+)
+def test_client_with_malformed_ros_arguments_fails_clearly(node_process, module):
+    client = node_process("-m", module, "1", "2", "--ros-args", "-r", "bad")
+    assert client.wait() == 1
+    assert "error: invalid ROS arguments" in client.output
     assert "Traceback" not in client.output
 
 
