@@ -3,8 +3,10 @@ shutdown after Ctrl-C, escalation for a node that ignores SIGINT, the launcher's
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -40,6 +42,27 @@ def alive(pid: int) -> bool:
         return False
 
 
+def _ctrl_c_until_all_gone(proc: subprocess.Popen) -> float:
+    """Ctrl-C to the launcher alone (as a terminal would); seconds until every process is gone."""
+    family = descendants(proc.pid) | {proc.pid}
+    stopping = time.monotonic()
+    os.kill(proc.pid, signal.SIGINT)
+    proc.communicate(timeout=60)
+    while any(alive(pid) for pid in family):
+        time.sleep(0.005)
+    return time.monotonic() - stopping
+
+
+def _kill_leftovers(proc: subprocess.Popen) -> None:
+    """A failed run must not leave nodes talking in the benchmark's ROS domain."""
+    for pid in descendants(proc.pid) | {proc.pid}:
+        with contextlib.suppress(ProcessLookupError):
+            os.kill(pid, signal.SIGKILL)
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+
+
 def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
     """Start, wait until both subscribers heard their group, Ctrl-C, wait until all are gone.
 
@@ -53,18 +76,14 @@ def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
 
     began = time.monotonic()
     proc = start(args, env={"PYTHON": sys.executable})
-    if not wait_for_lines(proc, both_ready, timeout=120):
-        os.killpg(proc.pid, signal.SIGKILL)
-        raise RuntimeError(f"{args} never got both groups talking")
-    ready = time.monotonic() - began
-    rss = peak_rss_mib(proc.pid)
-    family = descendants(proc.pid) | {proc.pid}
-    stopping = time.monotonic()
-    os.kill(proc.pid, signal.SIGINT)  # Ctrl-C to the launcher alone, as a terminal would not
-    proc.communicate(timeout=60)
-    while any(alive(pid) for pid in family):
-        time.sleep(0.005)
-    return ready, time.monotonic() - stopping, rss
+    try:
+        if not wait_for_lines(proc, both_ready, timeout=120):
+            raise RuntimeError(f"{args} never got both groups talking")
+        ready = time.monotonic() - began
+        rss = peak_rss_mib(proc.pid)
+        return ready, _ctrl_c_until_all_gone(proc), rss
+    finally:
+        _kill_leftovers(proc)
 
 
 def launch_and_shutdown(rounds: int = 10) -> list[Row]:
@@ -107,20 +126,16 @@ def escalation(rounds: int = 3) -> list[Row]:
             python("-m", "launcher", str(HERE / "stubborn.launch.xml")),
             env={"PYTHON": sys.executable},
         )
-        if not wait_for_lines(proc, lambda line: "ignoring SIGINT" in line, timeout=60):
-            os.killpg(proc.pid, signal.SIGKILL)
-            raise RuntimeError("the stubborn process never started")
-        family = descendants(proc.pid) | {proc.pid}
-        stopping = time.monotonic()
-        os.kill(proc.pid, signal.SIGINT)
-        proc.communicate(timeout=60)
-        while any(alive(pid) for pid in family):
-            time.sleep(0.005)
-        samples.append(time.monotonic() - stopping)
+        try:
+            if not wait_for_lines(proc, lambda line: "ignoring SIGINT" in line, timeout=60):
+                raise RuntimeError("the stubborn process never started")
+            samples.append(_ctrl_c_until_all_gone(proc))
+        finally:
+            _kill_leftovers(proc)
     worst = max(samples)
     return [
         Row(
-            "Ctrl-C to all gone, one child ignoring SIGINT (sigterm_timeout 1 s), worst of 3",
+            f"Ctrl-C to all gone, a child ignoring SIGINT (sigterm_timeout 1 s), worst of {rounds}",
             f"{worst:.2f} s",
             "",
             None,

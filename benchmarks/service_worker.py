@@ -19,7 +19,7 @@ import rclpy
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common import init, run_node, user_args
+from ros_tutorials_common.node_main import init, run_node, user_args
 from ros_tutorials_service.client import ServiceClient
 
 SERVICE = "ros_tutorial_srv"

@@ -10,6 +10,7 @@ from pathlib import Path
 from launcher import LaunchError, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
+from ros_tutorials_common.cli import positive_seconds
 
 EXAMPLES = """\
 examples:
@@ -55,14 +56,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument(
         "--sigterm-timeout",
-        type=float,
+        type=positive_seconds,
         default=DEFAULT_SIGTERM_TIMEOUT,
         metavar="S",
         help="seconds from SIGINT to SIGTERM when stopping (default %(default)s)",
     )
     parser.add_argument(
         "--sigkill-timeout",
-        type=float,
+        type=positive_seconds,
         default=DEFAULT_SIGKILL_TIMEOUT,
         metavar="S",
         help="seconds from SIGTERM to SIGKILL when stopping (default %(default)s)",

@@ -15,6 +15,7 @@ launch leaks included arguments). An included file sees only the arguments passe
 
 from __future__ import annotations
 
+import math
 import os
 import shlex
 from dataclasses import dataclass, field, replace
@@ -352,7 +353,9 @@ class Resolver:
             value = kind(text)
         except ValueError:
             value = None
-        if value is None or (value < 0 and not (kind is int and value == -1)):
+        # nan and inf would make the supervisor's deadlines unreachable: refuse them too.
+        bad = value is None or not math.isfinite(value) or value < 0
+        if bad and not (kind is int and value == -1):
             raise element.error(f"{name!r} must be a non-negative number, not {text!r}")
         return value
 

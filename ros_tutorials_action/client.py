@@ -32,8 +32,8 @@ from rclpy.task import Future
 from ros_tutorials_interfaces.action import Fibonacci
 
 from ros_tutorials_action.server import ACTION_NAME
-from ros_tutorials_common import init, user_args
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
+from ros_tutorials_common.node_main import init, user_args
 
 DEFAULT_ORDER = 20
 CANCEL_TIMEOUT = 5.0

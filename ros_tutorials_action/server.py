@@ -34,7 +34,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from ros_tutorials_interfaces.action import Fibonacci
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 ACTION_NAME = "ros_tutorial_action"
 INT32_MAX = 2**31 - 1

@@ -19,8 +19,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common import run_node
 from ros_tutorials_common.int64 import int64_or_zero
+from ros_tutorials_common.node_main import run_node
 
 PLUS, MINUS, MULTIPLICATION, DIVISION = 1, 2, 3, 4
 

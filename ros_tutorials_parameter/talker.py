@@ -11,7 +11,7 @@ from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 QUEUE_SIZE = 10
 RATE_HZ = 10.0

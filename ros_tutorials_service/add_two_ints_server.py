@@ -8,8 +8,8 @@ Serves ros_tutorials_interfaces/AddTwoInts on ``add_two_ints``: ``sum = a + b``.
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import AddTwoInts
 
-from ros_tutorials_common import run_node
 from ros_tutorials_common.int64 import int64_or_zero
+from ros_tutorials_common.node_main import run_node
 
 
 class AddTwoIntsServer(Node):

@@ -9,8 +9,8 @@ with ``result = a + b`` and logs the request and the response.
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common import run_node
 from ros_tutorials_common.int64 import int64_or_zero
+from ros_tutorials_common.node_main import run_node
 
 
 class ServiceServer(Node):

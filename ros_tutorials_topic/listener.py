@@ -8,7 +8,7 @@ Subscribes to ``chatter`` (std_msgs/String) and logs "I heard: [...]" for each m
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 QUEUE_SIZE = 1000
 

@@ -9,7 +9,7 @@ the current time as ``stamp`` and a counter, from 0, as ``data``.
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 QUEUE_SIZE = 100
 RATE_HZ = 10.0

@@ -9,7 +9,7 @@ does (its "recieve" typo included, so the output matches the printed listing).
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 QUEUE_SIZE = 100
 

@@ -8,7 +8,7 @@ Publishes std_msgs/String "hello world N" on ``chatter`` ten times a second.
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 QUEUE_SIZE = 10
 RATE_HZ = 10.0

@@ -24,7 +24,7 @@ import rclpy
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
-from ros_tutorials_common import init
+from ros_tutorials_common.node_main import init
 from rostool.errors import ToolError
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear

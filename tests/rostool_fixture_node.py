@@ -16,7 +16,7 @@ from rclpy.node import Node
 from ros_tutorials_interfaces.action import Fibonacci
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common import run_node
+from ros_tutorials_common.node_main import run_node
 
 STEP_PERIOD = 0.1
 
