@@ -179,7 +179,9 @@ class Supervisor:
             self.hurry = True
 
     def _die_with_launcher(self) -> None:
-        # Runs in the child between fork and exec.
+        # Runs in the child between fork and exec. Python warns that preexec_fn may deadlock
+        # when other threads hold locks at fork time (the output readers run meanwhile); this
+        # one only makes a prctl call resolved before the fork, and takes no Python-level lock.
         _libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
         if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
             os.kill(os.getpid(), signal.SIGKILL)
