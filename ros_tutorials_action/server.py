@@ -161,9 +161,10 @@ class FibonacciActionServer(Node):
         """Put the goal in its final state and forget it, holding the lock all along so that
         a cancel or a new goal cannot change its fate half way."""
         goal_handle, log = run.goal_handle, self.get_logger()
+        if run.cancel_requested:
+            _wait_until_canceling(goal_handle)  # not holding the lock: other goals go on
         with self._runs_changed:
             if run.cancel_requested or goal_handle.is_cancel_requested:
-                _wait_until_canceling(goal_handle)
                 goal_handle.canceled()
                 log.info(f"{ACTION_NAME}: Canceled")
             elif run.preempted:
