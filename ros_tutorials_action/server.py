@@ -165,6 +165,7 @@ class FibonacciActionServer(Node):
             _wait_until_canceling(goal_handle)  # not holding the lock: other goals go on
         with self._runs_changed:
             if run.cancel_requested or goal_handle.is_cancel_requested:
+                _wait_until_canceling(goal_handle)  # at once, unless a cancel just came in
                 goal_handle.canceled()
                 log.info(f"{ACTION_NAME}: Canceled")
             elif run.preempted:
