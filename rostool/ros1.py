@@ -117,22 +117,22 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
         data.update(param.dump_data(graph, node_name))
     text = yaml.safe_dump(data, default_flow_style=False)
     if path:
-        Path(path).write_text(text)
+        try:
+            Path(path).write_text(text)
+        except OSError as error:
+            raise ToolError(f"cannot write {path}: {error.strerror}") from None
     else:
         print(text.rstrip())
 
 
 def rosparam_load(graph: Graph, path: str) -> None:
-    try:
-        data = yaml.safe_load(Path(path).read_text())
-    except (OSError, yaml.YAMLError) as error:
-        raise ToolError(f"cannot read {path}: {str(error).splitlines()[0]}") from None
-    if not isinstance(data, dict) or any(not str(key).startswith("/") for key in data):
+    data = param.read_params_file(path)  # read and checked once, before touching any node
+    if any(not str(key).startswith("/") for key in data):
         raise ToolError(f"{path}: expected '/node_name: ros__parameters: ...' entries")
+    if "/**" in data:
+        raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
     for node_name in data:
-        if node_name == "/**":
-            raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
-        param.load_file(graph, node_name, path)
+        param.load_values(graph, node_name, param.params_for_node(data, path, node_name))
 
 
 # The tools. Each is a parser whose commands call the rostool functions.

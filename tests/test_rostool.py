@@ -357,3 +357,27 @@ def test_send_goal_against_the_action_lesson(node_process):
     assert numbers == [0, 1, 1, 2, 3, 5, 8]
     assert out.count("Feedback:") >= 1
     assert out.strip().endswith("Goal finished with status: SUCCEEDED")
+
+
+# Files that cannot be read or written: one line, no traceback.
+
+
+def test_params_files_that_cannot_be_used_are_one_clear_line(tmp_path):
+    missing = str(tmp_path / "missing.yaml")
+    binary = tmp_path / "binary.yaml"
+    binary.write_bytes(b"\xff\xfe\x00garbage")
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("/service_server: {ros__parameters: [\n")
+    cases = [
+        (("rosparam", "dump", str(tmp_path / "no" / "dir" / "x.yaml")), "cannot write"),
+        (("rosparam", "load", missing), "cannot read"),
+        (("rosparam", "load", str(tmp_path)), "cannot read"),  # a directory
+        (("rosparam", "load", str(binary)), "not a text file"),
+        (("rosparam", "load", str(broken)), "is not valid YAML"),
+        (("rostool", "param", "load", "/service_server", missing), "cannot read"),
+        (("rostool", "param", "load", "/service_server", str(tmp_path)), "cannot read"),
+        (("rostool", "param", "load", "/service_server", str(binary)), "not a text file"),
+        (("rostool", "param", "load", "/service_server", str(broken)), "is not valid YAML"),
+    ]
+    for args, message in cases:
+        assert message in fails(*args, "--timeout", "1"), args
