@@ -16,6 +16,7 @@ from collections.abc import Callable, Sequence
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
+from ros_tutorials_common.cli import positive_seconds
 from rostool import action, interface, node, param, service, topic
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
@@ -26,13 +27,13 @@ def common_options() -> argparse.ArgumentParser:
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--timeout",
-        type=float,
+        type=positive_seconds,
         default=DEFAULT_TIMEOUT,
         help=f"seconds to wait for what the command names to appear (default {DEFAULT_TIMEOUT:g})",
     )
     common.add_argument(
         "--spin-time",
-        type=float,
+        type=positive_seconds,
         help="seconds a list waits for discovery (default: until the graph is quiet, "
         f"at most {MAX_SETTLE_TIME:g})",
     )

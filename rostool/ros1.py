@@ -24,6 +24,7 @@ from typing import Any
 
 import yaml
 
+from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool import interface, node, param, service, topic
 from rostool.cli import common_options, execute
 from rostool.errors import ToolError
@@ -172,13 +173,14 @@ def rostopic_parser() -> argparse.ArgumentParser:
     sub.choices["list"].add_argument("-v", "--verbose", action="store_true", help="with types")
     p = _add(sub, common, "echo", lambda g, a: topic.echo(g, a.topic, count=a.n), "print messages")
     p.add_argument("topic")
-    p.add_argument("-n", type=int, help="print this many messages, then exit")
+    p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
     p = _add(sub, common, "pub", lambda g, a: _pub(g, a), "publish a message")
     p.add_argument("topic")
     p.add_argument("type")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
-    p.add_argument("-r", "--rate", type=float, help="publish at this rate (Hz) until Ctrl-C")
-    p.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
+    group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
+    group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
+    group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
     for name, bandwidth in (("hz", False), ("bw", True)):
         p = _add(sub, common, name, lambda g, a, b=bandwidth: topic.hz(g, a.topic, 10000, b), "")
         p.add_argument("topic")
@@ -194,7 +196,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
 def _pub(graph: Graph, args: argparse.Namespace) -> None:
     values = values_from_args(args.values)
     if args.rate is not None:
-        topic.pub(graph, args.topic, args.type, values, rate=topic.positive_rate(args.rate))
+        topic.pub(graph, args.topic, args.type, values, rate=args.rate)
     elif args.once:
         topic.pub(graph, args.topic, args.type, values, times=1)
     else:  # ROS 1's default: publish once, latched, until Ctrl-C

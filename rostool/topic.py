@@ -15,6 +15,7 @@ import yaml
 from rclpy.duration import Duration
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool.errors import ToolError
 from rostool.graph import Graph, absolute_name
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
@@ -262,26 +263,19 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("topic")
     p.add_argument("type", help="message type, e.g. std_msgs/msg/String")
     p.add_argument("values", nargs="?", default="{}", help="the fields as YAML, e.g. '{data: hi}'")
-    p.add_argument("-r", "--rate", type=float, default=DEFAULT_PUB_RATE, help="Hz (default 1)")
-    group = p.add_mutually_exclusive_group()
+    group = p.add_mutually_exclusive_group()  # --once is "one message now": no rate, no count
     group.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
-    group.add_argument("-t", "--times", type=int, help="publish this many messages, then exit")
-    p.set_defaults(
-        run=lambda graph, a: pub(
-            graph,
-            a.topic,
-            a.type,
-            parse_yaml(a.values),
-            positive_rate(a.rate),
-            1 if a.once else a.times,
-        )
-    )
+    group.add_argument("-r", "--rate", type=positive_rate, help="Hz (default 1)")
+    p.add_argument("-t", "--times", type=positive_int, help="publish this many messages, then exit")
+    p.set_defaults(run=lambda graph, a, parser=p: _pub_command(graph, a, parser))
 
     for name, bandwidth in (("hz", False), ("bw", True)):
         what = "bandwidth" if bandwidth else "publishing rate"
         p = sub.add_parser(name, parents=[common], help=f"print the {what} of a topic")
         p.add_argument("topic")
-        p.add_argument("-w", "--window", type=int, default=10000, help="messages to average")
+        p.add_argument(
+            "-w", "--window", type=positive_int, default=10000, help="messages to average"
+        )
         p.set_defaults(run=lambda graph, a, bw=bandwidth: hz(graph, a.topic, a.window, bw))
 
     p = sub.add_parser("info", parents=[common], help="type, publishers and subscriptions")
@@ -298,7 +292,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.set_defaults(run=lambda graph, a: find(graph, a.type))
 
 
-def positive_rate(value: float) -> float:
-    if value <= 0:
-        raise ToolError(f"the rate must be positive, got {value:g}")
-    return value
+def _pub_command(graph: Graph, args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
+    if args.once and args.times is not None:
+        parser.error("argument -t/--times: not allowed with argument -1/--once")
+    times = 1 if args.once else args.times
+    rate = DEFAULT_PUB_RATE if args.rate is None else args.rate
+    pub(graph, args.topic, args.type, parse_yaml(args.values), rate, times)

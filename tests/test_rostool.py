@@ -381,3 +381,32 @@ def test_params_files_that_cannot_be_used_are_one_clear_line(tmp_path):
     ]
     for args, message in cases:
         assert message in fails(*args, "--timeout", "1"), args
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rostool", "topic", "echo", "/t", "--timeout", "nan"),
+        ("rostool", "topic", "echo", "/t", "--timeout", "-1"),
+        ("rostool", "topic", "list", "--spin-time", "nan"),
+        ("rostool", "topic", "list", "--spin-time", "-3"),
+        ("rosnode", "list", "--spin-time", "inf"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "nan"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "inf"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "-1"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-t", "0"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "--once", "-r", "2"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "--once", "-t", "2"),
+        ("rostool", "topic", "hz", "/t", "-w", "0"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-r", "nan"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-r", "0"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-1", "-r", "2"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "--once", "--rate", "2"),
+        ("rostopic", "echo", "/t", "-n", "0"),
+        ("rosservice", "call", "/s", "1", "2", "--timeout", "nan"),
+    ],
+)
+def test_bad_numbers_and_conflicting_options_are_usage_errors(args):
+    result = tool(*args)  # returns at once: nothing waits on the graph, nothing publishes
+    assert result.returncode == 2, f"{' '.join(args)}: {result.returncode}\n{result.stdout}"
+    assert "usage:" in result.stderr and "Traceback" not in result.stderr
