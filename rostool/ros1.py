@@ -35,19 +35,23 @@ from rostool.typenames import load_type
 # ROS 1 commands that have no ROS 2 counterpart, and what to do instead.
 NO_ROS2_MEANING = {
     ("rosnode", "kill"): "ROS 2 has no master to kill nodes through; stop the node's process "
-    "(Ctrl-C, or the launcher that started it)",
+    "(Ctrl-C in its terminal or the launcher's, or `kill PID`)",
     ("rosnode", "ping"): "ROS 2 nodes have no XML-RPC address to ping; `rosnode info NODE` "
     "shows whether the node is in the graph",
-    ("rosnode", "machine"): "ROS 2 does not record which machine a node runs on",
+    ("rosnode", "machine"): "ROS 2 does not record which machine a node runs on; "
+    "`rosnode list` (or `rostool node list`) shows every node in the graph",
     ("rosnode", "cleanup"): "ROS 2 has no master registry to clean; DDS drops vanished nodes "
-    "by itself",
-    ("rosservice", "uri"): "ROS 2 services have no ROSRPC URI; they are DDS topics",
+    "by itself, and `rosnode list` shows the ones still there",
+    ("rosservice", "uri"): "ROS 2 services have no ROSRPC URI (they travel over DDS); "
+    "`rosservice info SERVICE` shows the node that serves it and its type",
     ("rosparam", "delete"): "a ROS 2 parameter belongs to its node and stays declared; set "
     "another value with `rosparam set`",
     ("rosmsg", "md5"): "ROS 2 types have no MD5 sum; `rosmsg show` gives the definition",
     ("rossrv", "md5"): "ROS 2 types have no MD5 sum; `rossrv show` gives the definition",
-    ("rosmsg", "users"): "ROS 2 keeps no index of the code that uses a type",
-    ("rossrv", "users"): "ROS 2 keeps no index of the code that uses a type",
+    ("rosmsg", "users"): "ROS 2 keeps no index of the code that uses a type; "
+    "`rostopic find TYPE` (or `rostool topic find TYPE`) lists the topics that carry it",
+    ("rossrv", "users"): "ROS 2 keeps no index of the code that uses a type; "
+    "`rosservice find TYPE` (or `rostool service find TYPE`) lists the services that use it",
 }
 
 
@@ -271,8 +275,15 @@ def rosnode_parser() -> argparse.ArgumentParser:
 def _interface_parser(tool: str, kind: str) -> argparse.ArgumentParser:
     what = interface.KIND_NAMES[kind]
     parser, sub, common = _parser(tool, f"ROS 1's {tool}, on ROS 2 (rostool interface)")
-    p = _add(sub, common, "show", lambda g, a: _show(a.type, kind), f"a {what}", offline=True)
-    p.add_argument("type", nargs="?", default="-", help="pkg/Name, Name, or read from stdin")
+    show = _add(
+        sub,
+        common,
+        "show",
+        lambda g, a: _show(_type_or_stdin(a.type, show), kind),
+        f"a {what}",
+        offline=True,
+    )
+    show.add_argument("type", nargs="?", help="pkg/Name, Name, or - to read it from stdin")
     _add(
         sub,
         common,
@@ -300,6 +311,16 @@ def _interface_parser(tool: str, kind: str) -> argparse.ArgumentParser:
     )
     _no_meaning(tool, sub)
     return parser
+
+
+def _type_or_stdin(type_name: str | None, parser: argparse.ArgumentParser) -> str:
+    """No type given: read it from a pipe (`rosservice type /srv | rossrv show`), as ROS 1
+    did; from a terminal that would only sit and wait, so say what is missing instead."""
+    if type_name is not None:
+        return type_name
+    if sys.stdin.isatty():
+        parser.error("the following arguments are required: type (or - to read it from stdin)")
+    return "-"
 
 
 def _show(type_name: str, kind: str) -> None:

@@ -7,6 +7,9 @@ Every command is the installed console script, as a learner types it.
 
 from __future__ import annotations
 
+import os
+import pty
+import re
 import subprocess
 import sys
 import time
@@ -14,6 +17,8 @@ from pathlib import Path
 
 import pytest
 from helpers import TIMEOUT
+
+from rostool.ros1 import NO_ROS2_MEANING
 
 BIN = Path(sys.executable).parent
 FIXTURE = str(Path(__file__).with_name("rostool_fixture_node.py"))
@@ -410,3 +415,42 @@ def test_bad_numbers_and_conflicting_options_are_usage_errors(args):
     result = tool(*args)  # returns at once: nothing waits on the graph, nothing publishes
     assert result.returncode == 2, f"{' '.join(args)}: {result.returncode}\n{result.stdout}"
     assert "usage:" in result.stderr and "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("owner,command", sorted(NO_ROS2_MEANING))
+def test_commands_without_ros2_meaning_name_the_ros2_way(owner, command):
+    line = fails(owner, command, "x")
+    assert f"`{owner} {command}` has no ROS 2 meaning" in line
+    # ... and, after it, a command to use instead.
+    assert re.search(r"`[a-z]+ [^`]+`", line.split("meaning")[1]), line
+
+
+def _in_a_terminal(*args: str) -> subprocess.CompletedProcess:
+    """Run a console script with a terminal as its standard input, as a learner types it."""
+    controller, terminal = pty.openpty()
+    try:
+        return subprocess.run(
+            [str(BIN / args[0]), *args[1:]],
+            stdin=terminal,
+            capture_output=True,
+            text=True,
+            timeout=TIMEOUT,
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} waited for the terminal instead of failing")
+    finally:
+        os.close(controller)
+        os.close(terminal)
+
+
+@pytest.mark.parametrize("tool_name", ["rosmsg", "rossrv"])
+def test_show_without_a_type_reads_only_a_pipe(tool_name):
+    result = _in_a_terminal(tool_name, "show")
+    assert result.returncode == 2 and "usage:" in result.stderr, result.stderr
+    assert "type (or - to read it from stdin)" in result.stderr
+    # From a pipe it reads the name, as `rosservice type /srv | rossrv show` needs.
+    type_name = "std_msgs/String" if tool_name == "rosmsg" else "std_srvs/Empty"
+    piped = subprocess.run(
+        [str(BIN / tool_name), "show"], input=type_name, capture_output=True, text=True
+    )
+    assert piped.returncode == 0, piped.stderr
