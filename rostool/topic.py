@@ -13,11 +13,12 @@ from typing import Any
 
 import yaml
 from rclpy.duration import Duration
+from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name
+from rostool.graph import Graph, absolute_name, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
 from rostool.typenames import full_type_name, load_type
 
@@ -108,7 +109,13 @@ def echo(
     field: str | None = None,
 ) -> None:
     """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
-    topic = absolute_name(topic)
+    with until_stopped():
+        _echo(graph, absolute_name(topic), type_name, count, field)
+
+
+def _echo(
+    graph: Graph, topic: str, type_name: str | None, count: int | None, field: str | None
+) -> None:
     msg_type = _message_type(graph, topic, type_name)
     received: deque = deque()
     # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
@@ -166,15 +173,31 @@ def pub(
             print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     if rate is None:
         print("publishing and latching message. Press ctrl-C to terminate", flush=True)
-        served = 0
-        while True:
-            # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
-            # subscription would miss one sent before it matched, so send it again on each join.
-            subscribers = publisher.get_subscription_count()
-            if subscribers > served:
-                publisher.publish(msg)
-            served = subscribers
-            graph.spin_once(0.1)
+        with until_stopped():
+            _latch(graph, publisher, msg)
+        return
+    if times is None:
+        with until_stopped():
+            _publish(graph, publisher, msg, rate, times)
+        return
+    _publish(graph, publisher, msg, rate, times)  # Ctrl-C before the last one: interrupted
+    # Reliable delivery of the last message before the process goes away.
+    publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
+
+
+def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
+    served = 0
+    while True:
+        # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
+        # subscription would miss one sent before it matched, so send it again on each join.
+        subscribers = publisher.get_subscription_count()
+        if subscribers > served:
+            publisher.publish(msg)
+        served = subscribers
+        graph.spin_once(0.1)
+
+
+def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: int | None) -> None:
     print("publisher: beginning loop", flush=True)
     count = 0
     next_time = time.monotonic()
@@ -187,8 +210,6 @@ def pub(
         publisher.publish(msg)
         print(f"publishing #{count}: {msg}", flush=True)
         next_time += 1.0 / rate
-    # Reliable delivery of the last message before the process goes away.
-    publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
 
 
 class _RateMeter:
@@ -209,7 +230,11 @@ class _RateMeter:
 
 def hz(graph: Graph, topic: str, window: int = 10000, bandwidth: bool = False) -> None:
     """Print the publishing rate (or bandwidth) of a topic once a second until Ctrl-C."""
-    topic = absolute_name(topic)
+    with until_stopped():
+        _hz(graph, absolute_name(topic), window, bandwidth)
+
+
+def _hz(graph: Graph, topic: str, window: int, bandwidth: bool) -> None:
     msg_type = _message_type(graph, topic, None)
     meter = _RateMeter(window)
     # raw=True: count serialized messages without the cost of deserializing them.

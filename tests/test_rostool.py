@@ -16,7 +16,8 @@ import time
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT
+from helpers import TIMEOUT, spin_until
+from rclpy.node import Node
 
 from rostool.ros1 import NO_ROS2_MEANING
 
@@ -28,6 +29,7 @@ PROJECT_TYPES = {
     "action": ["Fibonacci"],
 }
 SRV = "ros_tutorials_interfaces/srv/SrvTutorial"
+FIBONACCI = "ros_tutorials_interfaces/action/Fibonacci"
 
 
 def tool(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
@@ -176,6 +178,9 @@ def test_topic_echo_prints_messages_as_yaml(publisher):
 
 
 def test_long_running_verbs_stop_with_exit_0_on_ctrl_c(publisher, node_process):
+    latched = node_process(str(BIN / "rostopic"), "pub", "/other", "std_msgs/String", "hi")
+    latched.wait_for_output(lambda lines: any("latching" in line for line in lines))
+    assert latched.interrupt() == 0
     echo = node_process("-m", "rostool", "topic", "echo", "/ros_tutorial_msg")
     hz = node_process("-m", "rostool", "topic", "hz", "/ros_tutorial_msg")
     pub = node_process(
@@ -454,3 +459,65 @@ def test_show_without_a_type_reads_only_a_pipe(tool_name):
         [str(BIN / tool_name), "show"], input=type_name, capture_output=True, text=True
     )
     assert piped.returncode == 0, piped.stderr
+
+
+def _wait_until_in_graph(executor, proc) -> None:
+    """Wait until a tool process's hidden node is in the graph: it is past start-up and
+    waiting, with its Ctrl-C handling in place."""
+    probe = Node("rostool_test_probe", context=executor.context)
+    executor.add_node(probe)
+    name = f"_rostool_{proc.process.pid}"
+    spin_until(
+        executor,
+        lambda: any(n == name for n, _ in probe.get_node_names_and_namespaces()),
+        what=f"{name} in the graph",
+    )
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rostool", "service", "call", "/nope", SRV, "{a: 1, b: 2}"),
+        ("rosservice", "call", "/nope", "1", "2"),
+        ("rosparam", "get", "/nope"),
+        ("rostool", "param", "set", "/nope", "x", "1"),
+        ("rostool", "topic", "list", "--spin-time", "600"),
+        ("rostool", "action", "send_goal", "/nope", FIBONACCI, "{order: 1}"),
+    ],
+)
+def test_ctrl_c_interrupts_one_shot_verbs_with_exit_130(executor, node_process, args):
+    proc = node_process(str(BIN / args[0]), *args[1:], "--timeout", "600")
+    _wait_until_in_graph(executor, proc)
+    assert proc.interrupt() == 130
+    assert "Traceback" not in proc.output
+
+
+def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
+    server = node_process(
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
+    )
+    goal = node_process(
+        str(BIN / "rostool"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,
+        "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    assert goal.interrupt() == 130
+    assert "Canceling goal" in goal.output
+    assert "Goal finished with status: CANCELED" in goal.output
+    assert "Traceback" not in goal.output
+    server.wait_for_output(lambda lines: any("ros_tutorial_action: Canceled" in x for x in lines))
+
+
+def test_send_goal_notices_a_server_that_goes_away(node_process):
+    server = node_process(
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
+    )
+    goal = node_process(
+        str(BIN / "rostool"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,
+        "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    assert server.interrupt() == 0
+    assert goal.wait() == 1
+    assert "went away before the goal finished" in goal.output
+    assert "Traceback" not in goal.output
