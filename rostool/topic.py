@@ -47,9 +47,9 @@ def info(graph: Graph, topic: str, verbose: bool = False) -> None:
     topic = absolute_name(topic)
     type_name = graph.wait_for_topic_type(topic)
     if verbose:
-        # Endpoints are discovered before the names of their nodes; wait a little for those.
-        with contextlib.suppress(ToolError):  # after that, print what is known
-            graph.wait_for(lambda: _node_names_known(graph, topic), "", timeout=1.0)
+        # Endpoints are discovered before the names of their nodes: wait for those too.
+        with contextlib.suppress(ToolError):  # after --timeout, print what is known
+            graph.wait_for(lambda: _node_names_known(graph, topic), "")
     publishers = graph.node.get_publishers_info_by_topic(topic)
     subscriptions = graph.node.get_subscriptions_info_by_topic(topic)
     print(f"Type: {type_name}")
