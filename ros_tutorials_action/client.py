@@ -9,7 +9,7 @@ the book), logs each feedback, then the result and the final status of the goal.
 Exit status: 0 the goal succeeded; 1 no action server within --timeout, goal rejected,
 aborted or canceled, or no result within --result-timeout (the goal is then canceled);
 2 bad arguments; 130 Ctrl-C, after the running goal has been canceled on the server (the
-client waits up to CANCEL_TIMEOUT seconds for the server to confirm).
+client waits up to 5 s, action_goal.CANCEL_TIMEOUT, for the server to confirm).
 """
 
 from __future__ import annotations
@@ -17,9 +17,7 @@ from __future__ import annotations
 import argparse
 import signal
 import sys
-import time
-from collections.abc import Callable, Sequence
-from types import FrameType
+from collections.abc import Sequence
 from typing import Any
 
 import rclpy
@@ -32,15 +30,17 @@ from rclpy.task import Future
 from ros_tutorials_interfaces.action import Fibonacci
 
 from ros_tutorials_action.server import ACTION_NAME
+from ros_tutorials_common.action_goal import (
+    CtrlC,
+    Interrupted,
+    ServerLost,
+    cancel_goal,
+    spin_until,
+)
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
 from ros_tutorials_common.node_main import init, user_args
 
 DEFAULT_ORDER = 20
-CANCEL_TIMEOUT = 5.0
-# Waits spin in slices this long, so that a Ctrl-C is noticed at once (see on_sigint) ...
-SPIN_SLICE = 0.1
-# ... and check this often that the action server is still there (it may crash or be stopped).
-SERVER_CHECK_PERIOD = 1.0
 STATUS_NAMES = {
     GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
     GoalStatus.STATUS_CANCELED: "CANCELED",
@@ -48,28 +48,15 @@ STATUS_NAMES = {
 }
 
 
-class Interrupted(Exception):
-    """The user pressed Ctrl-C."""
-
-
-class ServerLost(Exception):
-    """The action server went away while we waited for it to answer."""
-
-
 class FibonacciActionClient(Node):
     def __init__(self, **node_kwargs) -> None:
         super().__init__("action_client", **node_kwargs)
         self.client = ActionClient(self, Fibonacci, ACTION_NAME)
-        self.interrupted = False
+        # The SIGINT handler (installed by main): Ctrl-C only sets a flag that the waits in
+        # run() check, so that the goal can still be canceled through ROS.
+        self.ctrl_c = CtrlC()
         self.goal_future: Future | None = None
         self.result_future: Future | None = None
-
-    def on_sigint(self, signum: int, frame: FrameType | None) -> None:
-        # Only note it: the goal is canceled from the main loop, between two spins. A second
-        # Ctrl-C means "leave now".
-        if self.interrupted:
-            raise KeyboardInterrupt
-        self.interrupted = True
 
     def on_feedback(self, feedback_msg: Fibonacci.Impl.FeedbackMessage) -> None:
         self.get_logger().info(f"Received feedback: {list(feedback_msg.feedback.sequence)}")
@@ -80,16 +67,24 @@ class FibonacciActionClient(Node):
         """Send one goal and wait for its result; Ctrl-C cancels it. Returns the exit code."""
         log = self.get_logger()
         log.info("Waiting for action server to start.")
+        # Every wait notices Ctrl-C; those after the goal is sent also notice a vanished server.
+        interrupted = self.ctrl_c.is_pressed
         try:
-            if not self.spin_until(executor, self.client.server_is_ready, server_timeout):
+            if not spin_until(
+                executor, self.client.server_is_ready, server_timeout, interrupted=interrupted
+            ):
                 log.error(f"Action server {ACTION_NAME} not available after {server_timeout:g} s")
                 return 1
             log.info("Action server started, sending goal.")
             self.goal_future = self.client.send_goal_async(
                 Fibonacci.Goal(order=order), feedback_callback=self.on_feedback
             )
-            if not self.spin_until(
-                executor, self.goal_future.done, server_timeout, server_needed=True
+            if not spin_until(
+                executor,
+                self.goal_future.done,
+                server_timeout,
+                client=self.client,
+                interrupted=interrupted,
             ):
                 log.error(f"No answer from action server {ACTION_NAME} to the goal")
                 return 1
@@ -98,8 +93,12 @@ class FibonacciActionClient(Node):
                 log.error(f"Goal of order {order} rejected (the server's log says why)")
                 return 1
             self.result_future = goal_handle.get_result_async()
-            if not self.spin_until(
-                executor, self.result_future.done, result_timeout, server_needed=True
+            if not spin_until(
+                executor,
+                self.result_future.done,
+                result_timeout,
+                client=self.client,
+                interrupted=interrupted,
             ):
                 log.warning("Action did not finish before the time out.")
                 self.cancel(executor)
@@ -112,35 +111,6 @@ class FibonacciActionClient(Node):
             return 1
         return self.report(self.result_future.result())
 
-    def spin_until(
-        self,
-        executor: Executor,
-        done: Callable[[], bool],
-        timeout: float,
-        *,
-        server_needed: bool = False,
-        interruptible: bool = True,
-    ) -> bool:
-        """Spin until done() (True) or timeout seconds pass (False).
-
-        Raises Interrupted on Ctrl-C if interruptible, and ServerLost if server_needed and the
-        server goes away.
-        """
-        deadline = time.monotonic() + timeout
-        next_check = time.monotonic() + SERVER_CHECK_PERIOD
-        while not done():
-            if interruptible and self.interrupted:
-                raise Interrupted
-            now = time.monotonic()
-            if now >= deadline:
-                return False
-            if server_needed and now >= next_check:
-                if not self.client.server_is_ready():
-                    raise ServerLost
-                next_check = now + SERVER_CHECK_PERIOD
-            executor.spin_once(timeout_sec=min(SPIN_SLICE, deadline - now))
-        return True
-
     def report(self, response: Any) -> int:
         """Log a GetResult response (result and final status); the exit code it deserves."""
         log = self.get_logger()
@@ -149,37 +119,12 @@ class FibonacciActionClient(Node):
         return 0 if response.status == GoalStatus.STATUS_SUCCEEDED else 1
 
     def cancel(self, executor: Executor) -> None:
-        """Cancel the goal sent, if the server took it; wait at most CANCEL_TIMEOUT seconds."""
-        log = self.get_logger()
-        deadline = time.monotonic() + CANCEL_TIMEOUT
-
-        def wait(future: Future) -> Any | None:
-            remaining = max(0.0, deadline - time.monotonic())
-            # Not interruptible: a second Ctrl-C raises KeyboardInterrupt (see on_sigint).
-            try:
-                finished = self.spin_until(
-                    executor, future.done, remaining, server_needed=True, interruptible=False
-                )
-            except ServerLost:
-                return None
-            return future.result() if finished else None
-
-        # The goal may still be on its way: the server could accept it after we leave.
-        goal_handle = wait(self.goal_future) if self.goal_future else None
-        if goal_handle is None or not goal_handle.accepted:
-            return
-        log.info("Canceling goal")
-        response = wait(goal_handle.cancel_goal_async())
-        if response is None:
-            log.error(f"No answer to the cancel request within {CANCEL_TIMEOUT:g} s")
-            return
-        if not response.goals_canceling:
-            log.warning("The server did not cancel the goal (it had already finished)")
-        if self.result_future is None:
-            self.result_future = goal_handle.get_result_async()
-        result = wait(self.result_future)
-        if result is not None:
-            self.report(result)
+        """Cancel the goal sent, if the server took it; wait a bounded time (CANCEL_TIMEOUT)."""
+        response = cancel_goal(
+            executor, self.client, self.goal_future, self.result_future, self.get_logger()
+        )
+        if response is not None:
+            self.report(response)
 
 
 def parse_args(args: Sequence[str]) -> argparse.Namespace:
@@ -216,13 +161,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv if argv is None else argv
     args = parse_args(user_args(argv))  # bad arguments: usage message, exit 2
     # rclpy's own Ctrl-C handler would shut ROS down at once, but this client still needs ROS
-    # after Ctrl-C to cancel its goal: it handles SIGINT itself (FibonacciActionClient.on_sigint).
+    # after Ctrl-C to cancel its goal: it handles SIGINT itself (FibonacciActionClient.ctrl_c).
     init(argv, signal_handler_options=SignalHandlerOptions.NO)
     node = None
     executor = SingleThreadedExecutor()
     try:
         node = FibonacciActionClient()
-        signal.signal(signal.SIGINT, node.on_sigint)
+        signal.signal(signal.SIGINT, node.ctrl_c)
         executor.add_node(node)
         return node.run(executor, args.order, args.timeout, args.result_timeout)
     except KeyboardInterrupt:  # a second Ctrl-C while canceling

@@ -3,12 +3,21 @@
 from __future__ import annotations
 
 import argparse
+import signal
+import sys
 from typing import Any
 
 from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
 from rclpy.action.graph import get_action_names_and_types
 
+from ros_tutorials_common.action_goal import (
+    CtrlC,
+    Interrupted,
+    ServerLost,
+    cancel_goal,
+    spin_until,
+)
 from rostool.errors import ToolError
 from rostool.graph import Graph, absolute_name
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
@@ -43,36 +52,95 @@ def print_type(graph: Graph, action: str) -> None:
     print(types[0])
 
 
+class _Say:
+    """How send_goal's cancel reports, in the tool's plain style (see action_goal.cancel_goal)."""
+
+    def info(self, message: str) -> None:
+        print(message, flush=True)
+
+    def warning(self, message: str) -> None:
+        print(f"warning: {message}", file=sys.stderr, flush=True)
+
+    def error(self, message: str) -> None:
+        print(f"error: {message}", file=sys.stderr, flush=True)
+
+
 def send_goal(
     graph: Graph, action: str, type_name: str, values: Any, feedback: bool = False
 ) -> None:
-    """Send one goal, print feedback if asked, wait for the result however long it takes."""
+    """Send one goal, print feedback if asked, wait for the result however long it takes.
+
+    Ctrl-C cancels the goal on the server (waiting a bounded time for it to confirm), then
+    raises Interrupted (exit status 130). A server that goes away is a ToolError.
+    """
     action = absolute_name(action)
     action_type = load_type(type_name, ("action",))
     goal = fill_message(action_type.Goal(), values)
     client = ActionClient(graph.node, action_type, action)
-    print("Waiting for an action server to become available...", flush=True)
-    graph.wait_for(client.server_is_ready, f"no action server for '{action}'")
-    print(f"Sending goal:\n{_indented(goal)}\n", flush=True)
 
     def on_feedback(message: Any) -> None:
         print(f"Feedback:\n{_indented(message.feedback)}\n", flush=True)
 
-    sent = client.send_goal_async(goal, feedback_callback=on_feedback if feedback else None)
-    graph.wait_for(sent.done, f"no answer to the goal from '{action}'")
-    goal_handle = sent.result()
-    if not goal_handle.accepted:
-        raise ToolError(f"goal rejected by the server of '{action}'")
-    print(f"Goal accepted with ID: {bytes(goal_handle.goal_id.uuid).hex()}\n", flush=True)
-    result = goal_handle.get_result_async()
-    while not result.done():  # a goal may run for long: no timeout, Ctrl-C ends the wait
-        graph.spin_once(0.1)
-    answer = result.result()
+    # While the goal is ours, Ctrl-C only sets a flag: ROS must keep running to cancel it.
+    ctrl_c = CtrlC()
+    previous_handler = signal.signal(signal.SIGINT, ctrl_c)
+    interrupted = ctrl_c.is_pressed
+    sent = result = None
+    try:
+        print("Waiting for an action server to become available...", flush=True)
+        if not spin_until(
+            graph.executor, client.server_is_ready, graph.timeout, interrupted=interrupted
+        ):
+            raise ToolError(f"no action server for '{action}' (waited {graph.timeout:g} s)")
+        print(f"Sending goal:\n{_indented(goal)}\n", flush=True)
+        sent = client.send_goal_async(goal, feedback_callback=on_feedback if feedback else None)
+        # From now on the server must stay (client=): one that crashed would never answer.
+        if not spin_until(
+            graph.executor, sent.done, graph.timeout, client=client, interrupted=interrupted
+        ):
+            raise ToolError(f"no answer to the goal from '{action}' (waited {graph.timeout:g} s)")
+        goal_handle = sent.result()
+        if not goal_handle.accepted:
+            raise ToolError(f"goal rejected by the server of '{action}'")
+        print(f"Goal accepted with ID: {bytes(goal_handle.goal_id.uuid).hex()}\n", flush=True)
+        result = goal_handle.get_result_async()
+        # A goal may run for long: no timeout; Ctrl-C or a lost server ends the wait.
+        spin_until(graph.executor, result.done, client=client, interrupted=interrupted)
+    except Interrupted:
+        answer = cancel_goal(graph.executor, client, sent, result, _Say())
+        if answer is not None:
+            _print_result(answer)
+        raise
+    except ServerLost:
+        raise ToolError(
+            f"the action server of '{action}' went away before the goal finished"
+        ) from None
+    finally:
+        signal.signal(signal.SIGINT, previous_handler)
+    status = _print_result(result.result())
+    if status != "SUCCEEDED":
+        raise ToolError(f"goal finished with status {status}")
+
+
+def _print_result(answer: Any) -> str:
+    """Print a GetResult response as `ros2 action send_goal` does; return the status name."""
     print(f"Result:\n{_indented(answer.result)}\n")
     status = STATUS_NAMES.get(answer.status, str(answer.status))
     print(f"Goal finished with status: {status}", flush=True)
-    if answer.status != GoalStatus.STATUS_SUCCEEDED:
-        raise ToolError(f"goal finished with status {status}")
+    return status
+
+
+class _Say:
+    """send_goal's cancel reports in the tool's plain style (see action_goal.cancel_goal)."""
+
+    def info(self, message: str) -> None:
+        print(message, flush=True)
+
+    def warning(self, message: str) -> None:
+        print(f"warning: {message}", file=sys.stderr, flush=True)
+
+    def error(self, message: str) -> None:
+        print(f"error: {message}", file=sys.stderr, flush=True)
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:

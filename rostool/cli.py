@@ -3,7 +3,9 @@
 Each verb lives in its own module (topic.py, service.py, ...) and registers its commands
 here. A command is a function of the graph and the parsed arguments. `execute` gives all
 of them the same behaviour: a ToolError or a bad name prints one line and exits 1,
-Ctrl-C exits 0 (it is how `echo`, `hz` and `pub` are meant to end).
+Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (`echo`,
+`hz`, `bw`, `pub` with a rate or latched), for which it is the normal end: 0
+(see graph.until_stopped).
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ from collections.abc import Callable, Sequence
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
+from ros_tutorials_common.action_goal import Interrupted
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
 from rostool import action, interface, node, param, service, topic
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
@@ -26,13 +30,13 @@ def common_options() -> argparse.ArgumentParser:
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--timeout",
-        type=float,
+        type=positive_seconds,
         default=DEFAULT_TIMEOUT,
         help=f"seconds to wait for what the command names to appear (default {DEFAULT_TIMEOUT:g})",
     )
     common.add_argument(
         "--spin-time",
-        type=float,
+        type=positive_seconds,
         help="seconds a list waits for discovery (default: until the graph is quiet, "
         f"at most {MAX_SETTLE_TIME:g})",
     )
@@ -68,8 +72,8 @@ def execute(
     except NameValidationException as error:
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         return 1
-    except (KeyboardInterrupt, ExternalShutdownException):
-        return 0
+    except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
+        return EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

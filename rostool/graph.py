@@ -15,14 +15,16 @@ wait long enough makes a list complete.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import time
 from collections.abc import Callable
 from typing import TypeVar
 
 import rclpy
-from rclpy.executors import SingleThreadedExecutor
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions
 
 from ros_tutorials_common.node_main import init
 from rostool.errors import ToolError
@@ -56,13 +58,23 @@ def is_hidden(name: str) -> bool:
     return any(part.startswith("_") for part in name.split("/"))
 
 
+def until_stopped() -> contextlib.AbstractContextManager:
+    """For what runs until Ctrl-C (echo, hz, pub -r): that is its normal end, exit status 0.
+
+    Elsewhere Ctrl-C interrupts a command before it has done its job: exit status 130.
+    """
+    return contextlib.suppress(KeyboardInterrupt, ExternalShutdownException)
+
+
 class Graph:
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
     def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float | None = None):
         self.timeout = timeout
         self.spin_time = spin_time
-        init(["rostool"])
+        # SIGTERM only: Ctrl-C stays Python's KeyboardInterrupt and ROS keeps running, so
+        # that `action send_goal` can still cancel its goal after it.
+        init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
         # No parameter services or rosout: the tool's node should not clutter what it shows.
         self.node = Node(
             f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False

@@ -96,12 +96,16 @@ def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str,
 
 
 def load_file(graph: Graph, node: str, path: str) -> None:
-    """Set what a params file gives a node; like ros2, report refused ones and go on.
+    """Set what a params file gives a node (see load_values)."""
+    load_values(graph, node, params_for_node(read_params_file(path), path, _node_name(node)))
+
+
+def load_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
+    """Set parameters from a params file; like ros2, report refused ones and go on.
 
     A dump holds read-only parameters too (start_type_description_service), which no node
     accepts at run time; loading that dump back should still set everything else.
     """
-    values = params_from_file(path, _node_name(node))
     refused = try_set_values(graph, node, values)
     for name in values:
         if name in refused:
@@ -118,16 +122,23 @@ def dump_data(graph: Graph, node: str) -> dict[str, Any]:
     return {node: {"ros__parameters": params}}
 
 
-def params_from_file(path: str, node: str) -> dict[str, Any]:
-    """The parameters a params file gives a node: its entry, '/**' entries, or the only one."""
+def read_params_file(path: str) -> dict[Any, Any]:
+    """The mapping a params file holds; a missing, unreadable or malformed file is a ToolError."""
     try:
         data = yaml.safe_load(Path(path).read_text())
     except OSError as error:
         raise ToolError(f"cannot read {path}: {error.strerror}") from None
+    except UnicodeDecodeError:
+        raise ToolError(f"cannot read {path}: not a text file") from None
     except yaml.YAMLError as error:
         raise ToolError(f"{path} is not valid YAML: {str(error).splitlines()[0]}") from None
     if not isinstance(data, dict):
         raise ToolError(f"{path} is not a parameters file (expected 'node: ros__parameters: ...')")
+    return data
+
+
+def params_for_node(data: dict[Any, Any], path: str, node: str) -> dict[str, Any]:
+    """The parameters a params file gives a node: its entry, '/**' entries, or the only one."""
     found: dict[str, Any] = {}
     for key, entry in data.items():
         key = str(key)

@@ -24,6 +24,7 @@ from typing import Any
 
 import yaml
 
+from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool import interface, node, param, service, topic
 from rostool.cli import common_options, execute
 from rostool.errors import ToolError
@@ -34,19 +35,23 @@ from rostool.typenames import load_type
 # ROS 1 commands that have no ROS 2 counterpart, and what to do instead.
 NO_ROS2_MEANING = {
     ("rosnode", "kill"): "ROS 2 has no master to kill nodes through; stop the node's process "
-    "(Ctrl-C, or the launcher that started it)",
+    "(Ctrl-C in its terminal or the launcher's, or `kill PID`)",
     ("rosnode", "ping"): "ROS 2 nodes have no XML-RPC address to ping; `rosnode info NODE` "
     "shows whether the node is in the graph",
-    ("rosnode", "machine"): "ROS 2 does not record which machine a node runs on",
+    ("rosnode", "machine"): "ROS 2 does not record which machine a node runs on; "
+    "`rosnode list` (or `rostool node list`) shows every node in the graph",
     ("rosnode", "cleanup"): "ROS 2 has no master registry to clean; DDS drops vanished nodes "
-    "by itself",
-    ("rosservice", "uri"): "ROS 2 services have no ROSRPC URI; they are DDS topics",
+    "by itself, and `rosnode list` shows the ones still there",
+    ("rosservice", "uri"): "ROS 2 services have no ROSRPC URI (they travel over DDS); "
+    "`rosservice info SERVICE` shows the node that serves it and its type",
     ("rosparam", "delete"): "a ROS 2 parameter belongs to its node and stays declared; set "
     "another value with `rosparam set`",
     ("rosmsg", "md5"): "ROS 2 types have no MD5 sum; `rosmsg show` gives the definition",
     ("rossrv", "md5"): "ROS 2 types have no MD5 sum; `rossrv show` gives the definition",
-    ("rosmsg", "users"): "ROS 2 keeps no index of the code that uses a type",
-    ("rossrv", "users"): "ROS 2 keeps no index of the code that uses a type",
+    ("rosmsg", "users"): "ROS 2 keeps no index of the code that uses a type; "
+    "`rostopic find TYPE` (or `rostool topic find TYPE`) lists the topics that carry it",
+    ("rossrv", "users"): "ROS 2 keeps no index of the code that uses a type; "
+    "`rosservice find TYPE` (or `rostool service find TYPE`) lists the services that use it",
 }
 
 
@@ -117,22 +122,22 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
         data.update(param.dump_data(graph, node_name))
     text = yaml.safe_dump(data, default_flow_style=False)
     if path:
-        Path(path).write_text(text)
+        try:
+            Path(path).write_text(text)
+        except OSError as error:
+            raise ToolError(f"cannot write {path}: {error.strerror}") from None
     else:
         print(text.rstrip())
 
 
 def rosparam_load(graph: Graph, path: str) -> None:
-    try:
-        data = yaml.safe_load(Path(path).read_text())
-    except (OSError, yaml.YAMLError) as error:
-        raise ToolError(f"cannot read {path}: {str(error).splitlines()[0]}") from None
-    if not isinstance(data, dict) or any(not str(key).startswith("/") for key in data):
+    data = param.read_params_file(path)  # read and checked once, before touching any node
+    if any(not str(key).startswith("/") for key in data):
         raise ToolError(f"{path}: expected '/node_name: ros__parameters: ...' entries")
+    if "/**" in data:
+        raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
     for node_name in data:
-        if node_name == "/**":
-            raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
-        param.load_file(graph, node_name, path)
+        param.load_values(graph, node_name, param.params_for_node(data, path, node_name))
 
 
 # The tools. Each is a parser whose commands call the rostool functions.
@@ -172,13 +177,14 @@ def rostopic_parser() -> argparse.ArgumentParser:
     sub.choices["list"].add_argument("-v", "--verbose", action="store_true", help="with types")
     p = _add(sub, common, "echo", lambda g, a: topic.echo(g, a.topic, count=a.n), "print messages")
     p.add_argument("topic")
-    p.add_argument("-n", type=int, help="print this many messages, then exit")
+    p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
     p = _add(sub, common, "pub", lambda g, a: _pub(g, a), "publish a message")
     p.add_argument("topic")
     p.add_argument("type")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
-    p.add_argument("-r", "--rate", type=float, help="publish at this rate (Hz) until Ctrl-C")
-    p.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
+    group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
+    group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
+    group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
     for name, bandwidth in (("hz", False), ("bw", True)):
         p = _add(sub, common, name, lambda g, a, b=bandwidth: topic.hz(g, a.topic, 10000, b), "")
         p.add_argument("topic")
@@ -194,7 +200,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
 def _pub(graph: Graph, args: argparse.Namespace) -> None:
     values = values_from_args(args.values)
     if args.rate is not None:
-        topic.pub(graph, args.topic, args.type, values, rate=topic.positive_rate(args.rate))
+        topic.pub(graph, args.topic, args.type, values, rate=args.rate)
     elif args.once:
         topic.pub(graph, args.topic, args.type, values, times=1)
     else:  # ROS 1's default: publish once, latched, until Ctrl-C
@@ -269,8 +275,15 @@ def rosnode_parser() -> argparse.ArgumentParser:
 def _interface_parser(tool: str, kind: str) -> argparse.ArgumentParser:
     what = interface.KIND_NAMES[kind]
     parser, sub, common = _parser(tool, f"ROS 1's {tool}, on ROS 2 (rostool interface)")
-    p = _add(sub, common, "show", lambda g, a: _show(a.type, kind), f"a {what}", offline=True)
-    p.add_argument("type", nargs="?", default="-", help="pkg/Name, Name, or read from stdin")
+    show = _add(
+        sub,
+        common,
+        "show",
+        lambda g, a: _show(_type_or_stdin(a.type, show), kind),
+        f"a {what}",
+        offline=True,
+    )
+    show.add_argument("type", nargs="?", help="pkg/Name, Name, or - to read it from stdin")
     _add(
         sub,
         common,
@@ -298,6 +311,16 @@ def _interface_parser(tool: str, kind: str) -> argparse.ArgumentParser:
     )
     _no_meaning(tool, sub)
     return parser
+
+
+def _type_or_stdin(type_name: str | None, parser: argparse.ArgumentParser) -> str:
+    """No type given: read it from a pipe (`rosservice type /srv | rossrv show`), as ROS 1
+    did; from a terminal that would only sit and wait, so say what is missing instead."""
+    if type_name is not None:
+        return type_name
+    if sys.stdin.isatty():
+        parser.error("the following arguments are required: type (or - to read it from stdin)")
+    return "-"
 
 
 def _show(type_name: str, kind: str) -> None:

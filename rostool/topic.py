@@ -13,10 +13,12 @@ from typing import Any
 
 import yaml
 from rclpy.duration import Duration
+from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name
+from rostool.graph import Graph, absolute_name, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
 from rostool.typenames import full_type_name, load_type
 
@@ -45,9 +47,9 @@ def info(graph: Graph, topic: str, verbose: bool = False) -> None:
     topic = absolute_name(topic)
     type_name = graph.wait_for_topic_type(topic)
     if verbose:
-        # Endpoints are discovered before the names of their nodes; wait a little for those.
-        with contextlib.suppress(ToolError):  # after that, print what is known
-            graph.wait_for(lambda: _node_names_known(graph, topic), "", timeout=1.0)
+        # Endpoints are discovered before the names of their nodes: wait for those too.
+        with contextlib.suppress(ToolError):  # after --timeout, print what is known
+            graph.wait_for(lambda: _node_names_known(graph, topic), "")
     publishers = graph.node.get_publishers_info_by_topic(topic)
     subscriptions = graph.node.get_subscriptions_info_by_topic(topic)
     print(f"Type: {type_name}")
@@ -107,7 +109,13 @@ def echo(
     field: str | None = None,
 ) -> None:
     """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
-    topic = absolute_name(topic)
+    with until_stopped():
+        _echo(graph, absolute_name(topic), type_name, count, field)
+
+
+def _echo(
+    graph: Graph, topic: str, type_name: str | None, count: int | None, field: str | None
+) -> None:
     msg_type = _message_type(graph, topic, type_name)
     received: deque = deque()
     # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
@@ -165,15 +173,31 @@ def pub(
             print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     if rate is None:
         print("publishing and latching message. Press ctrl-C to terminate", flush=True)
-        served = 0
-        while True:
-            # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
-            # subscription would miss one sent before it matched, so send it again on each join.
-            subscribers = publisher.get_subscription_count()
-            if subscribers > served:
-                publisher.publish(msg)
-            served = subscribers
-            graph.spin_once(0.1)
+        with until_stopped():
+            _latch(graph, publisher, msg)
+        return
+    if times is None:
+        with until_stopped():
+            _publish(graph, publisher, msg, rate, times)
+        return
+    _publish(graph, publisher, msg, rate, times)  # Ctrl-C before the last one: interrupted
+    # Reliable delivery of the last message before the process goes away.
+    publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
+
+
+def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
+    served = 0
+    while True:
+        # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
+        # subscription would miss one sent before it matched, so send it again on each join.
+        subscribers = publisher.get_subscription_count()
+        if subscribers > served:
+            publisher.publish(msg)
+        served = subscribers
+        graph.spin_once(0.1)
+
+
+def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: int | None) -> None:
     print("publisher: beginning loop", flush=True)
     count = 0
     next_time = time.monotonic()
@@ -186,8 +210,6 @@ def pub(
         publisher.publish(msg)
         print(f"publishing #{count}: {msg}", flush=True)
         next_time += 1.0 / rate
-    # Reliable delivery of the last message before the process goes away.
-    publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
 
 
 class _RateMeter:
@@ -208,7 +230,11 @@ class _RateMeter:
 
 def hz(graph: Graph, topic: str, window: int = 10000, bandwidth: bool = False) -> None:
     """Print the publishing rate (or bandwidth) of a topic once a second until Ctrl-C."""
-    topic = absolute_name(topic)
+    with until_stopped():
+        _hz(graph, absolute_name(topic), window, bandwidth)
+
+
+def _hz(graph: Graph, topic: str, window: int, bandwidth: bool) -> None:
     msg_type = _message_type(graph, topic, None)
     meter = _RateMeter(window)
     # raw=True: count serialized messages without the cost of deserializing them.
@@ -262,26 +288,19 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("topic")
     p.add_argument("type", help="message type, e.g. std_msgs/msg/String")
     p.add_argument("values", nargs="?", default="{}", help="the fields as YAML, e.g. '{data: hi}'")
-    p.add_argument("-r", "--rate", type=float, default=DEFAULT_PUB_RATE, help="Hz (default 1)")
-    group = p.add_mutually_exclusive_group()
+    group = p.add_mutually_exclusive_group()  # --once is "one message now": no rate, no count
     group.add_argument("-1", "--once", action="store_true", help="publish one message, then exit")
-    group.add_argument("-t", "--times", type=int, help="publish this many messages, then exit")
-    p.set_defaults(
-        run=lambda graph, a: pub(
-            graph,
-            a.topic,
-            a.type,
-            parse_yaml(a.values),
-            positive_rate(a.rate),
-            1 if a.once else a.times,
-        )
-    )
+    group.add_argument("-r", "--rate", type=positive_rate, help="Hz (default 1)")
+    p.add_argument("-t", "--times", type=positive_int, help="publish this many messages, then exit")
+    p.set_defaults(run=lambda graph, a, parser=p: _pub_command(graph, a, parser))
 
     for name, bandwidth in (("hz", False), ("bw", True)):
         what = "bandwidth" if bandwidth else "publishing rate"
         p = sub.add_parser(name, parents=[common], help=f"print the {what} of a topic")
         p.add_argument("topic")
-        p.add_argument("-w", "--window", type=int, default=10000, help="messages to average")
+        p.add_argument(
+            "-w", "--window", type=positive_int, default=10000, help="messages to average"
+        )
         p.set_defaults(run=lambda graph, a, bw=bandwidth: hz(graph, a.topic, a.window, bw))
 
     p = sub.add_parser("info", parents=[common], help="type, publishers and subscriptions")
@@ -298,7 +317,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.set_defaults(run=lambda graph, a: find(graph, a.type))
 
 
-def positive_rate(value: float) -> float:
-    if value <= 0:
-        raise ToolError(f"the rate must be positive, got {value:g}")
-    return value
+def _pub_command(graph: Graph, args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
+    if args.once and args.times is not None:
+        parser.error("argument -t/--times: not allowed with argument -1/--once")
+    times = 1 if args.once else args.times
+    rate = DEFAULT_PUB_RATE if args.rate is None else args.rate
+    pub(graph, args.topic, args.type, parse_yaml(args.values), rate, times)

@@ -1,28 +1,34 @@
 """rostool and its ROS 1 spellings, run as real processes against real nodes.
 
-The topic nodes of the topic lesson run as processes; a small fixture node
-(rostool_fixture_node.py) offers the service, parameter and action the other lessons use.
-Every command is the installed console script, as a learner types it.
+The lessons' own nodes run as processes (topic publisher and subscriber, the service and
+parameter servers, the action server with a short step_period). Every command is the
+installed console script, as a learner types it.
 """
 
 from __future__ import annotations
 
+import os
+import pty
+import re
 import subprocess
 import sys
 import time
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT
+from helpers import TIMEOUT, spin_until
+from rclpy.node import Node
+
+from rostool.ros1 import NO_ROS2_MEANING
 
 BIN = Path(sys.executable).parent
-FIXTURE = str(Path(__file__).with_name("rostool_fixture_node.py"))
 PROJECT_TYPES = {
     "msg": ["AandB", "MsgTutorial", "Num", "UserRecord"],
     "srv": ["AddTwoInts", "SrvTutorial"],
     "action": ["Fibonacci"],
 }
 SRV = "ros_tutorials_interfaces/srv/SrvTutorial"
+FIBONACCI = "ros_tutorials_interfaces/action/Fibonacci"
 
 
 def tool(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
@@ -58,11 +64,21 @@ def publisher(node_process):
     return proc
 
 
-@pytest.fixture
-def fixture_node(node_process):
-    proc = node_process(FIXTURE)
-    proc.wait_for_output(lambda lines: any("fixture ready" in line for line in lines))
+def _ready(proc):
+    proc.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines), what="ready")
     return proc
+
+
+@pytest.fixture
+def service_lesson(node_process):
+    """The service lesson's server: /service_server offering /ros_tutorial_srv (a + b)."""
+    return _ready(node_process("-m", "ros_tutorials_service.server"))
+
+
+@pytest.fixture
+def parameter_lesson(node_process):
+    """The parameter lesson's server: /ros_tutorial_srv and its calculation_method (1..4)."""
+    return _ready(node_process("-m", "ros_tutorials_parameter.server"))
 
 
 # Interfaces: no graph needed.
@@ -147,7 +163,8 @@ def test_topic_list_type_info_and_node_list(publisher):
     assert ok("rostool", "topic", "type", "/ros_tutorial_msg").strip() == (
         "ros_tutorials_interfaces/msg/MsgTutorial"
     )
-    info = ok("rostool", "topic", "info", "/ros_tutorial_msg", "-v")
+    # -v waits (up to --timeout) for the endpoints' node names, which discovery sends later.
+    info = ok("rostool", "topic", "info", "/ros_tutorial_msg", "-v", "--timeout", "30")
     assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
     nodes = ok("rosnode", "list", "--spin-time", "5").split()
     assert "/topic_publisher" in nodes
@@ -171,8 +188,12 @@ def test_topic_echo_prints_messages_as_yaml(publisher):
 
 
 def test_long_running_verbs_stop_with_exit_0_on_ctrl_c(publisher, node_process):
+    latched = node_process(str(BIN / "rostopic"), "pub", "/other", "std_msgs/String", "hi")
+    latched.wait_for_output(lambda lines: any("latching" in line for line in lines))
+    assert latched.interrupt() == 0
     echo = node_process("-m", "rostool", "topic", "echo", "/ros_tutorial_msg")
     hz = node_process("-m", "rostool", "topic", "hz", "/ros_tutorial_msg")
+    bw = node_process(str(BIN / "rostopic"), "bw", "/ros_tutorial_msg")
     pub = node_process(
         "-m", "rostool", "topic", "pub", "/other", "std_msgs/msg/String", "{data: hi}", "-r", "5"
     )
@@ -183,15 +204,17 @@ def test_long_running_verbs_stop_with_exit_0_on_ctrl_c(publisher, node_process):
     rate = float(next(line for line in lines if "average rate" in line).split(": ")[1])
     assert 5.0 < rate < 20.0  # the publisher runs at 10 Hz
     pub.wait_for_output(lambda lines: any("publishing #2" in line for line in lines))
-    for proc in (echo, hz, pub):
+    bw.wait_for_output(lambda lines: any("B/s" in line for line in lines), what="a bandwidth")
+    for proc in (echo, hz, bw, pub):
         assert proc.interrupt() == 0
         assert "Traceback" not in proc.output
 
 
 def test_topic_pub_reaches_a_subscriber_in_both_spellings(node_process):
     subscriber = node_process("-m", "ros_tutorials_topic.subscriber")
+    # --once waits (up to --timeout) for the subscriber to match; a loaded machine is slow.
     ok("rostool", "topic", "pub", "--once", "/ros_tutorial_msg",
-       "ros_tutorials_interfaces/msg/MsgTutorial", "{data: 42}")  # fmt: skip
+       "ros_tutorials_interfaces/msg/MsgTutorial", "{data: 42}", "--timeout", "30")  # fmt: skip
     subscriber.wait_for_output(lambda lines: any("recieve msg = 42" in x for x in lines))
 
     listener = node_process("-m", "ros_tutorials_topic.listener")
@@ -206,10 +229,10 @@ def test_topic_pub_reaches_a_subscriber_in_both_spellings(node_process):
     assert rated.interrupt() == 0
 
 
-# Services, parameters and actions, against the fixture node.
+# Services, parameters and actions, against the lessons' nodes, as the book does it.
 
 
-def test_service_call_in_both_spellings(fixture_node):
+def test_service_call_in_both_spellings(service_lesson):
     assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
     assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
     out = ok("rostool", "service", "call", "/ros_tutorial_srv", SRV, "{a: 10, b: 5}")
@@ -219,7 +242,7 @@ def test_service_call_in_both_spellings(fixture_node):
     assert ok("rostool", "service", "type", "/ros_tutorial_srv").strip() == SRV
 
 
-def test_the_books_parameter_walk_through(fixture_node):
+def test_the_books_parameter_walk_through(parameter_lesson):
     assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
     for method, result in ((2, 5), (3, 50), (4, 2)):
         ok("rosparam", "set", "/calculation_method", str(method))
@@ -232,7 +255,7 @@ def test_the_books_parameter_walk_through(fixture_node):
     )
 
 
-def test_ros2_param_verbs(fixture_node, tmp_path):
+def test_ros2_param_verbs(parameter_lesson, tmp_path):
     ok("rostool", "param", "set", "/service_server", "calculation_method", "3")
     assert ok("rostool", "param", "get", "/service_server", "calculation_method").strip() == (
         "Integer value is: 3"
@@ -248,19 +271,21 @@ def test_ros2_param_verbs(fixture_node, tmp_path):
     assert ok("rosparam", "get", "/service_server/calculation_method").strip() == "2"
 
 
-def test_action_send_goal_with_feedback(fixture_node):
-    assert "/ros_tutorial_action" in ok("rostool", "action", "list", "--spin-time", "5").split()
+def test_action_send_goal_with_feedback(node_process):
+    node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0.05")
     out = ok(
-        "rostool", "action", "send_goal", "/ros_tutorial_action",
-        "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback",
+        "rostool", "action", "send_goal", "/ros_tutorial_action", FIBONACCI, "{order: 5}",
+        "--feedback", "--timeout", "30",
     )  # fmt: skip
-    assert "Goal accepted with ID:" in out and "Feedback:" in out
+    assert "Goal accepted with ID:" in out
+    assert out.count("Feedback:") >= 1
     result = out.split("Result:")[1]
     numbers = [
         int(line.strip("- ")) for line in result.splitlines() if line.strip().startswith("-")
     ]
-    assert numbers == [0, 1, 1, 2, 3, 5]
+    assert numbers == [0, 1, 1, 2, 3, 5, 8]  # the book's: order 5 appends 5 terms to 0, 1
     assert out.strip().endswith("Goal finished with status: SUCCEEDED")
+    assert "/ros_tutorial_action" in ok("rostool", "action", "list", "--spin-time", "5").split()
 
 
 @pytest.mark.parametrize(
@@ -300,13 +325,16 @@ def test_action_send_goal_with_feedback(fixture_node):
         (("rostopic", "pub", "/t", "ros_tutorials_interfaces/Num", "{num: x}"), "integer"),
     ],
 )
-def test_errors_are_one_clear_line(fixture_node, args, message):
+def test_errors_are_one_clear_line(parameter_lesson, args, message):
     assert message in fails(*args)
 
 
-def test_a_parameter_on_several_nodes_asks_for_the_node(fixture_node, node_process):
-    other = node_process(FIXTURE, "--ros-args", "-r", "__node:=second_server")
-    other.wait_for_output(lambda lines: any("fixture ready" in line for line in lines))
+def test_a_parameter_on_several_nodes_asks_for_the_node(parameter_lesson, node_process):
+    other = _ready(
+        node_process(
+            "-m", "ros_tutorials_parameter.server", "--ros-args", "-r", "__node:=second_server"
+        )
+    )
     # A new process may discover one node before the other; ask until it has seen both.
     deadline = time.monotonic() + TIMEOUT
     result = tool("rosparam", "get", "/calculation_method")
@@ -317,43 +345,158 @@ def test_a_parameter_on_several_nodes_asks_for_the_node(fixture_node, node_proce
     assert "\n" not in line and "/second_server" in line and "/service_server" in line
     assert ok("rosparam", "get", "/second_server/calculation_method").strip() == "1"
     # Nothing died from the bad requests.
-    assert fixture_node.process.poll() is None and other.process.poll() is None
+    assert parameter_lesson.process.poll() is None and other.process.poll() is None
 
 
-# Against the real lessons' nodes, as the book does it.
+# Files that cannot be read or written: one line, no traceback.
 
 
-def _ready(proc) -> None:
-    proc.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines), what="ready")
-
-
-def test_rosservice_call_against_the_service_lesson(node_process):
-    _ready(node_process("-m", "ros_tutorials_service.server"))
-    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
-    assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
-
-
-def test_the_books_walk_through_against_the_parameter_lesson(node_process):
-    _ready(node_process("-m", "ros_tutorials_parameter.server"))
-    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
-    for method, result in ((2, 5), (3, 50), (4, 2)):
-        ok("rosparam", "set", "/calculation_method", str(method))
-        assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == (
-            f"result: {result}"
-        )
-    assert "out of range" in fails("rosparam", "set", "/calculation_method", "7")
-
-
-def test_send_goal_against_the_action_lesson(node_process):
-    node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0.1")
-    out = ok(
-        "rostool", "action", "send_goal", "/ros_tutorial_action",
-        "ros_tutorials_interfaces/action/Fibonacci", "{order: 5}", "--feedback", "--timeout", "30",
-    )  # fmt: skip
-    result = out.split("Result:")[1]
-    numbers = [
-        int(line.strip("- ")) for line in result.splitlines() if line.strip().startswith("-")
+def test_params_files_that_cannot_be_used_are_one_clear_line(tmp_path):
+    missing = str(tmp_path / "missing.yaml")
+    binary = tmp_path / "binary.yaml"
+    binary.write_bytes(b"\xff\xfe\x00garbage")
+    broken = tmp_path / "broken.yaml"
+    broken.write_text("/service_server: {ros__parameters: [\n")
+    cases = [
+        (("rosparam", "dump", str(tmp_path / "no" / "dir" / "x.yaml")), "cannot write"),
+        (("rosparam", "load", missing), "cannot read"),
+        (("rosparam", "load", str(tmp_path)), "cannot read"),  # a directory
+        (("rosparam", "load", str(binary)), "not a text file"),
+        (("rosparam", "load", str(broken)), "is not valid YAML"),
+        (("rostool", "param", "load", "/service_server", missing), "cannot read"),
+        (("rostool", "param", "load", "/service_server", str(tmp_path)), "cannot read"),
+        (("rostool", "param", "load", "/service_server", str(binary)), "not a text file"),
+        (("rostool", "param", "load", "/service_server", str(broken)), "is not valid YAML"),
     ]
-    assert numbers == [0, 1, 1, 2, 3, 5, 8]
-    assert out.count("Feedback:") >= 1
-    assert out.strip().endswith("Goal finished with status: SUCCEEDED")
+    for args, message in cases:
+        assert message in fails(*args, "--timeout", "1"), args
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rostool", "topic", "echo", "/t", "--timeout", "nan"),
+        ("rostool", "topic", "echo", "/t", "--timeout", "-1"),
+        ("rostool", "topic", "list", "--spin-time", "nan"),
+        ("rostool", "topic", "list", "--spin-time", "-3"),
+        ("rosnode", "list", "--spin-time", "inf"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "nan"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "inf"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-r", "-1"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "-t", "0"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "--once", "-r", "2"),
+        ("rostool", "topic", "pub", "/t", "std_msgs/msg/String", "{}", "--once", "-t", "2"),
+        ("rostool", "topic", "hz", "/t", "-w", "0"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-r", "nan"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-r", "0"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "-1", "-r", "2"),
+        ("rostopic", "pub", "/t", "std_msgs/String", "hi", "--once", "--rate", "2"),
+        ("rostopic", "echo", "/t", "-n", "0"),
+        ("rosservice", "call", "/s", "1", "2", "--timeout", "nan"),
+    ],
+)
+def test_bad_numbers_and_conflicting_options_are_usage_errors(args):
+    result = tool(*args)  # returns at once: nothing waits on the graph, nothing publishes
+    assert result.returncode == 2, f"{' '.join(args)}: {result.returncode}\n{result.stdout}"
+    assert "usage:" in result.stderr and "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("owner,command", sorted(NO_ROS2_MEANING))
+def test_commands_without_ros2_meaning_name_the_ros2_way(owner, command):
+    line = fails(owner, command, "x")
+    assert f"`{owner} {command}` has no ROS 2 meaning" in line
+    # ... and, after it, a command to use instead.
+    assert re.search(r"`[a-z]+ [^`]+`", line.split("meaning")[1]), line
+
+
+def _in_a_terminal(*args: str) -> subprocess.CompletedProcess:
+    """Run a console script with a terminal as its standard input, as a learner types it."""
+    controller, terminal = pty.openpty()
+    try:
+        return subprocess.run(
+            [str(BIN / args[0]), *args[1:]],
+            stdin=terminal,
+            capture_output=True,
+            text=True,
+            timeout=TIMEOUT,
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} waited for the terminal instead of failing")
+    finally:
+        os.close(controller)
+        os.close(terminal)
+
+
+@pytest.mark.parametrize("tool_name", ["rosmsg", "rossrv"])
+def test_show_without_a_type_reads_only_a_pipe(tool_name):
+    result = _in_a_terminal(tool_name, "show")
+    assert result.returncode == 2 and "usage:" in result.stderr, result.stderr
+    assert "type (or - to read it from stdin)" in result.stderr
+    # From a pipe it reads the name, as `rosservice type /srv | rossrv show` needs.
+    type_name = "std_msgs/String" if tool_name == "rosmsg" else "std_srvs/Empty"
+    piped = subprocess.run(
+        [str(BIN / tool_name), "show"], input=type_name, capture_output=True, text=True
+    )
+    assert piped.returncode == 0, piped.stderr
+
+
+def _wait_until_in_graph(executor, proc) -> None:
+    """Wait until a tool process's hidden node is in the graph: it is past start-up and
+    waiting, with its Ctrl-C handling in place."""
+    probe = Node("rostool_test_probe", context=executor.context)
+    executor.add_node(probe)
+    name = f"_rostool_{proc.process.pid}"
+    spin_until(
+        executor,
+        lambda: any(n == name for n, _ in probe.get_node_names_and_namespaces()),
+        what=f"{name} in the graph",
+    )
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rostool", "service", "call", "/nope", SRV, "{a: 1, b: 2}"),
+        ("rosservice", "call", "/nope", "1", "2"),
+        ("rosparam", "get", "/nope"),
+        ("rostool", "param", "set", "/nope", "x", "1"),
+        ("rostool", "topic", "list", "--spin-time", "600"),
+        ("rostool", "action", "send_goal", "/nope", FIBONACCI, "{order: 1}"),
+    ],
+)
+def test_ctrl_c_interrupts_one_shot_verbs_with_exit_130(executor, node_process, args):
+    proc = node_process(str(BIN / args[0]), *args[1:], "--timeout", "600")
+    _wait_until_in_graph(executor, proc)
+    assert proc.interrupt() == 130
+    assert "Traceback" not in proc.output
+
+
+def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
+    server = node_process(
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
+    )
+    goal = node_process(
+        str(BIN / "rostool"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,
+        "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    assert goal.interrupt() == 130
+    assert "Canceling goal" in goal.output
+    assert "Goal finished with status: CANCELED" in goal.output
+    assert "Traceback" not in goal.output
+    server.wait_for_output(lambda lines: any("ros_tutorial_action: Canceled" in x for x in lines))
+
+
+def test_send_goal_notices_a_server_that_goes_away(node_process):
+    server = node_process(
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
+    )
+    goal = node_process(
+        str(BIN / "rostool"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,
+        "{order: 5}", "--feedback", "--timeout", "30",
+    )  # fmt: skip
+    goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    assert server.interrupt() == 0
+    assert goal.wait() == 1
+    assert "went away before the goal finished" in goal.output
+    assert "Traceback" not in goal.output
