@@ -130,19 +130,6 @@ def _print_result(answer: Any) -> str:
     return status
 
 
-class _Say:
-    """send_goal's cancel reports in the tool's plain style (see action_goal.cancel_goal)."""
-
-    def info(self, message: str) -> None:
-        print(message, flush=True)
-
-    def warning(self, message: str) -> None:
-        print(f"warning: {message}", file=sys.stderr, flush=True)
-
-    def error(self, message: str) -> None:
-        print(f"error: {message}", file=sys.stderr, flush=True)
-
-
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     parser = verbs.add_parser("action", help="actions: list, type, send_goal")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
