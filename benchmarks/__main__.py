@@ -9,6 +9,7 @@ import argparse
 import datetime
 import os
 import platform
+import signal
 
 from benchmarks import launch, memory, service, setup_time, topic
 from benchmarks.common import print_table, private_domain
@@ -30,6 +31,10 @@ def main() -> int:
     unknown = [name for name in args.groups if name not in GROUPS]
     if unknown:
         parser.error(f"unknown group {unknown[0]!r}; choose from {', '.join(GROUPS)}")
+    # Started in the background (nohup, `make bench &`), this process and so its children
+    # would inherit SIGINT *ignored*, and a shell cannot trap a signal ignored on entry: the
+    # Ctrl-C the benchmarks send would do nothing. Take the default back for the children.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     domain = private_domain()
     print(
         f"# ros-tutorials benchmarks, {datetime.date.today()}, {platform.machine()}, "
