@@ -8,6 +8,7 @@ The DDS defaults (localhost only) are applied before anything initialises rclpy.
 from __future__ import annotations
 
 import os
+import signal
 from collections.abc import Callable, Iterator
 
 import pytest
@@ -22,6 +23,10 @@ from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 @pytest.fixture(scope="session", autouse=True)
 def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     """This session's own ROS_DOMAIN_ID, set in os.environ for rclpy and for child processes."""
+    # Run in the background (nohup, `make test &`, some CI runners), pytest would inherit
+    # SIGINT *ignored* and pass that on to every process a test starts, so the Ctrl-C the
+    # tests send would do nothing. Take the default back for them.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     domain_id, lock = claim_private_domain_id()
     os.environ["ROS_DOMAIN_ID"] = str(domain_id)
     os.environ["ROS_LOG_DIR"] = str(tmp_path_factory.mktemp("ros_log"))
