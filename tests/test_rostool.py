@@ -471,7 +471,8 @@ def test_ctrl_c_interrupts_one_shot_verbs_with_exit_130(executor, node_process, 
     assert "Traceback" not in proc.output
 
 
-def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
+def _goal_in_progress(node_process):
+    """An action server whose steps never end, and send_goal waiting on it after one feedback."""
     server = node_process(
         "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
     )
@@ -480,6 +481,11 @@ def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
         "{order: 5}", "--feedback", "--timeout", "30",
     )  # fmt: skip
     goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    return server, goal
+
+
+def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
+    server, goal = _goal_in_progress(node_process)
     assert goal.interrupt() == 130
     assert "Canceling goal" in goal.output
     assert "Goal finished with status: CANCELED" in goal.output
@@ -488,14 +494,7 @@ def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
 
 
 def test_send_goal_notices_a_server_that_goes_away(node_process):
-    server = node_process(
-        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
-    )
-    goal = node_process(
-        str(BIN / "rostool"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,
-        "{order: 5}", "--feedback", "--timeout", "30",
-    )  # fmt: skip
-    goal.wait_for_output(lambda lines: "Feedback:" in lines, what="the first feedback")
+    server, goal = _goal_in_progress(node_process)
     assert server.interrupt() == 0
     assert goal.wait() == 1
     assert "went away before the goal finished" in goal.output
