@@ -8,8 +8,8 @@ VENV := .venv
 PY := $(VENV)/bin/python
 INSTALLED := $(VENV)/.installed
 INTERFACES := $(VENV)/.interfaces
-INTERFACE_SOURCES := $(wildcard interfaces/CMakeLists.txt interfaces/package.xml \
-	interfaces/cmake/*.cmake interfaces/msg/*.msg interfaces/srv/*.srv interfaces/action/*.action)
+INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
+	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test lint bench clean
 

@@ -1,9 +1,11 @@
-"""Generate and install interfaces/ (ros_tutorials_interfaces) into this virtual environment.
+"""Generate and install the interface packages in interfaces/ into this virtual environment.
 
-Runs the real rosidl tool chain from the ROS 2 Jazzy wheels through CMake, the way colcon
-would, and installs into sys.prefix: the Python package lands in site-packages and the
-type-support libraries in sys.prefix/lib, where the wheels' loader already looks.
-The build tree (build/interfaces) is kept, so a changed definition rebuilds only what changed.
+Each folder of interfaces/ with a package.xml is one ROS 2 interface package
+(ros_tutorials_interfaces, turtlesim). This runs the real rosidl tool chain from the ROS 2
+Jazzy wheels through CMake on each, the way colcon would, and installs into sys.prefix: the
+Python package lands in site-packages and the type-support libraries in sys.prefix/lib, where
+the wheels' loader already looks. The build trees (build/interfaces/PKG) are kept, so a
+changed definition rebuilds only what changed.
 
     .venv/bin/python tools/build_interfaces.py
 """
@@ -17,8 +19,15 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-SOURCE = ROOT / "interfaces"
+SOURCES = ROOT / "interfaces"
 BUILD = ROOT / "build" / "interfaces"
+# Repairs the wheels' exported CMake targets; see the file. Not needed in a ROS 2 workspace.
+FIX_WHEEL_TARGETS = SOURCES / "cmake" / "fix_wheel_targets.cmake"
+
+
+def interface_packages() -> list[Path]:
+    """The interface packages in interfaces/ (folders holding a package.xml), by name."""
+    return sorted(path.parent for path in SOURCES.glob("*/package.xml"))
 
 
 def find_cmake() -> str:
@@ -32,32 +41,28 @@ def find_cmake() -> str:
     return found
 
 
-def main() -> int:
+def build_package(source: Path, cmake: str, env: dict[str, str]) -> bool:
+    """Configure, build and install one interface package; False (log printed) on failure."""
     prefix = sys.prefix
-    env = dict(os.environ)
-    # ament's resource index and CMake's package search both start at the venv prefix.
-    env["AMENT_PREFIX_PATH"] = prefix
-    env["CMAKE_PREFIX_PATH"] = prefix
-    env["PATH"] = f"{Path(prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
-    cmake = find_cmake()
-    BUILD.mkdir(parents=True, exist_ok=True)
+    build = BUILD / source.name
+    build.mkdir(parents=True, exist_ok=True)
     steps = [
         [
             cmake,
             "-S",
-            str(SOURCE),
+            str(source),
             "-B",
-            str(BUILD),
+            str(build),
             f"-DCMAKE_INSTALL_PREFIX={prefix}",
             f"-DCMAKE_PREFIX_PATH={prefix}",
             f"-DPython3_EXECUTABLE={sys.executable}",
-            "-DROS_TUTORIALS_FIX_WHEEL_TARGETS=ON",
+            f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
             "-DBUILD_TESTING=OFF",
         ],
-        [cmake, "--build", str(BUILD), "--parallel", str(os.cpu_count() or 2)],
-        [cmake, "--install", str(BUILD)],
+        [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)],
+        [cmake, "--install", str(build)],
     ]
-    log_path = BUILD / "build.log"
+    log_path = build / "build.log"
     with log_path.open("w") as log:
         for step in steps:
             log.write(f"$ {' '.join(step)}\n")
@@ -66,11 +71,26 @@ def main() -> int:
             if result.returncode != 0:
                 print(log_path.read_text()[-4000:], file=sys.stderr)
                 print(
-                    f"build_interfaces: step failed: {' '.join(step[:2])}; full log in {log_path}",
+                    f"build_interfaces: {source.name}: step failed: {' '.join(step[:2])}; "
+                    f"full log in {log_path}",
                     file=sys.stderr,
                 )
-                return 1
-    print(f"ros_tutorials_interfaces generated and installed into {prefix}")
+                return False
+    return True
+
+
+def main() -> int:
+    prefix = sys.prefix
+    env = dict(os.environ)
+    # ament's resource index and CMake's package search both start at the venv prefix.
+    env["AMENT_PREFIX_PATH"] = prefix
+    env["CMAKE_PREFIX_PATH"] = prefix
+    env["PATH"] = f"{Path(prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+    cmake = find_cmake()
+    for source in interface_packages():
+        if not build_package(source, cmake, env):
+            return 1
+        print(f"{source.name} generated and installed into {prefix}")
     return 0
 
 
