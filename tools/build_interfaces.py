@@ -8,10 +8,16 @@ the wheels' loader already looks. The build trees (build/interfaces/PKG) are kep
 changed definition rebuilds only what changed.
 
     .venv/bin/python tools/build_interfaces.py
+    .venv/bin/python tools/build_interfaces.py --sources DIR --prefix DIR --build DIR
+
+The options build another folder of interface packages into another prefix (the test of
+"Your own message" builds a copy there, leaving this environment as it is); the
+dependencies (builtin_interfaces, the generators) still come from this environment.
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import shutil
 import subprocess
@@ -25,9 +31,9 @@ BUILD = ROOT / "build" / "interfaces"
 FIX_WHEEL_TARGETS = SOURCES / "cmake" / "fix_wheel_targets.cmake"
 
 
-def interface_packages() -> list[Path]:
+def interface_packages(sources: Path = SOURCES) -> list[Path]:
     """The interface packages in interfaces/ (folders holding a package.xml), by name."""
-    return sorted(path.parent for path in SOURCES.glob("*/package.xml"))
+    return sorted(path.parent for path in sources.glob("*/package.xml"))
 
 
 def find_cmake() -> str:
@@ -41,10 +47,11 @@ def find_cmake() -> str:
     return found
 
 
-def build_package(source: Path, cmake: str, env: dict[str, str]) -> bool:
+def build_package(
+    source: Path, cmake: str, env: dict[str, str], prefix: Path, build_root: Path = BUILD
+) -> bool:
     """Configure, build and install one interface package; False (log printed) on failure."""
-    prefix = sys.prefix
-    build = BUILD / source.name
+    build = build_root / source.name
     build.mkdir(parents=True, exist_ok=True)
     steps = [
         [
@@ -54,7 +61,7 @@ def build_package(source: Path, cmake: str, env: dict[str, str]) -> bool:
             "-B",
             str(build),
             f"-DCMAKE_INSTALL_PREFIX={prefix}",
-            f"-DCMAKE_PREFIX_PATH={prefix}",
+            f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
             f"-DPython3_EXECUTABLE={sys.executable}",
             f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
             "-DBUILD_TESTING=OFF",
@@ -79,16 +86,23 @@ def build_package(source: Path, cmake: str, env: dict[str, str]) -> bool:
     return True
 
 
-def main() -> int:
-    prefix = sys.prefix
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description="Generate and install interface packages.")
+    parser.add_argument("--sources", type=Path, default=SOURCES, help="default: interfaces/")
+    parser.add_argument("--prefix", type=Path, default=Path(sys.prefix), help="default: the venv")
+    parser.add_argument("--build", type=Path, default=BUILD, help="default: build/interfaces/")
+    options = parser.parse_args(argv)
+    prefix = options.prefix.absolute()
+    # ament's resource index and CMake's package search start at the install prefix, then
+    # look in this environment (the same place unless --prefix says otherwise).
+    search = os.pathsep.join(dict.fromkeys([str(prefix), sys.prefix]))
     env = dict(os.environ)
-    # ament's resource index and CMake's package search both start at the venv prefix.
-    env["AMENT_PREFIX_PATH"] = prefix
-    env["CMAKE_PREFIX_PATH"] = prefix
-    env["PATH"] = f"{Path(prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+    env["AMENT_PREFIX_PATH"] = search
+    env["CMAKE_PREFIX_PATH"] = search
+    env["PATH"] = f"{Path(sys.prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
     cmake = find_cmake()
-    for source in interface_packages():
-        if not build_package(source, cmake, env):
+    for source in interface_packages(options.sources):
+        if not build_package(source, cmake, env, prefix, options.build.absolute()):
             return 1
         print(f"{source.name} generated and installed into {prefix}")
     return 0
