@@ -203,3 +203,19 @@ def test_user_record_publisher_and_subscriber(node_process):
         what="the subscriber's record line",
     )
     assert publisher.interrupt() == 0 and subscriber.interrupt() == 0
+
+
+def test_rospack_finds_packages_for_roscd():
+    result = finished("rospack", "find", "ros_tutorials_topic")
+    assert (
+        result.returncode == 0 and Path(result.stdout.strip(), "launch", "union.launch").is_file()
+    )
+    result = finished("rospack", "find", "ros_tutorials_interfaces")
+    assert Path(result.stdout.strip(), "msg", "Num.msg").is_file()  # the source, to add to
+    assert (
+        finished("rospack", "find", "pub_sub").stdout
+        == finished("rospack", "find", "ros_tutorials_topic").stdout
+    )
+    result = finished("rospack", "find", "nope")
+    assert result.returncode == 1 and "unknown package 'nope'; known packages: " in result.stderr
+    assert "std_msgs " in finished("rospack", "list").stdout
