@@ -25,7 +25,7 @@ exit code: 0 all ended cleanly, 1 a process failed or the launch could not start
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="python -m launcher",
+        prog="roslaunch" if Path(sys.argv[0]).name == "roslaunch" else "python -m launcher",
         description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,

@@ -219,3 +219,10 @@ def test_rospack_finds_packages_for_roscd():
     result = finished("rospack", "find", "nope")
     assert result.returncode == 1 and "unknown package 'nope'; known packages: " in result.stderr
     assert "std_msgs " in finished("rospack", "list").stdout
+
+
+def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
+    assert finished("rosmsg", "show", "pub_sub/Num").stdout == "int64 num\n"  # seed 003
+    assert finished("rosmsg", "show", "beginner_tutorials/AandB").stdout == "float32 a\nfloat32 b\n"
+    result = finished("rossrv", "show", "my_package/AddTwoInts")  # seed 004
+    assert result.stdout == "int64 a\nint64 b\n---\nint64 sum\n"

@@ -47,42 +47,80 @@ def find_cmake() -> str:
     return found
 
 
+def listed_interfaces(build: Path, name: str) -> set[str]:
+    """The interface files the package's last configure listed (its ament index entry)."""
+    index = build / "ament_cmake_index" / "share" / "ament_index" / "resource_index"
+    entry = index / "rosidl_interfaces" / name
+    return set(entry.read_text().split()) if entry.is_file() else set()
+
+
+def installed_files(build: Path) -> set[str]:
+    manifest = build / "install_manifest.txt"
+    return set(manifest.read_text().splitlines()) if manifest.is_file() else set()
+
+
 def build_package(
     source: Path, cmake: str, env: dict[str, str], prefix: Path, build_root: Path = BUILD
 ) -> bool:
-    """Configure, build and install one interface package; False (log printed) on failure."""
+    """Configure, build and install one interface package; False (log printed) on failure.
+
+    A message removed from the package is removed from the prefix too: rosidl does not
+    regenerate for a removal, so the build tree is started afresh, and files the previous
+    install put in the prefix that this one no longer does are deleted.
+    """
     build = build_root / source.name
     build.mkdir(parents=True, exist_ok=True)
-    steps = [
-        [
-            cmake,
-            "-S",
-            str(source),
-            "-B",
-            str(build),
-            f"-DCMAKE_INSTALL_PREFIX={prefix}",
-            f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
-            f"-DPython3_EXECUTABLE={sys.executable}",
-            f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
-            "-DBUILD_TESTING=OFF",
-        ],
-        [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)],
-        [cmake, "--install", str(build)],
+    configure = [
+        cmake,
+        "-S",
+        str(source),
+        "-B",
+        str(build),
+        f"-DCMAKE_INSTALL_PREFIX={prefix}",
+        f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
+        f"-DPython3_EXECUTABLE={sys.executable}",
+        f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
+        "-DBUILD_TESTING=OFF",
     ]
     log_path = build / "build.log"
+    before = listed_interfaces(build, source.name)
+    installed_before = installed_files(build)
     with log_path.open("w") as log:
-        for step in steps:
-            log.write(f"$ {' '.join(step)}\n")
+
+        def step(command: list[str]) -> bool:
+            log.write(f"$ {' '.join(command)}\n")
             log.flush()
-            result = subprocess.run(step, env=env, stdout=log, stderr=subprocess.STDOUT)
-            if result.returncode != 0:
+            if subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT).returncode:
                 print(log_path.read_text()[-4000:], file=sys.stderr)
                 print(
-                    f"build_interfaces: {source.name}: step failed: {' '.join(step[:2])}; "
+                    f"build_interfaces: {source.name}: step failed: {' '.join(command[:2])}; "
                     f"full log in {log_path}",
                     file=sys.stderr,
                 )
                 return False
+            return True
+
+        if not step(configure):
+            return False
+        removed = before - listed_interfaces(build, source.name)
+        if removed:
+            log.write(f"removed {' '.join(sorted(removed))}: building afresh\n")
+            for child in build.iterdir():
+                if child.is_dir():
+                    shutil.rmtree(child)
+                elif child != log_path:
+                    child.unlink()
+            if not step(configure):
+                return False
+        build_step = [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)]
+        if not (step(build_step) and step([cmake, "--install", str(build)])):
+            return False
+    for stale in installed_before - installed_files(build):
+        path = Path(stale)
+        if path.is_relative_to(prefix) and path.is_file():
+            path.unlink()
+            for compiled in path.parent.glob(f"__pycache__/{path.stem}.*.pyc"):
+                compiled.unlink()
     return True
 
 
