@@ -26,7 +26,10 @@ class AandBListener(Node):
 
 def main(args: list[str] | None = None) -> None:
     apply_dds_defaults()  # this project's DDS settings (localhost only), before init
-    rclpy.init(args=args)
+    try:
+        rclpy.init(args=args)
+    except RuntimeError as error:  # a malformed ROS argument, e.g. --ros-args -r bad
+        raise SystemExit(f"error: {str(error).split(', at ')[0]}") from None
     node = AandBListener()
     try:
         rclpy.spin(node)

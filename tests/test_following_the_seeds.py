@@ -226,3 +226,9 @@ def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
     assert finished("rosmsg", "show", "beginner_tutorials/AandB").stdout == "float32 a\nfloat32 b\n"
     result = finished("rossrv", "show", "my_package/AddTwoInts")  # seed 004
     assert result.stdout == "int64 a\nint64 b\n---\nint64 sum\n"
+
+
+def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
+    result = finished("aandb_talker", "--ros-args", "-r", "bad")
+    assert result.returncode == 1 and "Traceback" not in result.stderr
+    assert "error: failed to initialize rcl: Couldn't parse remap rule" in result.stderr
