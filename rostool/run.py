@@ -44,8 +44,8 @@ NO_ROS2_MEANING = {
 def ros1_argument(arg: str) -> list[str] | None:
     """The ROS 2 rule for one ROS 1 `name:=value` argument; None if it is not one."""
     name, colon_equals, value = arg.partition(":=")
-    if not colon_equals or not name or "=" in name:
-        return None
+    if not colon_equals or not name or "=" in name or name.startswith("-"):
+        return None  # not a ROS 1 argument: the program's own
     if name == "__name":
         return ["-r", f"__node:={value}"]
     if name == "__ns":
