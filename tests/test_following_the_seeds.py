@@ -83,6 +83,10 @@ def test_the_seeds_package_names_find_this_projects_executables():
     assert module("ros_tutorials_topic", "topic_publisher") == "ros_tutorials_topic.publisher"
     with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
         packages.command("beginner_tutorials", "nope")
+    # ROS 1's `rosrun rqt_graph rqt_graph`: a tool of this project, named twice.
+    assert packages.command("rostool", "rostool")[2] == "rostool.cli"
+    with pytest.raises(packages.UnknownExecutable, match="unknown package 'rostool'"):
+        packages.command("rostool", "rosrun")
 
 
 # -- rosrun, roslaunch, roscore as processes ---------------------------------------------------
