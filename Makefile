@@ -3,6 +3,7 @@
 #   make test   set up if needed, then ruff and pytest
 #   make setup  only the set-up (venv, install, interface generation)
 #   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
+#   make interfaces  regenerate the interface packages after a .msg/.srv/.action changed
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -11,7 +12,7 @@ INTERFACES := $(VENV)/.interfaces
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
-.PHONY: setup run test lint bench clean
+.PHONY: setup run test lint bench clean interfaces
 
 setup: $(INTERFACES)
 
@@ -24,6 +25,9 @@ $(INSTALLED): pyproject.toml
 $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 	$(PY) tools/build_interfaces.py
 	touch $@
+
+# "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.
+interfaces: $(INTERFACES)
 
 run: setup
 	$(PY) -m launcher union.launch

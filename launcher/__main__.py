@@ -25,7 +25,7 @@ exit code: 0 all ended cleanly, 1 a process failed or the launch could not start
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="python -m launcher",
+        prog="roslaunch" if Path(sys.argv[0]).name == "roslaunch" else "python -m launcher",
         description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -75,14 +75,17 @@ def find_launch_file(names: list[str]) -> Path:
     """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
     if len(names) == 2:
         package, name = names
-        if package not in packages.package_dirs():
+        found = packages.resolve_package(package)  # a seed's name too: my_package
+        if not found:
             known = ", ".join(packages.package_dirs())
             raise LaunchError(f"unknown package {package!r}; known packages: {known}")
-        path = packages.package_dirs()[package] / "launch" / name
-        if not path.is_file():
-            have = ", ".join(p.name for p in packages.launch_files(package)) or "none"
-            raise LaunchError(f"{package} has no launch file {name!r}; it has: {have}")
-        return path
+        for pkg in found:
+            path = packages.package_dirs()[pkg] / "launch" / name
+            if path.is_file():
+                return path
+        have = ", ".join(file.name for pkg in found for file in packages.launch_files(pkg))
+        have = have or "none"
+        raise LaunchError(f"{package} has no launch file {name!r}; it has: {have}")
     if len(names) != 1:
         raise LaunchError(f"expected [PKG] FILE, got: {' '.join(names) or 'nothing'}")
     path = Path(names[0])

@@ -4,7 +4,11 @@ A package is an importable ``ros_tutorials_*`` package. Its executables are foun
 listed by hand, so a lesson merged later is picked up with no change here:
 - each module of the package that defines a top-level ``main()`` (``publisher``), and
 - each console script whose entry point lives in the package (``topic_publisher``).
-Both run as ``python -m <module>``; this is the one place that decides that.
+Both run as ``python -m <module>``; this is the one place that decides that: ``command()``
+turns (package, executable) into a command line for the launcher and for ``rosrun``.
+
+The seeds name their packages differently (``rosrun beginner_tutorials talker``);
+``PACKAGE_ALIASES`` says where their executables are here.
 """
 
 from __future__ import annotations
@@ -18,14 +22,38 @@ from functools import cache
 from pathlib import Path
 
 PACKAGE_PREFIX = "ros_tutorials_"
+DISTRIBUTION = "ros-tutorials"
+
+# The seeds' package names -> this project's package(s) holding their executables (searched
+# in order, the first that has the executable wins).
+_TOPIC_AND_SERVICE = ("ros_tutorials_topic", "ros_tutorials_service")
+PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
+    "beginner_tutorials": _TOPIC_AND_SERVICE,  # seeds 001, 002
+    "roscpp_tutorials": _TOPIC_AND_SERVICE,  # seed 001 (talker, listener, add_two_ints_*)
+    "rospy_tutorials": _TOPIC_AND_SERVICE,
+    "pub_sub": "ros_tutorials_topic",  # seed 003
+    "my_package": (*_TOPIC_AND_SERVICE, "ros_tutorials_parameter"),  # seed 004
+}
+# A seed executable whose name belongs to another lesson here: (seed package, name) -> name.
+EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
+    ("pub_sub", "publisher"): "num_publisher",  # seed 003's publisher ends up sending Num
+    ("pub_sub", "subscriber"): "num_subscriber",
+}
+
+
+class UnknownExecutable(LookupError):
+    """No such package or executable; str() is one line naming the candidates."""
 
 
 @cache
 def package_dirs() -> dict[str, Path]:
     """Every importable tutorial package and its directory."""
     found = {}
-    for module in pkgutil.iter_modules():
-        if module.ispkg and module.name.startswith(PACKAGE_PREFIX):
+    # sys.path, and the folder this project's packages sit in: an editable install reaches
+    # them through an import hook that sys.path does not show (from any other directory).
+    here = str(Path(__file__).resolve().parent.parent)
+    for module in [*pkgutil.iter_modules(), *pkgutil.iter_modules([here])]:
+        if module.ispkg and module.name.startswith(PACKAGE_PREFIX) and module.name not in found:
             spec = importlib.util.find_spec(module.name)
             if spec and spec.submodule_search_locations:
                 found[module.name] = Path(next(iter(spec.submodule_search_locations)))
@@ -52,18 +80,75 @@ def executables(package: str) -> dict[str, list[str]]:
         if not module.ispkg and _has_main(directory / f"{module.name}.py"):
             found[module.name] = [sys.executable, "-m", f"{package}.{module.name}"]
     for script in importlib.metadata.entry_points(group="console_scripts"):
-        module, _, function = script.value.partition(":")
-        if module.startswith(f"{package}."):
-            if function.strip() == "main":
-                found[script.name] = [sys.executable, "-m", module]
-            else:
-                code = f"import sys; from {module} import {function}; sys.exit({function}())"
-                found[script.name] = [sys.executable, "-c", code]
+        if script.value.startswith(f"{package}."):
+            found[script.name] = _script_command(script)
     return dict(sorted(found.items()))
+
+
+def _script_command(script: importlib.metadata.EntryPoint) -> list[str]:
+    module, _, function = script.value.partition(":")
+    function = function.strip()
+    if function == "main":
+        return [sys.executable, "-m", module]
+    code = f"import sys; from {module} import {function}; sys.exit({function}())"
+    return [sys.executable, "-c", code]
 
 
 def runnable_packages() -> list[str]:
     return [package for package in package_dirs() if executables(package)]
+
+
+def resolve_package(name: str) -> tuple[str, ...]:
+    """The packages of this project a package name stands for: itself, or a seed's alias."""
+    if name in package_dirs():
+        return (name,)
+    target = PACKAGE_ALIASES.get(name, ())
+    targets = (target,) if isinstance(target, str) else target
+    return tuple(package for package in targets if package in package_dirs())
+
+
+def known_package_names() -> str:
+    """The package names ``command()`` accepts, as one line."""
+    aliases = [name for name in PACKAGE_ALIASES if resolve_package(name)]
+    return ", ".join(runnable_packages()) + "; the seeds' names: " + ", ".join(aliases)
+
+
+@cache
+def _tools() -> dict[str, list[str]]:
+    """This project's own commands (``rqt_graph``, ...) by console script name."""
+    try:
+        scripts = importlib.metadata.distribution(DISTRIBUTION).entry_points
+    except importlib.metadata.PackageNotFoundError:
+        return {}
+    return {s.name: _script_command(s) for s in scripts if s.group == "console_scripts"}
+
+
+def command(package: str, executable: str) -> list[str]:
+    """The command line that runs EXECUTABLE of PACKAGE, as rosrun and launch files name them.
+
+    A seed's package name is looked up in PACKAGE_ALIASES, and ROS 1's ``rosrun rqt_graph
+    rqt_graph`` (a tool whose package and executable have one name) runs this project's
+    command of that name. Raises UnknownExecutable naming the candidates.
+    """
+    known: dict[str, list[str]] = {}
+    for name in resolve_package(package):
+        for found, line in executables(name).items():
+            known.setdefault(found, line)
+    if not known:
+        if package == executable and executable in _tools():
+            return list(_tools()[executable])
+        raise UnknownExecutable(
+            f"unknown package {package!r}; known packages: {known_package_names()}"
+        )
+    # The book's ROS 1 files sometimes name scripts with their suffix (type="talker.py").
+    name = executable.removesuffix(".py")
+    name = EXECUTABLE_ALIASES.get((package, name), name)
+    if name not in known:
+        have = ", ".join(sorted(known))
+        raise UnknownExecutable(
+            f"package {package!r} has no executable {executable!r}; it has: {have}"
+        )
+    return list(known[name])
 
 
 def launch_files(package: str) -> list[Path]:

@@ -46,18 +46,10 @@ class ProcessSpec:
 
 def command_for(package: str, executable: str, where: str) -> list[str]:
     """The command line that runs one executable of a tutorial package."""
-    known = packages.executables(package)
-    if not known:
-        names = ", ".join(packages.runnable_packages())
-        raise LaunchError(f"{where}: unknown package {package!r}; known packages: {names}")
-    # The book's ROS 1 files sometimes name scripts with their suffix (type="talker.py").
-    command = known.get(executable) or known.get(executable.removesuffix(".py"))
-    if command is None:
-        raise LaunchError(
-            f"{where}: package {package!r} has no executable {executable!r}; "
-            f"it has: {', '.join(known)}"
-        )
-    return list(command)
+    try:
+        return packages.command(package, executable)
+    except packages.UnknownExecutable as error:
+        raise LaunchError(f"{where}: {error}") from None
 
 
 def ros_value(value: Any) -> str:

@@ -137,9 +137,10 @@ def _optenv(words: list[str], _context: Context, _element: Element) -> str:
 
 def package_dir(package: str, element: Element) -> Path:
     found = packages.package_dirs()
-    if package not in found:
+    named = packages.resolve_package(package)  # a seed's name that stands for one package too
+    if len(named) != 1:
         raise element.error(f"unknown package {package!r}; known: {', '.join(found)}")
-    return found[package]
+    return found[named[0]]
 
 
 def _find(words: list[str], _context: Context, element: Element) -> str:

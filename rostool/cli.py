@@ -20,7 +20,7 @@ from rclpy.executors import ExternalShutdownException
 
 from ros_tutorials_common.action_goal import Interrupted
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
-from rostool import action, interface, node, param, service, topic
+from rostool import action, core, interface, node, param, run, service, topic
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 
@@ -49,7 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
     common = common_options()
-    for module in (topic, service, param, node, action, interface):
+    for module in (topic, service, param, node, action, interface, run, core):
         module.register(verbs, common)
     return parser
 

@@ -13,7 +13,12 @@ import os
 import sys
 from pathlib import Path
 
+from launcher.packages import PACKAGE_ALIASES
 from rostool.errors import ToolError
+
+# The seeds define their messages in their own package (pub_sub/Num, my_package/UserRecord);
+# here they all live in one interface package.
+SEED_INTERFACES = "ros_tutorials_interfaces"
 
 KINDS = ("msg", "srv", "action")
 KIND_NAMES = {"msg": "message", "srv": "service", "action": "action"}
@@ -58,6 +63,8 @@ def parse_type_name(name: str, kinds: tuple[str, ...] = KINDS) -> tuple[str, str
         expected = " or ".join(f"'pkg/{kind}/Name'" for kind in kinds)
         raise ToolError(f"invalid type name '{name}': expected {expected}")
     index = interface_index()
+    if package in PACKAGE_ALIASES and package not in index:
+        package = SEED_INTERFACES
     packages = [package] if package else sorted(index)
     matches = [
         (pkg, kind, base)

@@ -8,10 +8,16 @@ the wheels' loader already looks. The build trees (build/interfaces/PKG) are kep
 changed definition rebuilds only what changed.
 
     .venv/bin/python tools/build_interfaces.py
+    .venv/bin/python tools/build_interfaces.py --sources DIR --prefix DIR --build DIR
+
+The options build another folder of interface packages into another prefix (the test of
+"Your own message" builds a copy there, leaving this environment as it is); the
+dependencies (builtin_interfaces, the generators) still come from this environment.
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import shutil
 import subprocess
@@ -25,9 +31,9 @@ BUILD = ROOT / "build" / "interfaces"
 FIX_WHEEL_TARGETS = SOURCES / "cmake" / "fix_wheel_targets.cmake"
 
 
-def interface_packages() -> list[Path]:
+def interface_packages(sources: Path = SOURCES) -> list[Path]:
     """The interface packages in interfaces/ (folders holding a package.xml), by name."""
-    return sorted(path.parent for path in SOURCES.glob("*/package.xml"))
+    return sorted(path.parent for path in sources.glob("*/package.xml"))
 
 
 def find_cmake() -> str:
@@ -41,54 +47,100 @@ def find_cmake() -> str:
     return found
 
 
-def build_package(source: Path, cmake: str, env: dict[str, str]) -> bool:
-    """Configure, build and install one interface package; False (log printed) on failure."""
-    prefix = sys.prefix
-    build = BUILD / source.name
+def listed_interfaces(build: Path, name: str) -> set[str]:
+    """The interface files the package's last configure listed (its ament index entry)."""
+    index = build / "ament_cmake_index" / "share" / "ament_index" / "resource_index"
+    entry = index / "rosidl_interfaces" / name
+    return set(entry.read_text().split()) if entry.is_file() else set()
+
+
+def installed_files(build: Path) -> set[str]:
+    manifest = build / "install_manifest.txt"
+    return set(manifest.read_text().splitlines()) if manifest.is_file() else set()
+
+
+def build_package(
+    source: Path, cmake: str, env: dict[str, str], prefix: Path, build_root: Path = BUILD
+) -> bool:
+    """Configure, build and install one interface package; False (log printed) on failure.
+
+    A message removed from the package is removed from the prefix too: rosidl does not
+    regenerate for a removal, so the build tree is started afresh, and files the previous
+    install put in the prefix that this one no longer does are deleted.
+    """
+    build = build_root / source.name
     build.mkdir(parents=True, exist_ok=True)
-    steps = [
-        [
-            cmake,
-            "-S",
-            str(source),
-            "-B",
-            str(build),
-            f"-DCMAKE_INSTALL_PREFIX={prefix}",
-            f"-DCMAKE_PREFIX_PATH={prefix}",
-            f"-DPython3_EXECUTABLE={sys.executable}",
-            f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
-            "-DBUILD_TESTING=OFF",
-        ],
-        [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)],
-        [cmake, "--install", str(build)],
+    configure = [
+        cmake,
+        "-S",
+        str(source),
+        "-B",
+        str(build),
+        f"-DCMAKE_INSTALL_PREFIX={prefix}",
+        f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
+        f"-DPython3_EXECUTABLE={sys.executable}",
+        f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
+        "-DBUILD_TESTING=OFF",
     ]
     log_path = build / "build.log"
+    before = listed_interfaces(build, source.name)
+    installed_before = installed_files(build)
     with log_path.open("w") as log:
-        for step in steps:
-            log.write(f"$ {' '.join(step)}\n")
+
+        def step(command: list[str]) -> bool:
+            log.write(f"$ {' '.join(command)}\n")
             log.flush()
-            result = subprocess.run(step, env=env, stdout=log, stderr=subprocess.STDOUT)
-            if result.returncode != 0:
+            if subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT).returncode:
                 print(log_path.read_text()[-4000:], file=sys.stderr)
                 print(
-                    f"build_interfaces: {source.name}: step failed: {' '.join(step[:2])}; "
+                    f"build_interfaces: {source.name}: step failed: {' '.join(command[:2])}; "
                     f"full log in {log_path}",
                     file=sys.stderr,
                 )
                 return False
+            return True
+
+        if not step(configure):
+            return False
+        removed = before - listed_interfaces(build, source.name)
+        if removed:
+            log.write(f"removed {' '.join(sorted(removed))}: building afresh\n")
+            for child in build.iterdir():
+                if child.is_dir():
+                    shutil.rmtree(child)
+                elif child != log_path:
+                    child.unlink()
+            if not step(configure):
+                return False
+        build_step = [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)]
+        if not (step(build_step) and step([cmake, "--install", str(build)])):
+            return False
+    for stale in installed_before - installed_files(build):
+        path = Path(stale)
+        if path.is_relative_to(prefix) and path.is_file():
+            path.unlink()
+            for compiled in path.parent.glob(f"__pycache__/{path.stem}.*.pyc"):
+                compiled.unlink()
     return True
 
 
-def main() -> int:
-    prefix = sys.prefix
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description="Generate and install interface packages.")
+    parser.add_argument("--sources", type=Path, default=SOURCES, help="default: interfaces/")
+    parser.add_argument("--prefix", type=Path, default=Path(sys.prefix), help="default: the venv")
+    parser.add_argument("--build", type=Path, default=BUILD, help="default: build/interfaces/")
+    options = parser.parse_args(argv)
+    prefix = options.prefix.absolute()
+    # ament's resource index and CMake's package search start at the install prefix, then
+    # look in this environment (the same place unless --prefix says otherwise).
+    search = os.pathsep.join(dict.fromkeys([str(prefix), sys.prefix]))
     env = dict(os.environ)
-    # ament's resource index and CMake's package search both start at the venv prefix.
-    env["AMENT_PREFIX_PATH"] = prefix
-    env["CMAKE_PREFIX_PATH"] = prefix
-    env["PATH"] = f"{Path(prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+    env["AMENT_PREFIX_PATH"] = search
+    env["CMAKE_PREFIX_PATH"] = search
+    env["PATH"] = f"{Path(sys.prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
     cmake = find_cmake()
-    for source in interface_packages():
-        if not build_package(source, cmake, env):
+    for source in interface_packages(options.sources):
+        if not build_package(source, cmake, env, prefix, options.build.absolute()):
             return 1
         print(f"{source.name} generated and installed into {prefix}")
     return 0

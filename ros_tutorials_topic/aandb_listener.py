@@ -1,0 +1,43 @@
+"""The AandB listener of seed 002: hears the AandB talker.
+
+Subscribes to ``chatter`` (``ros_tutorials_interfaces/msg/AandB``) and logs each message as the
+seed's listener.cpp does: ``I heard: msg:a 1.000000, msg:b 2.000000``. Node ``listener``.
+
+    aandb_listener      (or: rosrun beginner_tutorials aandb_listener)
+"""
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from ros_tutorials_interfaces.msg import AandB
+
+from ros_tutorials_common.dds import apply_dds_defaults
+
+
+class AandBListener(Node):
+    def __init__(self) -> None:
+        super().__init__("listener", enable_logger_service=True)
+        # chatter_callback runs for every AandB message on chatter (queue of 1000).
+        self.subscription = self.create_subscription(AandB, "chatter", self.chatter_callback, 1000)
+
+    def chatter_callback(self, msg: AandB) -> None:
+        self.get_logger().info(f"I heard: msg:a {msg.a:f}, msg:b {msg.b:f}")
+
+
+def main(args: list[str] | None = None) -> None:
+    apply_dds_defaults()  # this project's DDS settings (localhost only), before init
+    try:
+        rclpy.init(args=args)
+    except RuntimeError as error:  # a malformed ROS argument, e.g. --ros-args -r bad
+        raise SystemExit(f"error: {str(error).split(', at ')[0]}") from None
+    node = AandBListener()
+    try:
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or shutdown: a normal end
+    node.destroy_node()
+    rclpy.try_shutdown()
+
+
+if __name__ == "__main__":
+    main()

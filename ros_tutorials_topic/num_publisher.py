@@ -1,0 +1,48 @@
+"""The Num publisher of seed 003 (package pub_sub, executable publisher): a custom message.
+
+Publishes ``ros_tutorials_interfaces/msg/Num`` (``int64 num``) on ``publisher`` ten times a
+second, counting 1, 2, ... 999, 0, 1, ... as the seed's pub.cpp (``i = (i + 1) % 1000``).
+Node ``pub``. Like the seed's, it logs nothing: watch it with ``rostopic echo /publisher``.
+
+    num_publisher       (or: rosrun pub_sub publisher)
+"""
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from ros_tutorials_interfaces.msg import Num
+
+from ros_tutorials_common.dds import apply_dds_defaults
+
+
+class NumPublisher(Node):
+    def __init__(self) -> None:
+        super().__init__("pub", enable_logger_service=True)
+        self.publisher = self.create_publisher(Num, "publisher", 1000)
+        self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
+        self.i = 0
+
+    def publish_message(self) -> None:
+        self.i = (self.i + 1) % 1000
+        msg = Num()
+        msg.num = self.i
+        self.publisher.publish(msg)
+
+
+def main(args: list[str] | None = None) -> None:
+    apply_dds_defaults()  # this project's DDS settings (localhost only), before init
+    try:
+        rclpy.init(args=args)
+    except RuntimeError as error:  # a malformed ROS argument, e.g. --ros-args -r bad
+        raise SystemExit(f"error: {str(error).split(', at ')[0]}") from None
+    node = NumPublisher()
+    try:
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or shutdown: a normal end
+    node.destroy_node()
+    rclpy.try_shutdown()
+
+
+if __name__ == "__main__":
+    main()

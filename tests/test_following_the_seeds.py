@@ -1,0 +1,238 @@
+"""Following the seeds: rosrun, roscore, roslaunch as console scripts, and the seeds' own
+nodes (AandB, Num, UserRecord) as real processes checked by their log lines.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+from helpers import TIMEOUT
+
+from launcher import packages
+from rostool.errors import ToolError
+from rostool.run import translate_arguments
+
+BIN = Path(sys.executable).parent
+
+
+def script(name: str) -> str:
+    """A console script of this project, as the learner types it (run by this interpreter)."""
+    return str(BIN / name)
+
+
+def finished(*args: str) -> subprocess.CompletedProcess:
+    """Run a console script to its end, from a folder other than the project's."""
+    try:
+        return subprocess.run(
+            [sys.executable, script(args[0]), *args[1:]],
+            capture_output=True,
+            text=True,
+            timeout=TIMEOUT,
+            cwd=tempfile.gettempdir(),
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
+
+
+def count(lines: list[str], text: str) -> int:
+    return sum(text in line for line in lines)
+
+
+# -- rosrun: the arguments and the package table, no processes ------------------------------
+
+
+def test_ros1_arguments_become_one_ros_args_block():
+    assert translate_arguments(["2", "3", "__name:=adder", "__ns:=/robot1", "a:=b"]) == [
+        "2", "3", "--ros-args", "-r", "__node:=adder", "-r", "__ns:=/robot1", "-r", "a:=b",
+    ]  # fmt: skip
+    assert translate_arguments(["_talker_str:=Goodbye", "_nested/value:=3"]) == [
+        "--ros-args", "-p", "talker_str:=Goodbye", "-p", "nested.value:=3",
+    ]  # fmt: skip
+    # ROS 2 arguments pass unchanged; ROS 1 forms after an open block join it.
+    assert translate_arguments(["--ros-args", "-p", "x:=1", "--", "5", "__name:=n"]) == [
+        "--ros-args", "-p", "x:=1", "--", "5", "--ros-args", "-r", "__node:=n",
+    ]  # fmt: skip
+    assert translate_arguments(["--ros-args", "-r", "a:=b"]) == ["--ros-args", "-r", "a:=b"]
+    assert translate_arguments(["-5", "3", "--timeout", "2"]) == ["-5", "3", "--timeout", "2"]
+    with pytest.raises(ToolError, match="ROS 2 has no master"):
+        translate_arguments(["__master:=http://localhost:11311"])
+
+
+def test_the_seeds_package_names_find_this_projects_executables():
+    def module(package: str, executable: str) -> str:
+        return packages.command(package, executable)[2]
+
+    assert module("beginner_tutorials", "talker") == "ros_tutorials_topic.talker"
+    assert module("beginner_tutorials", "add_two_ints_server") == (
+        "ros_tutorials_service.add_two_ints_server"
+    )
+    assert module("beginner_tutorials", "aandb_listener") == "ros_tutorials_topic.aandb_listener"
+    assert module("rospy_tutorials", "add_two_ints_client") == (
+        "ros_tutorials_service.add_two_ints_client"
+    )
+    # Seed 003's pub_sub publisher ends up sending Num: its name here is num_publisher.
+    assert module("pub_sub", "publisher") == "ros_tutorials_topic.num_publisher"
+    assert module("pub_sub", "subscriber") == "ros_tutorials_topic.num_subscriber"
+    assert module("my_package", "talker.py") == "ros_tutorials_topic.talker"
+    assert module("my_package", "dynamics_talker.py") == "ros_tutorials_parameter.talker"
+    assert module("ros_tutorials_topic", "topic_publisher") == "ros_tutorials_topic.publisher"
+    with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
+        packages.command("beginner_tutorials", "nope")
+    # ROS 1's `rosrun rqt_graph rqt_graph`: a tool of this project, named twice.
+    assert packages.command("rostool", "rostool")[2] == "rostool.cli"
+    with pytest.raises(packages.UnknownExecutable, match="unknown package 'rostool'"):
+        packages.command("rostool", "rosrun")
+
+
+# -- rosrun, roslaunch, roscore as processes ---------------------------------------------------
+
+
+def test_rosrun_unknown_names_say_the_candidates_in_one_line():
+    for args, expected in [
+        (("nope", "talker"), "unknown package 'nope'; known packages: ros_tutorials_action"),
+        (("ros_tutorials_topic", "nope"), "has no executable 'nope'; it has: "),
+        (("beginner_tutorials",), "beginner_tutorials has: aandb_listener, aandb_talker"),
+    ]:
+        result = finished("rosrun", *args)
+        assert result.returncode == 1, result
+        lines = result.stderr.strip().splitlines()
+        assert len(lines) == 1 and expected in lines[0], result.stderr
+    assert "beginner_tutorials" in finished("rosrun", "nope", "x").stderr
+    result = finished("rosrun", "ros_tutorials_topic", "talker", "__master:=http://x:11311")
+    assert result.returncode == 1 and "ROS 2 has no master" in result.stderr
+    assert "Traceback" not in result.stderr
+    assert finished("rosrun", "-h").returncode == 0
+    assert finished("rostool", "run", "nope", "x").returncode == 1
+
+
+def test_rosrun_runs_the_seeds_talker_and_listener_with_ros1_arguments(node_process):
+    listener = node_process(script("rosrun"), "rospy_tutorials", "listener", "chatter:=other")
+    talker = node_process(
+        script("rosrun"), "beginner_tutorials", "talker",
+        "__name:=my_talker", "__ns:=/robot1", "chatter:=/other",
+    )  # fmt: skip
+    talker.wait_for_output(
+        lambda lines: count(lines, "[robot1.my_talker]: hello world") >= 1,
+        what="the talker named robot1/my_talker",
+    )
+    listener.wait_for_output(
+        lambda lines: count(lines, "[listener]: I heard: [hello world") >= 2,
+        what="the listener hearing the remapped talker",
+    )
+    assert talker.interrupt() == 0  # the node's own exit status: rosrun became the node
+    assert listener.interrupt() == 0
+
+
+def test_rosrun_private_parameter_and_rostool_run(node_process):
+    talker = node_process(
+        script("rostool"), "run", "my_package", "dynamics_talker.py", "_talker_str:=Goodbye"
+    )
+    talker.wait_for_output(
+        lambda lines: count(lines, "[dynamics_talker]: Goodbye") >= 2,
+        what="the talker saying the private parameter's text",
+    )
+    assert talker.interrupt() == 0
+
+
+def test_roslaunch_is_the_launcher_and_finds_the_seeds_launch_files():
+    result = finished("roslaunch", "my_package", "talker.launch", "--print")
+    assert result.returncode == 0, result.stderr
+    assert "ros_tutorials_topic.talker" in result.stdout and "/talker" in result.stdout
+    result = finished("roslaunch", "ros_tutorials_topic", "union.launch", "--print")
+    assert result.returncode == 0 and result.stdout.count("ros_tutorials_topic.publisher") == 2
+    result = finished("roslaunch", "my_package", "nope.launch")
+    assert result.returncode == 1 and "my_package has no launch file 'nope.launch'" in (
+        result.stderr
+    )
+
+
+@pytest.mark.parametrize("command", [("roscore",), ("rostool", "core")])
+def test_roscore_explains_discovery_and_waits_for_ctrl_c(node_process, command):
+    core = node_process(script(command[0]), *command[1:])
+    lines = core.wait_for_output(
+        lambda lines: any("Ctrl-C" in line for line in lines), what="the explanation"
+    )
+    text = "\n".join(lines)
+    assert "ROS 2 has no master" in text
+    assert re.search(r"ROS_DOMAIN_ID=\d+: only nodes with the same domain id", text)
+    assert "ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST: only nodes on this machine" in text
+    assert core.process.poll() is None, "roscore must wait until Ctrl-C"
+    assert core.interrupt() == 0
+
+
+# -- the seeds' own nodes ------------------------------------------------------------------------
+
+
+def test_aandb_talker_and_listener_log_the_seed_lines(node_process):
+    listener = node_process("-m", "ros_tutorials_topic.aandb_listener")
+    talker = node_process(script("rosrun"), "beginner_tutorials", "aandb_talker")
+    talker.wait_for_output(
+        lambda lines: count(lines, "[talker]: msg a: 1.000000, msg b:2.000000") >= 1,
+        what="the AandB talker's line",
+    )
+    listener.wait_for_output(
+        lambda lines: count(lines, "[listener]: I heard: msg:a 1.000000, msg:b 2.000000") >= 2,
+        what="the AandB listener's line",
+    )
+    assert talker.interrupt() == 0 and listener.interrupt() == 0
+
+
+def test_num_publisher_and_subscriber_count_as_the_seed(node_process):
+    subscriber = node_process(script("num_subscriber"))
+    publisher = node_process(script("rosrun"), "pub_sub", "publisher")
+    lines = subscriber.wait_for_output(
+        lambda lines: count(lines, "[sub]: I heard: [") >= 3, what="three numbers"
+    )
+    heard = [int(m.group(1)) for line in lines if (m := re.search(r"I heard: \[(\d+)\]", line))]
+    assert heard == list(range(heard[0], heard[0] + len(heard))) and heard[0] >= 1
+    assert publisher.interrupt() == 0 and subscriber.interrupt() == 0
+
+
+def test_user_record_publisher_and_subscriber(node_process):
+    subscriber = node_process(script("user_record_subscriber"))
+    publisher = node_process(script("user_record_publisher"))
+    publisher.wait_for_output(
+        lambda lines: count(lines, "first_name: Ada, last_name: Lovelace, age: 36, score: ") >= 1,
+        what="the publisher's record line",
+    )
+    subscriber.wait_for_output(
+        lambda lines: (
+            count(lines, "[user_record_subscriber]: Receive : Ada Lovelace, age 36, ") >= 2
+        ),
+        what="the subscriber's record line",
+    )
+    assert publisher.interrupt() == 0 and subscriber.interrupt() == 0
+
+
+def test_rospack_finds_packages_for_roscd():
+    result = finished("rospack", "find", "ros_tutorials_topic")
+    assert (
+        result.returncode == 0 and Path(result.stdout.strip(), "launch", "union.launch").is_file()
+    )
+    result = finished("rospack", "find", "ros_tutorials_interfaces")
+    assert Path(result.stdout.strip(), "msg", "Num.msg").is_file()  # the source, to add to
+    assert (
+        finished("rospack", "find", "pub_sub").stdout
+        == finished("rospack", "find", "ros_tutorials_topic").stdout
+    )
+    result = finished("rospack", "find", "nope")
+    assert result.returncode == 1 and "unknown package 'nope'; known packages: " in result.stderr
+    assert "std_msgs " in finished("rospack", "list").stdout
+
+
+def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
+    assert finished("rosmsg", "show", "pub_sub/Num").stdout == "int64 num\n"  # seed 003
+    assert finished("rosmsg", "show", "beginner_tutorials/AandB").stdout == "float32 a\nfloat32 b\n"
+    result = finished("rossrv", "show", "my_package/AddTwoInts")  # seed 004
+    assert result.stdout == "int64 a\nint64 b\n---\nint64 sum\n"
+
+
+def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
+    result = finished("aandb_talker", "--ros-args", "-r", "bad")
+    assert result.returncode == 1 and "Traceback" not in result.stderr
+    assert "error: failed to initialize rcl: Couldn't parse remap rule" in result.stderr
