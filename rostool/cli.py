@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros_tutorials_common.action_goal import Interrupted
+from rostool.action_goal import Interrupted
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
 from rostool import action, interface, node, param, service, topic
 from rostool.errors import ToolError

@@ -14,6 +14,7 @@ from action_msgs.msg import GoalStatus, GoalStatusArray
 from helpers import spin_until
 from rclpy.action import ActionClient
 from rclpy.action.client import ClientGoalHandle
+from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import qos_profile_action_status_default
@@ -24,7 +25,6 @@ from ros_tutorials_action.server import (
     INT32_MAX,
     MAX_ORDER,
     FibonacciActionServer,
-    make_executor,
 )
 
 FAST = 0.01  # seconds per step, for goals that should finish
@@ -49,7 +49,7 @@ def start_server(context) -> Iterator[Callable[[float], FibonacciActionServer]]:
         server = FibonacciActionServer(
             context=context, parameter_overrides=[Parameter("step_period", value=step_period)]
         )
-        executor = make_executor(context)
+        executor = MultiThreadedExecutor(num_threads=4, context=context)  # as the server's main
         executor.add_node(server)
         stop = threading.Event()
 
