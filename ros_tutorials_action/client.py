@@ -1,16 +1,15 @@
 """Action client (book: ros_tutorials_action/action_client).
 
-Sends one Fibonacci goal (order 20 unless given, as in the book) to ``ros_tutorial_action``,
-logs each feedback, then the result and the goal's final state.
+Sends one Fibonacci goal to ``ros_tutorial_action``, logs each feedback, the result and the
+final state. Exit status: 0 succeeded; 1 no server within --timeout, rejected, aborted,
+canceled, server gone, or no result within --result-timeout (the goal is then canceled);
+2 bad arguments; 130 Ctrl-C, after canceling the goal (waiting up to 5 s for each answer).
 
     action_client [ORDER]   (or: python -m ros_tutorials_action.client [ORDER])
-
-Exit status: 0 the goal succeeded; 1 no server within --timeout, goal rejected, aborted or
-canceled, server gone, or no result within --result-timeout (the goal is then canceled);
-2 bad arguments; 130 Ctrl-C, after canceling the goal on the server (each wait up to 5 s).
 """
 
 import argparse
+import contextlib
 import sys
 import time
 
@@ -25,15 +24,14 @@ from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_
 from ros_tutorials_common.node_main import ros_args, user_args
 
 ACTION_NAME = "ros_tutorial_action"
-CANCEL_TIMEOUT = 5.0
-STATES = {GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED", GoalStatus.STATUS_CANCELED: "CANCELED",
-          GoalStatus.STATUS_ABORTED: "ABORTED"}  # fmt: skip
+STATES = {GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED", GoalStatus.STATUS_CANCELED: "CANCELED"}
 
 
 class FibonacciActionClient(Node):
     def __init__(self) -> None:
         super().__init__("action_client", enable_logger_service=True)
         self.client = ActionClient(self, Fibonacci, ACTION_NAME)  # create the action client
+        self.goal_future = None
 
     def on_feedback(self, msg: Fibonacci.Impl.FeedbackMessage) -> None:  # feedback callback
         self.get_logger().info(f"Received feedback: {list(msg.feedback.sequence)}")
@@ -46,50 +44,47 @@ class FibonacciActionClient(Node):
             rclpy.spin_once(self, timeout_sec=0.1)
         return future.done()
 
-    def report(self, result_future) -> int:
-        response = result_future.result()
-        self.get_logger().info(f"Result: {list(response.result.sequence)}")
-        self.get_logger().info(f"Action finished: {STATES.get(response.status, response.status)}")
-        return 0 if response.status == GoalStatus.STATUS_SUCCEEDED else 1
+    def finish(self, result_future) -> int:
+        status, result = result_future.result().status, result_future.result().result
+        self.get_logger().info(f"Result: {list(result.sequence)}")
+        self.get_logger().info(f"Action finished: {STATES.get(status, 'ABORTED')}")
+        return 0 if status == GoalStatus.STATUS_SUCCEEDED else 1
 
-    def cancel(self, goal_future) -> None:
-        """Cancel the goal, if the server accepted it, and report how it ended."""
-        if self.wait(goal_future, CANCEL_TIMEOUT) and goal_future.result().accepted:
-            self.get_logger().info("Canceling goal")
-            goal = goal_future.result()
-            canceled, result = goal.cancel_goal_async(), goal.get_result_async()
-            if self.wait(canceled, CANCEL_TIMEOUT) and self.wait(result, CANCEL_TIMEOUT):
-                self.report(result)
-
-    def run(self, order: int, timeout: float, result_timeout: float) -> int:
+    def send_goal(self, order: int, timeout: float, result_timeout: float) -> int:
         log = self.get_logger()
         log.info("Waiting for action server to start.")
         if not self.client.wait_for_server(timeout_sec=timeout):  # wait for the server
             log.error(f"Action server {ACTION_NAME} not available after {timeout:g} s")
             return 1
         log.info("Action server started, sending goal.")
-        goal_future = self.client.send_goal_async(  # send the goal
+        self.goal_future = self.client.send_goal_async(  # send the goal
             Fibonacci.Goal(order=order), feedback_callback=self.on_feedback
         )
-        try:
-            if not self.wait(goal_future, timeout):
-                log.error(f"No answer from action server {ACTION_NAME} to the goal")
-                return 1
-            if not goal_future.result().accepted:
-                log.error(f"Goal of order {order} rejected (the server's log says why)")
-                return 1
-            result_future = goal_future.result().get_result_async()  # ask for the result
-            if self.wait(result_future, result_timeout):  # and wait for it
-                return self.report(result_future)
-            if not self.client.server_is_ready():
-                log.error(f"Action server {ACTION_NAME} went away before the goal finished")
-                return 1
-            log.warning("Action did not finish before the time out.")
-            self.cancel(goal_future)
+        if not self.wait(self.goal_future, timeout):
+            log.error(f"No answer from action server {ACTION_NAME} to the goal")
             return 1
-        except KeyboardInterrupt:  # Ctrl-C: cancel the goal on the server
-            self.cancel(goal_future)
-            return EXIT_INTERRUPTED
+        if not self.goal_future.result().accepted:
+            log.error(f"Goal of order {order} rejected (the server's log says why)")
+            return 1
+        result_future = self.goal_future.result().get_result_async()  # ask for the result
+        if self.wait(result_future, result_timeout):  # and wait for it
+            return self.finish(result_future)
+        if not self.client.server_is_ready():
+            log.error(f"Action server {ACTION_NAME} went away before the goal finished")
+            return 1
+        log.warning("Action did not finish before the time out.")
+        self.cancel()
+        return 1
+
+    def cancel(self, timeout: float = 5.0) -> None:
+        """Cancel the goal sent, if the server accepted it, and log how it ended."""
+        if self.goal_future and self.wait(self.goal_future, timeout):
+            goal = self.goal_future.result()
+            if goal.accepted:
+                self.get_logger().info("Canceling goal")
+                canceled, result = goal.cancel_goal_async(), goal.get_result_async()
+                if self.wait(canceled, timeout) and self.wait(result, timeout):
+                    self.finish(result)
 
 
 def parse_args(args: list[str]) -> argparse.Namespace:
@@ -109,8 +104,10 @@ def main(args=None) -> int:
     rclpy.init(args=ros_args(args), signal_handler_options=SignalHandlerOptions.NO)
     node = FibonacciActionClient()  # create the node
     try:
-        return node.run(options.order, options.timeout, options.result_timeout)
-    except KeyboardInterrupt:  # a second Ctrl-C while canceling
+        return node.send_goal(options.order, options.timeout, options.result_timeout)
+    except KeyboardInterrupt:
+        with contextlib.suppress(KeyboardInterrupt):  # a second Ctrl-C: leave at once
+            node.cancel()
         return EXIT_INTERRUPTED
     finally:
         node.destroy_node()
