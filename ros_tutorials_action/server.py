@@ -149,8 +149,8 @@ def main(args=None) -> None:
         executor.add_node(node)
         while True:  # spin: wait for goals and execute them, until Ctrl-C ...
             executor.spin_once(timeout_sec=0.1)  # ... which Python sees between two waits
-    except KeyboardInterrupt:
-        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    except KeyboardInterrupt:  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second one must not cut the stop short
     finally:
         if node is not None:
             node.destroy_node()  # stops the running goal first
