@@ -3,24 +3,25 @@
     python -m benchmarks.service_worker server          a bare rclpy SrvTutorial server
     python -m benchmarks.service_worker client {tutorial,bare} COUNT
 
-The client prints one JSON line of round-trip times. "tutorial" calls through the tutorial's
-ServiceClient node and its report() (the book's two log lines); "bare" through a plain
-rclpy client. Both send each request and spin_once until its answer (REFERENCE section 3:
-spin_until_future_complete costs milliseconds per call, which a loop must not pay).
+The client prints one JSON line of round-trip times. "tutorial" logs the book's two lines per
+call, as the tutorial's service_client does; "bare" logs nothing. Both send each request and
+spin_once until its answer (REFERENCE section 3: spin_until_future_complete costs
+milliseconds per call, which a loop must not pay).
 ROS arguments pass through (e.g. ``--ros-args --log-level warn``).
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import time
 
 import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common.node_main import init, run_node, user_args
-from ros_tutorials_service.client import ServiceClient
+from ros_tutorials_common.node_main import init, user_args
 
 SERVICE = "ros_tutorial_srv"
 
@@ -36,15 +37,13 @@ class BareServer(Node):
 
 
 def round_trips(kind: str, count: int) -> list[float]:
-    if kind == "tutorial":
-        node = ServiceClient()
-        report = node.report
-    else:
-        node = Node("bare_client")
-        node.client = node.create_client(SrvTutorial, SERVICE)
+    node = Node(f"{kind}_client")
+    node.client = node.create_client(SrvTutorial, SERVICE)
 
-        def report(request, response) -> None:
-            pass
+    def report(request, response) -> None:
+        if kind == "tutorial":  # the two log lines of ros_tutorials_service/client.py
+            node.get_logger().info(f"send srv, srv.Request.a and b: {request.a}, {request.b}")
+            node.get_logger().info(f"receive srv, srv.Response.result: {response.result}")
 
     while not node.client.service_is_ready():
         rclpy.spin_once(node, timeout_sec=0.05)
@@ -63,9 +62,12 @@ def round_trips(kind: str, count: int) -> list[float]:
 
 def main() -> int:
     verb, *rest = user_args()
-    if verb == "server":
-        return run_node(BareServer)
     init()
+    if verb == "server":
+        with contextlib.suppress(KeyboardInterrupt, ExternalShutdownException):
+            rclpy.spin(BareServer())
+        rclpy.try_shutdown()
+        return 0
     print(json.dumps({"round_trip": round_trips(rest[0], int(rest[1]))}), flush=True)
     rclpy.try_shutdown()
     return 0

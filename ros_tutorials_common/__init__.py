@@ -1,9 +1,10 @@
-"""Plumbing shared by every tutorial node and tool.
+"""What the tutorial nodes and tools share that is not a lesson (each lesson shows its own
+steps: rclpy.init, the node, spin, shutdown, in its own file).
 
-- ``node_main``: how an executable starts, spins and stops (``run_node``, ``init``, ``user_args``)
 - ``dds``: the one place that sets this project's DDS defaults
+- ``node_main``: the command line before rclpy.init (``ros_args``: DDS defaults and checked
+  ROS arguments; ``user_args``: the program's own arguments; ``init`` for the tools)
 - ``cli``: argument types and exit codes shared by the command-line programs
-- ``service_client``: how the one-shot service clients call once and report
 - ``int64``: keeping the servers' results inside int64
 
 Nothing is imported here, so a light user (the launcher needs only ``dds``) does not pay for

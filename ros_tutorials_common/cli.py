@@ -9,9 +9,16 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 from collections.abc import Callable
 
 EXIT_INTERRUPTED = 130  # what shells report for a command ended by Ctrl-C (128 + SIGINT)
+# The longest wait a command accepts: rcl counts timeouts in int64 nanoseconds (292 years),
+# Python's thread waits in less; a million seconds (11.6 days) is far below both.
+MAX_SECONDS = 1e6
+# What the book's C++ clients read with atoll: ASCII digits with an optional sign. Python's int()
+# would also take "1_000", " 5 " and Arabic-Indic digits; the clients refuse those.
+_INTEGER = re.compile(r"[+-]?[0-9]+")
 
 
 def signed_int(bits: int) -> Callable[[str], int]:
@@ -19,10 +26,9 @@ def signed_int(bits: int) -> Callable[[str], int]:
     low, high = -(2 ** (bits - 1)), 2 ** (bits - 1) - 1
 
     def parse(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+        if not _INTEGER.fullmatch(text):
+            raise argparse.ArgumentTypeError(f"{text!r} is not an integer")
+        value = int(text)
         if not low <= value <= high:
             raise argparse.ArgumentTypeError(
                 f"{text} does not fit in a {bits}-bit integer ({low} .. {high})"
@@ -34,8 +40,13 @@ def signed_int(bits: int) -> Callable[[str], int]:
 
 
 def positive_seconds(text: str) -> float:
-    """An argparse type for a duration: a finite number of seconds above 0."""
-    return _positive_number(text, "a positive number of seconds")
+    """An argparse type for a duration: a number of seconds above 0, at most MAX_SECONDS."""
+    value = _positive_number(text, "a positive number of seconds")
+    if value > MAX_SECONDS:
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is not a positive number of seconds up to {MAX_SECONDS:.0f}"
+        )
+    return value
 
 
 def positive_rate(text: str) -> float:

@@ -14,13 +14,16 @@ uses the new operator:
 import operator
 from collections.abc import Callable
 
+import rclpy
 from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import ParameterException
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from ros_tutorials_interfaces.srv import SrvTutorial
 
 from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.node_main import run_node
+from ros_tutorials_common.node_main import ros_args
 
 PLUS, MINUS, MULTIPLICATION, DIVISION = 1, 2, 3, 4
 
@@ -42,7 +45,7 @@ OPERATORS: dict[int, tuple[str, str, Callable[[int, int], int]]] = {
 
 class ServiceServerWithParameter(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("service_server", **node_kwargs)
+        super().__init__("service_server", enable_logger_service=True, **node_kwargs)
         # The descriptor documents the parameter (ros2 param describe shows it) and makes
         # rclpy refuse other types and values outside 1..4, at start and at run time.
         self.declare_parameter(
@@ -96,9 +99,18 @@ class ServiceServerWithParameter(Node):
         return response
 
 
-def main() -> int:
-    return run_node(ServiceServerWithParameter)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args -p ...; DDS defaults)
+    try:
+        node = ServiceServerWithParameter()  # create the node: declares the parameter
+        rclpy.spin(node)  # answer requests until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    except ParameterException as error:  # e.g. -p calculation_method:=7 at start
+        raise SystemExit(f"error: {error}") from None
+    finally:
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

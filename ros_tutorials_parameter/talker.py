@@ -7,34 +7,42 @@ Publishes std_msgs/String on ``chatter`` ten times a second; the text is the par
     dynamics_talker --ros-args -p talker_str:=Goodbye
 """
 
+import rclpy
 from rcl_interfaces.msg import ParameterDescriptor
+from rclpy.exceptions import ParameterException
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common.node_main import run_node
-
-QUEUE_SIZE = 10
-RATE_HZ = 10.0
+from ros_tutorials_common.node_main import ros_args
 
 
 class DynamicsTalker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("dynamics_talker", **node_kwargs)
+        super().__init__("dynamics_talker", enable_logger_service=True, **node_kwargs)
         self.declare_parameter(
             "talker_str", "hello world", ParameterDescriptor(description="the text to publish")
         )
-        self.publisher = self.create_publisher(String, "chatter", QUEUE_SIZE)
-        self.timer = self.create_timer(1.0 / RATE_HZ, self.publish_message)
+        self.publisher = self.create_publisher(String, "chatter", 10)  # queue_size=10
+        self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
 
     def publish_message(self) -> None:
-        msg = String(data=self.get_parameter("talker_str").value)
+        msg = String(data=self.get_parameter("talker_str").value)  # read on every message
         self.get_logger().info(msg.data)
         self.publisher.publish(msg)
 
 
-def main() -> int:
-    return run_node(DynamicsTalker)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args -p ...; DDS defaults)
+    try:
+        rclpy.spin(DynamicsTalker())  # create the node and run its timer until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    except ParameterException as error:  # e.g. -p talker_str:=42 (not a string) at start
+        raise SystemExit(f"error: {error}") from None
+    finally:
+        rclpy.try_shutdown()
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

@@ -1,30 +1,36 @@
-"""Listener (the classic roscpp/rospy tutorial of seeds 001, 003, 004).
+"""Listener (the classic rospy/roscpp tutorial of seeds 001, 003, 004).
 
 Subscribes to ``chatter`` (std_msgs/String) and logs "I heard: [...]" for each message.
 
-    python -m ros_tutorials_topic.listener       (or: listener)
+    listener               (or: python -m ros_tutorials_topic.listener)
 """
 
+import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common.node_main import run_node
-
-QUEUE_SIZE = 1000
+from ros_tutorials_common.node_main import ros_args
 
 
 class Listener(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("listener", **node_kwargs)
-        self.subscription = self.create_subscription(String, "chatter", self.on_message, QUEUE_SIZE)
+        super().__init__("listener", enable_logger_service=True, **node_kwargs)
+        self.subscription = self.create_subscription(String, "chatter", self.on_message, 1000)
 
     def on_message(self, msg: String) -> None:
         self.get_logger().info(f"I heard: [{msg.data}]")
 
 
-def main() -> int:
-    return run_node(Listener)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+    try:
+        rclpy.spin(Listener())  # create the node and call on_message per message, until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    finally:
+        rclpy.try_shutdown()
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

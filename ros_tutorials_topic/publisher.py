@@ -3,40 +3,50 @@
 Publishes ros_tutorials_interfaces/MsgTutorial on ``ros_tutorial_msg`` ten times a second:
 the current time as ``stamp`` and a counter, from 0, as ``data``.
 
-    python -m ros_tutorials_topic.publisher      (or: topic_publisher)
+    topic_publisher        (or: python -m ros_tutorials_topic.publisher)
 """
 
+import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common.node_main import run_node
+from ros_tutorials_common.node_main import ros_args
 
 QUEUE_SIZE = 100
-RATE_HZ = 10.0
 
 
 class TopicPublisher(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("topic_publisher", **node_kwargs)
+        # enable_logger_service: every node of this project serves get/set_logger_levels,
+        # so that a node's log level can be changed while it runs.
+        super().__init__("topic_publisher", enable_logger_service=True, **node_kwargs)
+        # The publisher: message type, topic name, queue size.
         self.publisher = self.create_publisher(MsgTutorial, "ros_tutorial_msg", QUEUE_SIZE)
-        self.timer = self.create_timer(1.0 / RATE_HZ, self.publish_message)
+        self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz, the book's loop rate
         self.count = 0
 
     def publish_message(self) -> None:
         msg = MsgTutorial()
-        msg.stamp = self.get_clock().now().to_msg()
-        msg.data = self.count
+        msg.stamp = self.get_clock().now().to_msg()  # the current time
+        msg.data = self.count  # and the counter
+        self.get_logger().info(f"send msg = {msg.stamp.sec}")
+        self.get_logger().info(f"send msg = {msg.stamp.nanosec}")
+        self.get_logger().info(f"send msg = {msg.data}")
         self.publisher.publish(msg)
-        log = self.get_logger()
-        log.info(f"send msg = {msg.stamp.sec}")
-        log.info(f"send msg = {msg.stamp.nanosec}")
-        log.info(f"send msg = {msg.data}")
         self.count += 1
 
 
-def main() -> int:
-    return run_node(TopicPublisher)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+    try:
+        node = TopicPublisher()  # create the node
+        rclpy.spin(node)  # run its timer until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    finally:
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

@@ -3,34 +3,43 @@
 Subscribes to ``ros_tutorial_msg`` and logs each message's stamp and data, as the book
 does (its "recieve" typo included, so the output matches the printed listing).
 
-    python -m ros_tutorials_topic.subscriber     (or: topic_subscriber)
+    topic_subscriber       (or: python -m ros_tutorials_topic.subscriber)
 """
 
+import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common.node_main import run_node
+from ros_tutorials_common.node_main import ros_args
 
 QUEUE_SIZE = 100
 
 
 class TopicSubscriber(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("topic_subscriber", **node_kwargs)
+        super().__init__("topic_subscriber", enable_logger_service=True, **node_kwargs)
+        # The subscriber: message type, topic name, the callback for each message, queue size.
         self.subscription = self.create_subscription(
             MsgTutorial, "ros_tutorial_msg", self.on_message, QUEUE_SIZE
         )
 
     def on_message(self, msg: MsgTutorial) -> None:
-        log = self.get_logger()
-        log.info(f"recieve msg = {msg.stamp.sec}")
-        log.info(f"recieve msg = {msg.stamp.nanosec}")
-        log.info(f"recieve msg = {msg.data}")
+        self.get_logger().info(f"recieve msg = {msg.stamp.sec}")
+        self.get_logger().info(f"recieve msg = {msg.stamp.nanosec}")
+        self.get_logger().info(f"recieve msg = {msg.data}")
 
 
-def main() -> int:
-    return run_node(TopicSubscriber)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+    try:
+        node = TopicSubscriber()  # create the node
+        rclpy.spin(node)  # wait for messages and call on_message for each, until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    finally:
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

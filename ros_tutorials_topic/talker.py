@@ -1,24 +1,23 @@
-"""Talker (the classic roscpp/rospy tutorial of seeds 001, 003, 004).
+"""Talker (the classic rospy/roscpp tutorial of seeds 001, 003, 004).
 
 Publishes std_msgs/String "hello world N" on ``chatter`` ten times a second.
 
-    python -m ros_tutorials_topic.talker         (or: talker)
+    talker                 (or: python -m ros_tutorials_topic.talker)
 """
 
+import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common.node_main import run_node
-
-QUEUE_SIZE = 10
-RATE_HZ = 10.0
+from ros_tutorials_common.node_main import ros_args
 
 
 class Talker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("talker", **node_kwargs)
-        self.publisher = self.create_publisher(String, "chatter", QUEUE_SIZE)
-        self.timer = self.create_timer(1.0 / RATE_HZ, self.publish_message)
+        super().__init__("talker", enable_logger_service=True, **node_kwargs)
+        self.publisher = self.create_publisher(String, "chatter", 10)  # queue_size=10
+        self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
         self.count = 0
 
     def publish_message(self) -> None:
@@ -28,9 +27,15 @@ class Talker(Node):
         self.count += 1
 
 
-def main() -> int:
-    return run_node(Talker)
+def main(args=None) -> None:
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+    try:
+        rclpy.spin(Talker())  # create the node and run its timer until Ctrl-C
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    finally:
+        rclpy.try_shutdown()
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    main()

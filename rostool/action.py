@@ -11,7 +11,7 @@ from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
 from rclpy.action.graph import get_action_names_and_types
 
-from ros_tutorials_common.action_goal import (
+from rostool.action_goal import (
     CtrlC,
     Interrupted,
     ServerLost,

@@ -18,9 +18,9 @@ from collections.abc import Callable, Sequence
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros_tutorials_common.action_goal import Interrupted
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
 from rostool import action, core, interface, node, param, run, service, topic
+from rostool.action_goal import Interrupted
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 

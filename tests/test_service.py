@@ -112,6 +112,14 @@ def test_add_two_ints_client_calls_the_server(node_process):
         (["9223372036854775808", "0"], "does not fit in a 64-bit integer"),
         (["1", "2", "--timeout", "-1"], "'-1' is not a positive number of seconds"),
         (["1", "2", "--timeout", "nan"], "'nan' is not a positive number of seconds"),
+        # Waits rcl cannot count (int64 nanoseconds) or Python cannot sleep: one clear line.
+        (["1", "2", "--timeout", "1e10"], "'1e10' is not a positive number of seconds up to"),
+        (["1", "2", "--timeout", "1e15"], "'1e15' is not a positive number of seconds up to"),
+        (["1", "2", "--timeout", "1e300"], "'1e300' is not a positive number of seconds up to"),
+        # The book's clients read atoll-style integers: ASCII digits and an optional sign.
+        (["1_000", "2"], "'1_000' is not an integer"),
+        (["\u0665", "2"], "is not an integer"),  # ARABIC-INDIC DIGIT FIVE
+        (["1", " 5 "], "' 5 ' is not an integer"),
     ],
 )
 def test_client_usage_errors(node_process, module, args, complaint):

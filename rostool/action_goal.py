@@ -1,7 +1,7 @@
 """Waiting on an action goal without hanging, and canceling it on Ctrl-C.
 
-Used by the action lesson's client and by ``rostool action send_goal``. A goal may run for
-long, so the waits here:
+Used by ``rostool action send_goal`` (the action lesson's client shows the same steps in its
+own lines). A goal may run for long, so the waits here:
 
 - spin in short slices, so that a Ctrl-C noted by ``CtrlC`` is seen at once (``Interrupted``);
 - check every SERVER_CHECK_PERIOD that the action server is still in the graph: a server that
