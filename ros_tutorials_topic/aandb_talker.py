@@ -13,7 +13,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import AandB
 
-from ros_tutorials_common.dds import apply_dds_defaults
+from ros_tutorials_common.node_main import ros_args
 
 
 class AandBTalker(Node):
@@ -33,11 +33,7 @@ class AandBTalker(Node):
 
 
 def main(args: list[str] | None = None) -> None:
-    apply_dds_defaults()  # this project's DDS settings (localhost only), before init
-    try:
-        rclpy.init(args=args)
-    except RuntimeError as error:  # a malformed ROS argument, e.g. --ros-args -r bad
-        raise SystemExit(f"error: {str(error).split(', at ')[0]}") from None
+    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
     node = AandBTalker()
     try:
         rclpy.spin(node)

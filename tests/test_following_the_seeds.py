@@ -235,4 +235,5 @@ def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
 def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
     result = finished("aandb_talker", "--ros-args", "-r", "bad")
     assert result.returncode == 1 and "Traceback" not in result.stderr
-    assert "error: failed to initialize rcl: Couldn't parse remap rule" in result.stderr
+    assert "error: invalid ROS arguments:" in result.stderr
+    assert "Couldn't parse remap rule" in result.stderr
