@@ -20,6 +20,7 @@ from launcher import packages
 from launcher.parse import Element
 
 TRUE_WORDS = ("true", "1")
+MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 FALSE_WORDS = ("false", "0")
 
 
@@ -62,6 +63,8 @@ def _closing_paren(text: str, start: int, element: Element) -> int:
     for index in range(start + 1, len(text)):
         if text[index] == "(":
             depth += 1
+            if depth > MAX_NESTING:
+                raise element.error(f"substitutions nested more than {MAX_NESTING} deep")
         elif text[index] == ")":
             depth -= 1
             if depth == 0:
@@ -199,7 +202,10 @@ def _ros2_eval(words: list[str], _context: Context, element: Element) -> str:
 
 
 def _command(words: list[str], _context: Context, element: Element) -> str:
-    command = shlex.split(" ".join(words))
+    try:
+        command = shlex.split(" ".join(words))
+    except ValueError as error:
+        raise element.error(f"$(command {' '.join(words)}): {error}") from None
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=60)
     except (OSError, subprocess.TimeoutExpired) as error:
