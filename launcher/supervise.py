@@ -47,7 +47,7 @@ BACKOFF_MAX_SECONDS = 30.0
 PR_SET_PDEATHSIG = 1
 PR_SET_CHILD_SUBREAPER = 36
 MAX_LINE_BYTES = 64 * 1024  # the most of one output line held in memory or shown on screen
-MAX_TRACEBACK_LINES = 200  # the most lines of a child's traceback held back (see _relay)
+MAX_TRACEBACK_LINES = 400  # the most lines of a stopping child's traceback held back
 ADOPTED_STOP_SECONDS = 5.0  # adopted processes: from SIGTERM to SIGKILL
 
 _libc = ctypes.CDLL(None, use_errno=True)
@@ -249,7 +249,7 @@ class Supervisor:
     def _reader(
         self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None
     ) -> threading.Thread:
-        label, log_path = child.spec.label, child.log_path
+        log_path = child.log_path
 
         def pump() -> None:
             assert stream is not None
@@ -271,8 +271,8 @@ class Supervisor:
                         cut = True
                         line += f" [line cut at {MAX_LINE_BYTES} bytes; whole in {log_path}]"
                     self._relay(child, line, screen, held)
-                for line in held:
-                    self.show(f"[{label}] {line}", screen)  # type: ignore[arg-type]
+                if held and screen is not None:
+                    self._flush_held(child, screen, held)
             stream.close()
 
         thread = threading.Thread(target=pump, daemon=True)
@@ -280,25 +280,27 @@ class Supervisor:
         return thread
 
     def _relay(self, child: Child, line: str, screen: IO[str], held: list[str]) -> None:
-        """Show a line; collapse the KeyboardInterrupt traceback of a child we interrupted.
-
-        A child that gets the launcher's SIGINT while Python is still importing (Ctrl-C in
-        the first moments of a launch) has not installed rclpy's handler yet, so Python
-        prints a KeyboardInterrupt traceback. That is the expected end, not an error.
-        """
-        label = child.spec.label
-        if held or (child.stage and line == "Traceback (most recent call last):"):
+        """Show a line; hold back a traceback of a child we are stopping (see _flush_held)."""
+        starts = ("Traceback (most recent call last):", "Fatal Python error:")
+        if held or (child.stage and line.startswith(starts)):
             held.append(line)
-            if line.startswith((" ", "Traceback")) and len(held) < MAX_TRACEBACK_LINES:
-                return  # still inside the traceback
-            if line.startswith("KeyboardInterrupt"):
-                self.show(f"[{label}] stopped while starting (its traceback is in the log)", screen)
-            else:
-                for kept in held:
-                    self.show(f"[{label}] {kept}", screen)
-            held.clear()
+            if len(held) >= MAX_TRACEBACK_LINES:
+                self._flush_held(child, screen, held)
             return
-        self.show(f"[{label}] {line}", screen)
+        self.show(f"[{child.spec.label}] {line}", screen)
+
+    def _flush_held(self, child: Child, screen: IO[str], held: list[str]) -> None:
+        """A child that gets the launcher's SIGINT while Python is still starting or importing
+        (Ctrl-C in the first moments of a launch) has no handler for it yet, so Python prints a
+        KeyboardInterrupt traceback. That is the expected end of a stop, not an error: one line
+        on the screen, the traceback in the log file. Any other traceback is shown whole."""
+        label = child.spec.label
+        if any(line.startswith("KeyboardInterrupt") for line in held):
+            self.show(f"[{label}] stopped while starting (its traceback is in the log)", screen)
+        else:
+            for line in held:
+                self.show(f"[{label}] {line}", screen)
+        held.clear()
 
     def _find_adopted(self) -> set[int]:
         """Processes the kernel gave us as subreaper: our children that we did not start."""
