@@ -13,8 +13,8 @@ from typing import Any
 
 import yaml
 from rclpy.duration import Duration
-from rclpy.exceptions import RCLError
 from rclpy.executors import ExternalShutdownException
+from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
@@ -202,7 +202,7 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
 def _publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
     try:
         publisher.publish(msg)
-    except RCLError:
+    except _rclpy.RCLError:
         # SIGTERM shut ROS down between two spins (at -r 1e9 the loop never spins): that is
         # the end of the command, as it is when a spin notices it, not an error.
         if not graph.node.context.ok():

@@ -276,9 +276,9 @@ def test_a_huge_line_without_newline_is_cut_and_memory_stays_bounded(node_proces
         what="the line after the long one",
     )
     peak = _peak_rss_mib(launcher.process.pid)
+    assert peak < 80, f"the launcher's peak memory was {peak:.0f} MiB for a {mib} MiB line"
     cut = [line for line in lines if "[line cut at 65536 bytes" in line]
     assert len(cut) == 1 and len(cut[0]) < 70_000
-    assert peak < 80, f"the launcher's peak memory was {peak:.0f} MiB for a {mib} MiB line"
     log_dir = next(line for line in lines if "logging to" in line).split("logging to ")[1]
     logged = sum(p.stat().st_size for p in Path(log_dir).glob("*.log"))
     assert logged >= mib * 1024 * 1024  # the log file has the whole line
