@@ -348,6 +348,9 @@ class Supervisor:
                 told = True
             if time.monotonic() >= deadline or self.hurry:
                 sig = signal.SIGKILL
+            if time.monotonic() >= deadline + ADOPTED_STOP_SECONDS:  # unkillable (state D)
+                self.say(f"still running after SIGKILL: pid(s) {sorted(self.adopted)}")
+                return
             for pid in self.adopted:
                 with contextlib.suppress(ProcessLookupError):
                     os.kill(pid, sig)
