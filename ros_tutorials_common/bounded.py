@@ -55,7 +55,8 @@ def decode(data: bytes, source: str) -> str:
         return data.decode("utf-8")
     except UnicodeDecodeError as error:
         raise InputError(
-            f"{source} is not UTF-8 text (byte 0x{data[error.start]:02x} at offset {error.start})"
+            f"{source} is not a text file (not UTF-8: byte 0x{data[error.start]:02x} "
+            f"at offset {error.start})"
         ) from None
 
 
@@ -69,7 +70,7 @@ def read_line(stream: IO[str], source: str, limit: int = 4096) -> str:
     try:
         line = stream.readline(limit + 1)
     except UnicodeDecodeError:
-        raise InputError(f"{source} is not UTF-8 text") from None
+        raise InputError(f"{source} is not a text file (not UTF-8)") from None
     if len(line) > limit and not line.endswith("\n"):
         raise InputError(f"{source}: a line longer than {limit} characters; refusing it")
     return line
