@@ -286,3 +286,11 @@ def test_a_huge_line_without_newline_is_cut_and_memory_stays_bounded(node_proces
     assert_all_gone(pids)
     for log in Path(log_dir).glob("*.log"):
         log.unlink()
+
+
+def test_command_substitution_output_is_bounded(tmp_path):
+    path = tmp_path / "t.launch.xml"
+    path.write_text('<launch>\n<let name="x" value="$(command yes)"/>\n</launch>\n')
+    done = run_launcher(str(path), "--print", "--allow-code")
+    assert done.returncode == 1 and "Traceback" not in done.stderr, done.stderr
+    assert f"{path}:2: $(command yes) printed more than 1 MiB" in done.stderr
