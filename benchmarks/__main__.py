@@ -10,17 +10,20 @@ import datetime
 import os
 import platform
 import signal
+import traceback
+from collections.abc import Callable
 
 from benchmarks import launch, memory, service, setup_time, topic
-from benchmarks.common import print_table, private_domain
+from benchmarks.common import Row, print_table, private_domain
 
-GROUPS = {
-    "launch": lambda: launch.launch_and_shutdown() + launch.escalation(),
-    "service": service.round_trip,
-    "topic": lambda: topic.latency() + topic.loss_and_throughput(),
-    "rate": topic.rate_accuracy,
-    "memory": memory.node_memory,
-    "setup": setup_time.setup_times,
+# Each group is a list of steps; a step that fails costs only its own rows.
+GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
+    "launch": [launch.launch_and_shutdown, launch.escalation],
+    "service": [service.round_trip],
+    "topic": [topic.latency, topic.loss_and_throughput],
+    "rate": [topic.rate_accuracy],
+    "memory": [memory.node_memory],
+    "setup": [setup_time.setup_times],
 }
 
 
@@ -40,13 +43,25 @@ def main() -> int:
         f"# ros-tutorials benchmarks, {datetime.date.today()}, {platform.machine()}, "
         f"{os.cpu_count()} cores, Python {platform.python_version()}, ROS_DOMAIN_ID={domain}"
     )
-    rows = []
+    rows: list[Row] = []
+    failed = []
     for name in args.groups or GROUPS:
         print(f"# running {name} ...", flush=True)
-        rows += GROUPS[name]()
+        for step in GROUPS[name]:
+            # One step failing (an error, a timeout) must not lose the other figures.
+            try:
+                rows += step()
+            except Exception as error:
+                traceback.print_exc()
+                reason = " ".join(str(error).split())[:120] or type(error).__name__
+                what = f"{name}: {step.__name__} FAILED"
+                rows.append(Row(what, reason, target="runs", met=False))
+                failed.append(f"{name}.{step.__name__}")
     print()
     print_table(rows)
-    return 0
+    if failed:
+        print(f"\n# {len(failed)} step(s) failed: {', '.join(failed)} (tracebacks above)")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

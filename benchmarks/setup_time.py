@@ -12,20 +12,23 @@ from benchmarks.common import Row
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def _timed(args: list[str], cwd: Path) -> float:
+def _timed(args: list[str], cwd: Path, check: bool = True) -> tuple[float, int]:
     start = time.monotonic()
-    subprocess.run(args, cwd=cwd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.monotonic() - start
+    done = subprocess.run(
+        args, cwd=cwd, check=check, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+    )
+    return time.monotonic() - start, done.returncode
 
 
 def setup_times() -> list[Row]:
     with tempfile.TemporaryDirectory() as tmp:
         clone = Path(tmp) / "clone"
         subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True)
-        fresh = _timed(["make", "setup"], clone)
-        noop = _timed(["make", "setup"], clone)
+        fresh, _ = _timed(["make", "setup"], clone)
+        noop, _ = _timed(["make", "setup"], clone)
         up_to_date = subprocess.run(["make", "-q", "setup"], cwd=clone).returncode == 0
-        second_test = _timed(["make", "test"], clone)
+        # A failing test must not cost the set-up figures: the time is reported with the exit.
+        second_test, test_exit = _timed(["make", "test"], clone, check=False)
     return [
         Row("fresh clone to ready (make setup; pip cache warm)", f"{fresh:.0f} s"),
         Row(
@@ -38,7 +41,10 @@ def setup_times() -> list[Row]:
         ),
         Row(
             "make test after set-up (lint + whole suite, no rebuild)",
-            f"{second_test:.0f} s",
+            f"{second_test:.0f} s" + (f" (FAILED, exit {test_exit})" if test_exit else ""),
             f"{noop:.2f} s of it is the set-up check",
+            None,
+            "passes",
+            test_exit == 0,
         ),
     ]

@@ -1,6 +1,21 @@
 """The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
 
+# ruff: noqa: E402 - the imports follow the SIGINT handler: a Ctrl-C during them must be quiet
+
 from __future__ import annotations
+
+import os
+import signal
+
+
+def _interrupted_before_start(signum: int, _frame: object) -> None:
+    # Ctrl-C while the launcher imports and reads the file: nothing has started, leave
+    # quietly with a shell's status (the supervisor installs its own handler before starting).
+    os._exit(128 + signum)
+
+
+if __name__ == "__main__":
+    signal.signal(signal.SIGINT, _interrupted_before_start)
 
 import argparse
 import sys
@@ -164,9 +179,14 @@ def main(argv: list[str] | None = None) -> int:
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
     from launcher.supervise import Supervisor, make_log_dir
 
+    try:
+        log_dir = make_log_dir()
+    except LaunchError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)
-    return Supervisor(specs, make_log_dir(), options.debug).run()
+    return Supervisor(specs, log_dir, options.debug).run()
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@ from pathlib import Path
 from xml.parsers import expat
 
 from launcher import LaunchError
+from ros_tutorials_common.bounded import InputError, read_bytes
 
 
 @dataclass
@@ -36,9 +37,9 @@ class Element:
 def parse_file(path: Path) -> Element:
     """Parse one launch file; malformed XML raises LaunchError with file:line:column."""
     try:
-        data = path.read_bytes()
-    except OSError as error:
-        raise LaunchError(f"cannot read launch file {path}: {error.strerror}") from None
+        data = read_bytes(path)  # at most 1 MiB
+    except InputError as error:
+        raise LaunchError(f"launch file: {error}") from None
     return parse_bytes(data, path)
 
 

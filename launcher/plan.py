@@ -9,6 +9,7 @@ name, namespace, remaps and parameters become standard ROS arguments:
 from __future__ import annotations
 
 import json
+import os
 import shlex
 import shutil
 from dataclasses import dataclass, field
@@ -18,6 +19,7 @@ import yaml
 
 from launcher import LaunchError, packages
 from launcher.resolve import Launch, NodeDecl
+from ros_tutorials_common.bounded import InputError, load_yaml
 
 DEFAULT_SIGTERM_TIMEOUT = 5.0  # seconds after SIGINT before SIGTERM, as ros2 launch
 DEFAULT_SIGKILL_TIMEOUT = 5.0  # seconds after SIGTERM before SIGKILL
@@ -56,8 +58,8 @@ def ros_value(value: Any) -> str:
     """A parameter value as ``-p name:=value`` needs it: rcl reads it as YAML."""
     if isinstance(value, str):
         try:
-            plain = yaml.safe_load(value) == value and value == value.strip()
-        except yaml.YAMLError:
+            plain = load_yaml(value) == value and value == value.strip()
+        except (yaml.YAMLError, InputError):
             plain = False
         if plain:
             return value
@@ -79,6 +81,22 @@ def ros_arguments(node: NodeDecl) -> list[str]:
         rules += ["--params-file", path]
     rules += node.ros_args
     return ["--ros-args", *rules] if rules else []
+
+
+def _check_program(program: str, where: str) -> None:
+    """The program exists and may be run; otherwise say which of the two it is."""
+    if shutil.which(program) is not None:
+        return
+    if "/" in program:
+        candidates = [program]
+    else:
+        candidates = [os.path.join(d, program) for d in os.get_exec_path() if d]
+    for path in candidates:
+        if os.path.isdir(path):
+            raise LaunchError(f"{where}: program {program!r} is a directory ({path})")
+        if os.path.isfile(path):
+            raise LaunchError(f"{where}: program {program!r} is not executable ({path})")
+    raise LaunchError(f"{where}: program {program!r} not found")
 
 
 def _label(node: NodeDecl) -> str:
@@ -105,8 +123,7 @@ def make_plan(
             command = command_for(node.package or "", node.executable or "", node.where)
             command += node.args + ros_arguments(node)
         command = node.launch_prefix + command
-        if shutil.which(command[0]) is None:
-            raise LaunchError(f"{node.where}: program {command[0]!r} not found")
+        _check_program(command[0], node.where)
         label = _label(node)
         full_name = "/" + label if node.name and node.cmd is None else None
         if full_name in named:

@@ -27,9 +27,21 @@ import yaml
 from launcher import LaunchError
 from launcher.parse import Element, parse_file
 from launcher.substitutions import substitute, to_bool
+from ros_tutorials_common.bounded import (
+    InputError,
+    load_yaml,
+    parameter_problem,
+    parameters_problem,
+    read_text,
+)
 
 # How many times in a row a respawning process may fail quickly before we give up.
 DEFAULT_RESPAWN_MAX_RETRIES = 10
+# The longest respawn_delay, sigterm_timeout or sigkill_timeout accepted: one day. Longer is
+# a typo (1e308) that would make the launcher wait forever.
+MAX_SECONDS = 86400.0
+# Groups and includes nested deeper than this are refused (a recursion, not a real file).
+MAX_DEPTH = 50
 
 CONDITIONS = {"if", "unless"}
 ROS1_TAGS = {
@@ -247,7 +259,7 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
         if kind in ("bool", "boolean"):
             return to_bool(text, element, "a bool parameter")
         if kind == "yaml":
-            return yaml.safe_load(text)
+            return _load_yaml(text, element)
     except (ValueError, yaml.YAMLError) as error:
         raise element.error(f"value {text!r} is not a valid {kind}: {error}") from None
     if kind is not None:
@@ -260,6 +272,42 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     if text.strip().lower() in ("true", "false"):
         return text.strip().lower() == "true"
     return text
+
+
+def _load_yaml(text: str, element: Element) -> Any:
+    """YAML written in (or read by) a launch file, within the limits of bounded.load_yaml."""
+    try:
+        return load_yaml(text, "the YAML")
+    except InputError as error:
+        raise element.error(str(error)) from None
+    except yaml.YAMLError as error:
+        raise element.error(f"invalid YAML: {' '.join(str(error).split())}") from None
+
+
+def _check_params(element: Element, mapping: dict | None, name: str, value: Any) -> None:
+    """Refuse, at file:line, what no ROS parameter can hold (a date, an int above int64...)."""
+    problem = parameters_problem(mapping) if mapping is not None else None
+    problem = problem or (None if mapping is not None else parameter_problem(name, value))
+    if problem:
+        raise element.error(problem)
+
+
+def _check_params_file(element: Element, path: Path) -> None:
+    """A ROS 2 params file, checked before anything starts: the child would fail on it later."""
+    try:
+        data = load_yaml(read_text(path), str(path))
+    except InputError as error:
+        raise element.error(str(error)) from None
+    except yaml.YAMLError as error:
+        raise element.error(f"{path} is not valid YAML: {' '.join(str(error).split())}") from None
+    if not isinstance(data, dict):
+        raise element.error(f"{path} is not a params file (expected 'node: ros__parameters:')")
+    for key, entry in data.items():
+        if not isinstance(key, str):
+            raise element.error(f"{path}: node name {key!r} is not a string")
+        problem = parameters_problem(entry, "")
+        if problem:
+            raise element.error(f"{path}: {problem}")
 
 
 def _flatten(prefix: str, value: Any) -> list[tuple[str, Any]]:
@@ -281,6 +329,7 @@ class Resolver:
         self.messages: list[str] = []
         self.anon_names: dict[str, str] = {}
         self.include_chain: list[Path] = []
+        self.depth = 0  # nested groups and includes
         # ROS 1: the parameter server roslaunch would fill, full name -> value, and the
         # nodes whose parameters come from it once every file is read.
         self.param_server: dict[str, Any] = {}
@@ -294,12 +343,18 @@ class Resolver:
     # -- files and scopes ---------------------------------------------------------------------
 
     def resolve_file(
-        self, path: Path, given: dict[str, str], parent: Scope | None, strict: bool = True
+        self,
+        path: Path,
+        given: dict[str, str],
+        parent: Scope | None,
+        strict: bool = True,
+        include: Element | None = None,
     ) -> None:
         path = path.resolve()
         if path in self.include_chain:
             chain = " -> ".join(str(p) for p in [*self.include_chain, path])
-            raise LaunchError(f"launch files include each other in a loop: {chain}")
+            message = f"launch files include each other in a loop: {chain}"
+            raise include.error(message) if include else LaunchError(message)
         root = parse_file(path)
         _check(root, {"deprecated"})
         fmt = detect_format(root)
@@ -320,13 +375,19 @@ class Resolver:
 
     def resolve_children(self, element: Element, scope: Scope) -> None:
         allowed = ROS1_SCOPE_TAGS if scope.fmt == "ros1" else ROS2_SCOPE_TAGS
-        for child in element.children:
-            _check_tag(child, allowed, scope.fmt, element.tag)
-            if self.enabled(child, scope):
-                handler = getattr(self, f"on_{scope.fmt}_{child.tag}", None) or getattr(
-                    self, f"on_{child.tag}"
-                )
-                handler(child, scope)
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise element.error(f"groups and includes nested more than {MAX_DEPTH} deep")
+            for child in element.children:
+                _check_tag(child, allowed, scope.fmt, element.tag)
+                if self.enabled(child, scope):
+                    handler = getattr(self, f"on_{scope.fmt}_{child.tag}", None) or getattr(
+                        self, f"on_{child.tag}"
+                    )
+                    handler(child, scope)
+        finally:
+            self.depth -= 1
 
     def finish(self) -> Launch:
         for node in self.ros1_nodes:
@@ -341,6 +402,20 @@ class Resolver:
         if default is None:
             raise element.error(f"<{element.tag}> needs a {name!r} attribute")
         return default
+
+    def words(self, element: Element, name: str, scope: Scope) -> list[str]:
+        """An attribute split into words as a shell would (args, cmd, launch-prefix)."""
+        text = self.text(element, name, scope, "")
+        try:
+            return shlex.split(text)
+        except ValueError as error:  # No closing quotation
+            raise element.error(f"{name.replace('_', '-')}={text!r}: {error}") from None
+
+    def env_name(self, element: Element, scope: Scope) -> str:
+        name = self.text(element, "name", scope)
+        if not name or "=" in name or "\0" in name:
+            raise element.error(f"invalid environment variable name {name!r}")
+        return name
 
     def flag(self, element: Element, name: str, scope: Scope) -> bool:
         return to_bool(self.text(element, name, scope, "false"), element, f"{name!r}")
@@ -357,6 +432,8 @@ class Resolver:
         bad = value is None or not math.isfinite(value) or value < 0
         if bad and not (kind is int and value == -1):
             raise element.error(f"{name!r} must be a non-negative number, not {text!r}")
+        if kind is float and value > MAX_SECONDS:
+            raise element.error(f"{name!r} is {text} s; at most {MAX_SECONDS:.0f} s (a day)")
         return value
 
     def enabled(self, element: Element, scope: Scope) -> bool:
@@ -369,7 +446,9 @@ class Resolver:
     def namespace(self, element: Element, name: str, scope: Scope) -> str:
         value = self.text(element, name, scope)
         full = join_namespace(scope.namespace, value)
-        if full != "/" and not all(valid_name(part) for part in full.strip("/").split("/")):
+        parts = value.strip("/").split("/")  # "a//b" has an empty part: a typo, refused
+        bad_part = value.strip("/") and not all(valid_name(part) for part in parts)
+        if bad_part or (full != "/" and not all(valid_name(p) for p in full[1:].split("/"))):
             raise element.error(f"invalid namespace {value!r}")
         return full
 
@@ -410,7 +489,7 @@ class Resolver:
     on_set_remap = on_remap
 
     def on_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.text(element, "name", scope)] = self.text(element, "value", scope)
+        scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
 
     on_set_env = on_env
 
@@ -427,7 +506,7 @@ class Resolver:
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         if not path.is_file():
             raise element.error(f"included file {path} does not exist")
-        self.resolve_file(path, given, scope.child(namespace=ns), strict=not pass_all)
+        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element)
 
     # -- ROS 1 --------------------------------------------------------------------------------
 
@@ -462,6 +541,7 @@ class Resolver:
         if name.startswith("~"):
             name = name[1:]  # private: inside <node> the namespace is already the node's
         value = _typed_value(self.text(element, "value", scope), element.attrs.get("type"), element)
+        _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
         for key, item in _flatten(join_namespace(namespace, name), value):
             self.param_server[key] = item
 
@@ -471,18 +551,16 @@ class Resolver:
             raise element.error(f"<rosparam command={command!r}> is not supported; only 'load'")
         if "file" in element.attrs:
             path = Path(self.text(element, "file", scope))
-            try:
-                text = (path if path.is_absolute() else scope.file.parent / path).read_text()
-            except OSError as error:
-                raise element.error(f"cannot read {path}: {error.strerror}") from None
+            try:  # at most 1 MiB of UTF-8
+                text = read_text(path if path.is_absolute() else scope.file.parent / path)
+            except InputError as error:
+                raise element.error(str(error)) from None
         else:
             text = element.text
         if self.flag(element, "subst_value", scope):
             text = substitute(text, scope, element)
-        try:
-            value = yaml.safe_load(text)
-        except yaml.YAMLError as error:
-            raise element.error(f"invalid YAML: {error}") from None
+        value = _load_yaml(text, element)
+        _check_params(element, value if isinstance(value, dict) else None, "", value)
         if "ns" in element.attrs:
             namespace = join_namespace(namespace, self.text(element, "ns", scope))
         if "param" in element.attrs:
@@ -513,11 +591,11 @@ class Resolver:
 
     def on_ros2_node(self, element: Element, scope: Scope) -> None:
         node = self._node(element, scope, "exec", "namespace")
-        node.ros_args = shlex.split(self.text(element, "ros_args", scope, ""))
+        node.ros_args = self.words(element, "ros_args", scope)
         self._ros2_process(node, element, scope, ROS2_NODE_TAGS)
 
     def on_executable(self, element: Element, scope: Scope) -> None:
-        cmd = shlex.split(self.text(element, "cmd", scope))
+        cmd = self.words(element, "cmd", scope)
         if not cmd:
             raise element.error("<executable> needs a non-empty 'cmd'")
         node = NodeDecl(element.where, cmd=cmd, namespace=scope.namespace)
@@ -543,19 +621,21 @@ class Resolver:
             if child.tag == "remap":
                 node.remaps.append((self.text(child, "from", scope), self.text(child, "to", scope)))
             elif child.tag == "env":
-                node.env[self.text(child, "name", scope)] = self.text(child, "value", scope)
+                node.env[self.env_name(child, scope)] = self.text(child, "value", scope)
             elif "from" in child.attrs:
                 path = Path(self.text(child, "from", scope))
-                node.params_files.append(
-                    str(path if path.is_absolute() else scope.file.parent / path)
-                )
+                path = path if path.is_absolute() else scope.file.parent / path
+                _check_params_file(child, path)
+                node.params_files.append(str(path))
             else:
                 node.params.append(self._ros2_param(child, scope))
         self.nodes.append(node)
 
     def _ros2_param(self, element: Element, scope: Scope) -> tuple[str, Any]:
         value = _typed_value(self.text(element, "value", scope), None, element)
-        return self.text(element, "name", scope), value
+        name = self.text(element, "name", scope)
+        _check_params(element, None, name, value)
+        return name, value
 
     def on_set_parameter(self, element: Element, scope: Scope) -> None:
         scope.params.append(self._ros2_param(element, scope))
@@ -567,7 +647,7 @@ class Resolver:
         scope.namespace = self.namespace(element, "namespace", scope)
 
     def on_unset_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.text(element, "name", scope)] = None
+        scope.env[self.env_name(element, scope)] = None
 
     def on_log(self, element: Element, scope: Scope) -> None:
         self.messages.append(self.text(element, "message", scope))
@@ -590,7 +670,7 @@ class Resolver:
         return node
 
     def _process_options(self, node: NodeDecl, element: Element, scope: Scope) -> None:
-        node.args = shlex.split(self.text(element, "args", scope, ""))
+        node.args = self.words(element, "args", scope)
         node.output = self.text(element, "output", scope, "log")
         outputs = ("screen", "log") if scope.fmt == "ros1" else ("screen", "log", "both")
         if node.output not in outputs:
@@ -599,7 +679,7 @@ class Resolver:
         node.respawn_delay = self.number(element, "respawn_delay", scope) or 0.0
         retries = self.number(element, "respawn_max_retries", scope, int)
         node.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries is None else retries
-        node.launch_prefix = shlex.split(self.text(element, "launch_prefix", scope, ""))
+        node.launch_prefix = self.words(element, "launch_prefix", scope)
 
 
 def resolve(path: Path, args: dict[str, str], options: Options | None = None) -> Launch:

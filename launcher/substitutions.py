@@ -13,13 +13,16 @@ import math
 import os
 import shlex
 import subprocess
+import tempfile
 from pathlib import Path
 from typing import Protocol
 
 from launcher import packages
 from launcher.parse import Element
+from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
 TRUE_WORDS = ("true", "1")
+MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 FALSE_WORDS = ("false", "0")
 
 
@@ -62,6 +65,8 @@ def _closing_paren(text: str, start: int, element: Element) -> int:
     for index in range(start + 1, len(text)):
         if text[index] == "(":
             depth += 1
+            if depth > MAX_NESTING:
+                raise element.error(f"substitutions nested more than {MAX_NESTING} deep")
         elif text[index] == ")":
             depth -= 1
             if depth == 0:
@@ -200,15 +205,38 @@ def _ros2_eval(words: list[str], _context: Context, element: Element) -> str:
 
 
 def _command(words: list[str], _context: Context, element: Element) -> str:
-    command = shlex.split(" ".join(words))
     try:
-        done = subprocess.run(command, capture_output=True, text=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired) as error:
-        raise element.error(f"$(command {' '.join(words)}) failed: {error}") from None
-    if done.returncode != 0:
-        reason = done.stderr.strip().splitlines()[-1:] or [f"exit code {done.returncode}"]
-        raise element.error(f"$(command {' '.join(words)}) failed: {reason[0]}")
-    return done.stdout
+        command = shlex.split(" ".join(words))
+    except ValueError as error:
+        raise element.error(f"$(command {' '.join(words)}): {error}") from None
+    shown = f"$(command {' '.join(words)})"
+    # Its output is read with the same limit as a file (1 MiB); stderr goes to a file, so
+    # neither pipe can fill up and block it, nor fill the launcher's memory.
+    with tempfile.TemporaryFile() as errors:
+        try:
+            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=errors)
+        except OSError as error:
+            raise element.error(f"{shown} failed: {error}") from None
+        with process:
+            assert process.stdout is not None
+            out = process.stdout.read(MAX_INPUT_BYTES + 1)
+            if len(out) > MAX_INPUT_BYTES:
+                process.kill()
+                raise element.error(f"{shown} printed more than 1 MiB")
+            try:
+                code = process.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                raise element.error(f"{shown} failed: still running after 60 s") from None
+        errors.seek(0)
+        stderr = errors.read(64 * 1024).decode(errors="replace")
+    if code != 0:
+        reason = stderr.strip().splitlines()[-1:] or [f"exit code {code}"]
+        raise element.error(f"{shown} failed: {reason[0]}")
+    try:
+        return out.decode()
+    except UnicodeDecodeError:
+        raise element.error(f"{shown} printed something that is not UTF-8 text") from None
 
 
 ANY = range(1, 100)

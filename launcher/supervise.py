@@ -10,7 +10,16 @@ How nothing is left behind:
   forked, so every child is started from the main thread;
 - a tiny guardian process, forked before anything else, kills the process groups the launcher
   leaves behind if it dies, which covers the grandchildren PDEATHSIG does not reach;
-- when a child exits, whatever it left in its process group is killed before it is reaped.
+- when a child exits, whatever it left in its process group is killed before it is reaped;
+- the launcher is a child subreaper (``PR_SET_CHILD_SUBREAPER``): a grandchild that left its
+  process group (``setsid``) is adopted by the launcher, not by init, when its parent dies,
+  and is stopped with the rest at the end (SIGTERM, then SIGKILL).
+
+Output is relayed line by line, and a line is never held whole: it is read in pieces of at
+most MAX_LINE_BYTES. The log file gets every byte; the screen shows a longer line cut at
+MAX_LINE_BYTES, with a note saying so. A KeyboardInterrupt traceback from a child the
+launcher itself is stopping (Ctrl-C while it was still importing) is shown as one line;
+the log file keeps the traceback.
 """
 
 from __future__ import annotations
@@ -27,6 +36,7 @@ import time
 from pathlib import Path
 from typing import IO
 
+from launcher import LaunchError
 from launcher.plan import ProcessSpec
 from ros_tutorials_common.dds import apply_dds_defaults
 
@@ -35,6 +45,10 @@ STABLE_RUN_SECONDS = 10.0  # a process that ran this long before exiting did not
 BACKOFF_FIRST_SECONDS = 0.5  # extra respawn delay after the first quick failure, doubled each time
 BACKOFF_MAX_SECONDS = 30.0
 PR_SET_PDEATHSIG = 1
+PR_SET_CHILD_SUBREAPER = 36
+MAX_LINE_BYTES = 64 * 1024  # the most of one output line held in memory or shown on screen
+MAX_TRACEBACK_LINES = 400  # the most lines of a stopping child's traceback held back
+ADOPTED_STOP_SECONDS = 5.0  # adopted processes: from SIGTERM to SIGKILL
 
 _libc = ctypes.CDLL(None, use_errno=True)
 
@@ -43,7 +57,15 @@ def make_log_dir() -> Path:
     """A new folder for this launch's logs, under $ROS_LOG_DIR or ~/.ros/log."""
     base = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
     path = base / f"launch_{time.strftime('%Y-%m-%d-%H-%M-%S')}_{os.getpid()}"
-    path.mkdir(parents=True, exist_ok=True)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        (path / ".writable").touch()
+        (path / ".writable").unlink()
+    except OSError as error:
+        where = "ROS_LOG_DIR" if os.environ.get("ROS_LOG_DIR") else "the log folder"
+        raise LaunchError(
+            f"cannot write the launch's logs to {path} ({where}): {error.strerror or error}"
+        ) from None
     return path
 
 
@@ -153,6 +175,9 @@ class Supervisor:
         """Start everything, watch until done or told to stop, shut down. The exit code."""
         handled = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
         previous = {sig: signal.signal(sig, self._on_signal) for sig in handled}
+        # Orphaned descendants (a grandchild that called setsid) come to us, not to init.
+        _libc.prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
+        self.adopted: set[int] = set()
         self.guardian = Guardian()
         try:
             self.say(f"logging to {self.log_dir}")
@@ -164,6 +189,7 @@ class Supervisor:
                 self.say(f"cannot start a process: {error}")
                 self.failed = True
             self.shutdown()
+            self.stop_adopted()
         finally:
             self.guardian.close()
             for sig, handler in previous.items():
@@ -223,22 +249,112 @@ class Supervisor:
     def _reader(
         self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None
     ) -> threading.Thread:
-        label, log_path = child.spec.label, child.log_path
+        log_path = child.log_path
 
         def pump() -> None:
             assert stream is not None
+            held: list[str] = []
+            cut = False  # the rest of a line already cut on the screen
             with log_path.open("ab") as log:
-                for raw in iter(stream.readline, b""):
+                # readline(limit): a 200 MB line without a newline is read 64 KiB at a time.
+                for raw in iter(lambda: stream.readline(MAX_LINE_BYTES), b""):
                     log.write(raw)
                     log.flush()
-                    if screen is not None:
-                        line = raw.decode(errors="replace").rstrip("\n")
-                        self.show(f"[{label}] {line}", screen)
+                    if screen is None:
+                        continue
+                    complete = raw.endswith(b"\n")
+                    if cut:
+                        cut = not complete
+                        continue
+                    line = raw.decode(errors="replace").rstrip("\n")
+                    if not complete:
+                        cut = True
+                        line += f" [line cut at {MAX_LINE_BYTES} bytes; whole in {log_path}]"
+                    self._relay(child, line, screen, held)
+                if held and screen is not None:
+                    self._flush_held(child, screen, held)
             stream.close()
 
         thread = threading.Thread(target=pump, daemon=True)
         thread.start()
         return thread
+
+    def _relay(self, child: Child, line: str, screen: IO[str], held: list[str]) -> None:
+        """Show a line; hold back a traceback of a child we are stopping (see _flush_held)."""
+        starts = ("Traceback (most recent call last):", "Fatal Python error:")
+        if held or (child.stage and line.startswith(starts)):
+            held.append(line)
+            if len(held) >= MAX_TRACEBACK_LINES:
+                self._flush_held(child, screen, held)
+            return
+        self.show(f"[{child.spec.label}] {line}", screen)
+
+    def _flush_held(self, child: Child, screen: IO[str], held: list[str]) -> None:
+        """A child that gets the launcher's SIGINT while Python is still starting or importing
+        (Ctrl-C in the first moments of a launch) has no handler for it yet, so Python prints a
+        KeyboardInterrupt traceback. That is the expected end of a stop, not an error: one line
+        on the screen, the traceback in the log file. Any other traceback is shown whole."""
+        label = child.spec.label
+        if any(line.startswith("KeyboardInterrupt") for line in held):
+            self.show(f"[{label}] stopped while starting (its traceback is in the log)", screen)
+        else:
+            for line in held:
+                self.show(f"[{label}] {line}", screen)
+        held.clear()
+
+    def _find_adopted(self) -> set[int]:
+        """Processes the kernel gave us as subreaper: our children that we did not start."""
+        ours = {c.process.pid for c in self.children if c.process is not None}
+        ours.add(self.guardian.pid)
+        me, found = os.getpid(), set()
+        for entry in os.scandir("/proc"):
+            if not entry.name.isdigit() or int(entry.name) in ours:
+                continue
+            try:
+                with open(f"/proc/{entry.name}/stat", "rb") as stat:
+                    fields = stat.read().rsplit(b")", 1)[1].split()
+            except (OSError, IndexError):
+                continue  # gone meanwhile
+            if int(fields[1]) == me:
+                found.add(int(entry.name))
+        return found
+
+    def _reap_adopted(self) -> None:
+        for pid in list(self.adopted):
+            try:
+                done, _ = os.waitpid(pid, os.WNOHANG)
+            except ChildProcessError:
+                done = pid
+            if done:
+                self.adopted.discard(pid)
+                self.guardian.forget(pid)
+
+    def note_adopted(self) -> None:
+        """Record newly adopted processes (the guardian kills them if we die); reap exited ones."""
+        for pid in self._find_adopted() - self.adopted:
+            self.adopted.add(pid)
+            self.guardian.watch(pid)  # a setsid process leads its own group: killpg reaches it
+        self._reap_adopted()
+
+    def stop_adopted(self) -> None:
+        """Stop what escaped the process groups and was adopted: SIGTERM, later SIGKILL."""
+        deadline, sig, told = time.monotonic() + ADOPTED_STOP_SECONDS, signal.SIGTERM, False
+        while True:
+            self.note_adopted()
+            if not self.adopted:
+                return
+            if not told:
+                self.say(f"stopping {len(self.adopted)} process(es) that left their group")
+                told = True
+            if time.monotonic() >= deadline or self.hurry:
+                sig = signal.SIGKILL
+            if time.monotonic() >= deadline + ADOPTED_STOP_SECONDS:  # unkillable (state D)
+                self.say(f"still running after SIGKILL: pid(s) {sorted(self.adopted)}")
+                return
+            for pid in self.adopted:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(pid, sig)
+            time.sleep(POLL_SECONDS)
 
     def reap(self, child: Child) -> int:
         assert child.process is not None
@@ -252,8 +368,12 @@ class Supervisor:
         return code
 
     def watch(self) -> None:
+        last_sweep = 0.0
         while self.stop_signal is None and not self.ending:
             now = time.monotonic()
+            if now - last_sweep >= 1.0:  # reap adopted processes that ended on their own
+                self.note_adopted()
+                last_sweep = now
             for child in self.children:
                 if child.process is not None and _exited(child.process.pid):
                     self.on_exit(child, self.reap(child), now)

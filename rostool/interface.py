@@ -10,6 +10,7 @@ import argparse
 import re
 import sys
 
+from ros_tutorials_common.bounded import InputError, read_line
 from rostool.errors import ToolError
 from rostool.typenames import KIND_NAMES, KINDS, definition_path, interface_index, parse_type_name
 
@@ -56,7 +57,10 @@ def type_name_argument(type_name: str) -> str:
     """'-' means: read the name from standard input (`rosservice type /spawn | rossrv show`)."""
     if type_name != "-":
         return type_name
-    type_name = sys.stdin.readline().strip()
+    try:  # from a pipe: one line, bounded (`rossrv show < /dev/zero` must not fill memory)
+        type_name = read_line(sys.stdin, "standard input").strip()
+    except InputError as error:
+        raise ToolError(str(error)) from None
     if not type_name:
         raise ToolError("no type name given, and none on standard input")
     return type_name

@@ -26,6 +26,7 @@ from rosidl_parser.definition import (
     NamespacedType,
 )
 
+from ros_tutorials_common.bounded import InputError, load_yaml
 from rostool.errors import ToolError
 from rostool.typenames import full_type_name
 
@@ -52,7 +53,9 @@ FLOAT32_MAX = 3.4028234663852886e38
 def parse_yaml(text: str) -> Any:
     """Parse the YAML a user typed; a syntax error becomes one line saying where."""
     try:
-        return yaml.safe_load(text)
+        return load_yaml(text, "the YAML")  # bounded: no alias bomb, at most 1 MiB
+    except InputError as error:
+        raise ToolError(str(error)) from None
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f" at column {mark.column + 1}" if mark else ""
@@ -112,9 +115,12 @@ def _convert(value: Any, slot_type: Any, current: Any, path: str) -> Any:
             items.append(_convert(item, item_type, template, f"{path}[{i}]"))
         return items
     if isinstance(slot_type, AbstractGenericString):
-        if isinstance(value, (dict, list)) or value is None:
-            raise ToolError(f"{path} is a string, got {value!r}")
-        text = value if isinstance(value, str) else str(value)  # `name: 123` is a string too
+        if not isinstance(value, str):  # YAML read `5` as a number, `true` as a boolean
+            raise ToolError(
+                f"{path} is a string, got {value!r} ({type(value).__name__}); "
+                f"quote it to send text: '{{{path.rsplit('.', 1)[-1]}: \"{value}\"}}'"
+            )
+        text = value
         maximum = getattr(slot_type, "maximum_size", None)
         if maximum is not None and len(text) > maximum:
             raise ToolError(f"{path} takes at most {maximum} characters, got {len(text)}")

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 from typing import Any
 
 import yaml
@@ -18,6 +17,12 @@ from rcl_interfaces.msg import ParameterType
 from rcl_interfaces.srv import GetParameters, ListParameters, SetParameters
 from rclpy.parameter import Parameter, parameter_value_to_python
 
+from ros_tutorials_common.bounded import (
+    InputError,
+    load_yaml_file,
+    parameter_problem,
+    parameters_problem,
+)
 from rostool.errors import ToolError
 from rostool.graph import Graph
 from rostool.messages import parse_yaml
@@ -82,6 +87,10 @@ def set_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
 def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str, str]:
     """Set parameters on a node, each on its own; return {name: reason} of those refused."""
     node = _node_name(node)
+    for name, value in values.items():
+        problem = parameter_problem(name, value)  # e.g. an integer rclpy cannot hold (int64)
+        if problem:
+            raise ToolError(f"cannot set {problem}")
     try:
         params = [Parameter(name, value=value).to_parameter_msg() for name, value in values.items()]
     except (TypeError, ValueError) as error:
@@ -125,15 +134,17 @@ def dump_data(graph: Graph, node: str) -> dict[str, Any]:
 def read_params_file(path: str) -> dict[Any, Any]:
     """The mapping a params file holds; a missing, unreadable or malformed file is a ToolError."""
     try:
-        data = yaml.safe_load(Path(path).read_text())
-    except OSError as error:
-        raise ToolError(f"cannot read {path}: {error.strerror}") from None
-    except UnicodeDecodeError:
-        raise ToolError(f"cannot read {path}: not a text file") from None
+        data = load_yaml_file(path)  # at most 1 MiB, UTF-8, bounded aliases
+    except InputError as error:
+        raise ToolError(str(error)) from None
     except yaml.YAMLError as error:
         raise ToolError(f"{path} is not valid YAML: {str(error).splitlines()[0]}") from None
     if not isinstance(data, dict):
         raise ToolError(f"{path} is not a parameters file (expected 'node: ros__parameters: ...')")
+    for key, entry in data.items():  # checked before any node is touched
+        problem = parameters_problem({key: entry})
+        if problem:
+            raise ToolError(f"{path}: {problem}")
     return data
 
 

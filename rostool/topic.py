@@ -13,6 +13,8 @@ from typing import Any
 
 import yaml
 from rclpy.duration import Duration
+from rclpy.executors import ExternalShutdownException
+from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
@@ -192,9 +194,20 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
         # subscription would miss one sent before it matched, so send it again on each join.
         subscribers = publisher.get_subscription_count()
         if subscribers > served:
-            publisher.publish(msg)
+            _publish_one(graph, publisher, msg)
         served = subscribers
         graph.spin_once(0.1)
+
+
+def _publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
+    try:
+        publisher.publish(msg)
+    except _rclpy.RCLError:
+        # SIGTERM shut ROS down between two spins (at -r 1e9 the loop never spins): that is
+        # the end of the command, as it is when a spin notices it, not an error.
+        if not graph.node.context.ok():
+            raise ExternalShutdownException() from None
+        raise
 
 
 def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: int | None) -> None:
@@ -207,7 +220,7 @@ def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: i
             graph.spin_once(min(wait, 0.1))
             continue
         count += 1
-        publisher.publish(msg)
+        _publish_one(graph, publisher, msg)
         print(f"publishing #{count}: {msg}", flush=True)
         next_time += 1.0 / rate
 

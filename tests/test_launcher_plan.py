@@ -356,6 +356,7 @@ def test_ros2_namespaces_scoped_groups_and_settings(tmp_path):
                      '<env name="B" value="2"/><param from="p.yaml"/>')
         + "</launch>"
     )  # fmt: skip
+    (tmp_path / "p.yaml").write_text("/**:\n  ros__parameters:\n    rate: 1.0\n")
     in_group, after = plan(tmp_path, xml, "t.launch.xml")
     assert in_group.node == "/g/sub/in_group" and in_group.env == {"A": None}
     assert after.node == "/leaks/after" and after.env == {"A": "1", "B": "2"}

@@ -1,0 +1,198 @@
+"""Reading what users hand us with limits: files, pipes, YAML documents, parameter values.
+
+Everything this project reads from a user (launch files, params files, ``<rosparam>`` text,
+YAML typed on a command line, a type name piped into ``rosmsg show``) goes through here, so
+``rosparam load /dev/zero`` or a 500-byte YAML "billion laughs" is refused with one line
+instead of eating the machine's memory:
+
+- a file or pipe: at most MAX_INPUT_BYTES (1 MiB), read in one bounded read;
+- a YAML document: at most MAX_YAML_ALIASES aliases (``*name``), at most MAX_YAML_NODES
+  values once every alias is expanded, nesting at most MAX_YAML_DEPTH deep;
+- a parameter value: what a ROS parameter can hold (bool, int64, float, string, a flat list
+  of one of those), under string keys.
+
+Nothing here imports rclpy: the launcher uses it and stays light.
+"""
+
+from __future__ import annotations
+
+import datetime
+import os
+from typing import IO, Any
+
+import yaml
+
+MAX_INPUT_BYTES = 1024 * 1024  # a file or a pipe
+MAX_YAML_ALIASES = 100  # *alias references in one document
+MAX_YAML_NODES = 100_000  # values in a document once its aliases are expanded
+MAX_YAML_DEPTH = 100  # nested mappings and lists
+INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1
+
+
+class InputError(ValueError):
+    """Input refused: the message is one line that says why."""
+
+
+def _size(limit: int) -> str:
+    return f"{limit // (1024 * 1024)} MiB" if limit % (1024 * 1024) == 0 else f"{limit} bytes"
+
+
+def read_bytes(path: str | os.PathLike, limit: int = MAX_INPUT_BYTES) -> bytes:
+    """The bytes of a file (or device, or named pipe), refusing more than ``limit``."""
+    try:
+        with open(path, "rb") as file:
+            data = file.read(limit + 1)
+    except OSError as error:
+        raise InputError(f"cannot read {path}: {error.strerror or error}") from None
+    if len(data) > limit:
+        raise InputError(f"{path} is larger than {_size(limit)}; refusing to read it")
+    return data
+
+
+def decode(data: bytes, source: str) -> str:
+    """Bytes as UTF-8 text; anything else is refused, naming the first bad byte."""
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise InputError(
+            f"{source} is not a text file (not UTF-8: byte 0x{data[error.start]:02x} "
+            f"at offset {error.start})"
+        ) from None
+
+
+def read_text(path: str | os.PathLike, limit: int = MAX_INPUT_BYTES) -> str:
+    """A UTF-8 text file, refusing more than ``limit`` bytes."""
+    return decode(read_bytes(path, limit), str(path))
+
+
+def read_line(stream: IO[str], source: str, limit: int = 4096) -> str:
+    """One line from a text stream (a pipe), refusing a line longer than ``limit``."""
+    try:
+        line = stream.readline(limit + 1)
+    except UnicodeDecodeError:
+        raise InputError(f"{source} is not a text file (not UTF-8)") from None
+    if len(line) > limit and not line.endswith("\n"):
+        raise InputError(f"{source}: a line longer than {limit} characters; refusing it")
+    return line
+
+
+class _BoundedLoader(yaml.SafeLoader):
+    """PyYAML's safe loader, counting aliases and depth while it composes the document."""
+
+    def __init__(self, stream: str) -> None:
+        super().__init__(stream)
+        self.aliases = 0
+        self.depth = 0
+
+    def compose_node(self, parent: Any, index: Any) -> Any:
+        if self.check_event(yaml.AliasEvent):
+            self.aliases += 1
+            if self.aliases > MAX_YAML_ALIASES:
+                raise InputError(f"more than {MAX_YAML_ALIASES} YAML aliases")
+        self.depth += 1
+        try:
+            if self.depth > MAX_YAML_DEPTH:
+                raise InputError(f"YAML nested more than {MAX_YAML_DEPTH} deep")
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
+
+
+def _expanded_size(root: yaml.Node) -> int:
+    """How many values the document holds with every alias expanded (stops past the limit)."""
+    sizes: dict[int, int] = {}
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    open_nodes: set[int] = set()
+    while stack:
+        node, children_done = stack.pop()
+        if id(node) in sizes:
+            continue
+        children = [
+            item
+            for entry in (node.value if isinstance(node, yaml.CollectionNode) else [])
+            for item in (entry if isinstance(entry, tuple) else (entry,))
+        ]
+        if children_done:
+            open_nodes.discard(id(node))
+            sizes[id(node)] = min(1 + sum(sizes[id(c)] for c in children), MAX_YAML_NODES + 1)
+            continue
+        if id(node) in open_nodes:
+            raise InputError("a YAML alias refers to the value it is inside of")
+        open_nodes.add(id(node))
+        stack.append((node, True))
+        stack.extend((child, False) for child in children if id(child) not in sizes)
+    return sizes[id(root)]
+
+
+def load_yaml(text: str, source: str = "YAML") -> Any:
+    """Parse one YAML document within the limits above.
+
+    Too large, too many aliases, too deep: InputError naming ``source``. A syntax error is
+    PyYAML's own yaml.YAMLError (callers already report those with their position).
+    """
+    if len(text.encode("utf-8", "surrogatepass")) > MAX_INPUT_BYTES:
+        raise InputError(f"{source} is larger than {_size(MAX_INPUT_BYTES)}; refusing it")
+    loader = _BoundedLoader(text)
+    try:
+        try:
+            node = loader.get_single_node()
+        except InputError as error:
+            raise InputError(f"{source}: {error}") from None
+        if node is None:
+            return None
+        if _expanded_size(node) > MAX_YAML_NODES:
+            raise InputError(
+                f"{source}: more than {MAX_YAML_NODES} values once its aliases are expanded"
+            )
+        return loader.construct_document(node)
+    finally:
+        loader.dispose()
+
+
+def load_yaml_file(path: str | os.PathLike) -> Any:
+    """A YAML file, read and parsed within the limits."""
+    return load_yaml(read_text(path), str(path))
+
+
+def parameter_problem(name: str, value: Any) -> str | None:
+    """Why ``value`` cannot be a ROS parameter called ``name``, or None if it can."""
+    if isinstance(value, bool | str | float) or value is None:
+        return None
+    if isinstance(value, int):
+        if INT64_MIN <= value <= INT64_MAX:
+            return None
+        return f"parameter '{name}' = {value} does not fit a ROS integer (int64)"
+    if isinstance(value, list):
+        for item in value:
+            if isinstance(item, list | dict):
+                return f"parameter '{name}' is a list of lists or mappings; ROS lists are flat"
+            problem = parameter_problem(name, item)
+            if problem:
+                return problem
+        kinds = {type(item) for item in value}
+        if len(kinds) > 1 and kinds != {int, float}:
+            return f"parameter '{name}' mixes types in one list; a ROS list holds one type"
+        return None
+    if isinstance(value, datetime.date):
+        return (
+            f"parameter '{name}' = {value} is a YAML date; ROS parameters have no date type "
+            "(quote it to make it a string)"
+        )
+    if isinstance(value, bytes):
+        return f"parameter '{name}' is binary data; use a list of integers"
+    return f"parameter '{name}' has a value of type {type(value).__name__}, not a ROS type"
+
+
+def parameters_problem(values: Any, prefix: str = "") -> str | None:
+    """Like parameter_problem, for a mapping of names (nested mappings are namespaces)."""
+    if not isinstance(values, dict):
+        return parameter_problem(prefix or "?", values)
+    for key, value in values.items():
+        if not isinstance(key, str):
+            return f"key {key!r} under '{prefix or '/'}' is not a string; parameter names are text"
+        name = f"{prefix}.{key}" if prefix else key
+        problem = parameters_problem(value, name) if isinstance(value, dict) else None
+        problem = problem or (None if isinstance(value, dict) else parameter_problem(name, value))
+        if problem:
+            return problem
+    return None

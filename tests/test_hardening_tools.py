@@ -1,0 +1,126 @@
+"""The tools under bad input: one clear line and a non-zero exit, never a traceback, never
+unbounded memory (rosparam load /dev/zero, a YAML alias bomb on the command line)."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import threading
+
+import pytest
+from helpers import TIMEOUT
+from test_hardening_launcher import BOMB
+from test_rostool import BIN, _ready, fails, ok, tool
+
+
+@pytest.fixture
+def parameter_lesson(node_process):
+    """The parameter lesson's server: /ros_tutorial_srv and its calculation_method (1..4)."""
+    return _ready(node_process("-m", "ros_tutorials_parameter.server"))
+
+
+def test_rosparam_set_an_integer_beyond_int64_is_one_line(parameter_lesson):
+    line = fails("rosparam", "set", "/calculation_method", "99999999999999999999")
+    assert "does not fit a ROS integer (int64)" in line
+    assert ok("rosparam", "get", "/calculation_method").strip() == "1"  # nothing changed
+
+
+def test_rostool_param_set_an_integer_beyond_int64_is_one_line(parameter_lesson):
+    line = fails(
+        "rostool", "param", "set", "/service_server", "calculation_method", "-99999999999999999999"
+    )
+    assert "does not fit a ROS integer (int64)" in line
+
+
+def test_a_number_into_a_string_field_is_refused():
+    line = fails("rostopic", "pub", "-1", "/chatter", "std_msgs/String", "{data: 5}")
+    assert "data is a string, got 5 (int)" in line and "quote it" in line
+    line = fails("rostool", "topic", "pub", "/chatter", "std_msgs/msg/String", "{data: true}")
+    assert "data is a string" in line
+
+
+def test_a_yaml_alias_bomb_on_the_command_line_is_refused():
+    # Anchors inside the value: without the limit the error message alone (repr of 9**9
+    # strings) would fill the memory.
+    levels = ["&a [lol, lol, lol, lol, lol, lol, lol, lol, lol]"] + [
+        f"&{name} [{', '.join([f'*{prev}'] * 9)}]"
+        for prev, name in zip("abcdefgh", "bcdefghi", strict=True)
+    ]
+    bomb = f"{{data: [{', '.join(levels)}]}}"
+    assert len(bomb) < 600
+    line = fails("rostopic", "pub", "-1", "/chatter", "std_msgs/String", bomb)
+    assert "once its aliases are expanded" in line
+    line = fails("rostool", "topic", "pub", "/chatter", "std_msgs/msg/String", BOMB)
+    assert "once its aliases are expanded" in line
+
+
+def test_rosparam_load_dev_zero_is_refused_within_the_size_limit():
+    line = fails("rosparam", "load", "/dev/zero")
+    assert line == "error: /dev/zero is larger than 1 MiB; refusing to read it"
+    line = fails("rostool", "param", "load", "/service_server", "/dev/zero")
+    assert "larger than 1 MiB" in line
+
+
+@pytest.mark.parametrize(
+    ("content", "expected"),
+    [
+        (b"/service_server:\n  ros__parameters:\n    calculation_method: 2024-01-01\n", "date"),
+        (b"/service_server:\n  ros__parameters:\n    1: 2\n", "is not a string"),
+        (b"/service_server:\n  ros__parameters:\n    x: 99999999999999999999\n", "int64"),
+        (b"/service_server:\n  ros__parameters:\n    x: caf\xe9\n", "not UTF-8"),
+    ],
+)
+def test_rosparam_load_checks_the_file_before_touching_a_node(tmp_path, content, expected):
+    path = tmp_path / "params.yaml"
+    path.write_bytes(content)
+    assert expected in fails("rosparam", "load", str(path))
+
+
+def test_rossrv_show_reading_dev_zero_is_refused():
+    with open("/dev/zero", "rb") as zeros:
+        done = subprocess.run(
+            [str(BIN / "rossrv"), "show"], stdin=zeros, capture_output=True, timeout=TIMEOUT
+        )
+    assert done.returncode == 1 and b"Traceback" not in done.stderr
+    assert b"longer than 4096 characters" in done.stderr
+
+
+def test_rostopic_pub_at_1e9_hz_ends_cleanly_on_sigterm():
+    """At -r 1e9 the loop never waits, so SIGTERM shuts ROS down between two publishes."""
+    proc = subprocess.Popen(
+        [str(BIN / "rostopic"), "pub", "-r", "1e9", "/hardening_flood", "std_msgs/String", "hi"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
+    flooding = threading.Event()
+
+    def drain() -> None:  # read the flood to its end, so the tool never sees a broken pipe
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            if line.startswith(b"publishing #100:"):
+                flooding.set()
+
+    reader = threading.Thread(target=drain, daemon=True)
+    reader.start()
+    try:
+        assert flooding.wait(TIMEOUT), "rostopic pub -r 1e9 did not start publishing"
+        proc.send_signal(signal.SIGTERM)
+        assert proc.stderr is not None
+        err = proc.stderr.read()
+        proc.wait(TIMEOUT)
+        reader.join(TIMEOUT)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert b"Traceback" not in err and b"RCLError" not in err, err.decode(errors="replace")
+    assert proc.returncode == 0, err  # like Ctrl-C: how a flood ends
+
+
+def test_the_tools_still_work_after_refusing(parameter_lesson):
+    """Nothing already running is hurt by a refused request."""
+    fails("rosparam", "set", "/calculation_method", "99999999999999999999")
+    result = tool("rosservice", "call", "/ros_tutorial_srv", "10", "5")
+    assert result.returncode == 0 and "result: 15" in result.stdout
