@@ -309,7 +309,6 @@ class BagWriter:
         self._mcap.start(profile=PROFILE, library=LIBRARY)
         # rosbag2 writes its metadata record when the file opens and again when it closes.
         self._mcap.add_metadata("rosbag2", {"serialized_metadata": dump_yaml(self.metadata())})
-        self._file.good_offset = self._file.offset
         write_metadata_file(self.folder, self.metadata())
 
     @property
@@ -355,6 +354,7 @@ class BagWriter:
         """One message: its serialized bytes, receive time (log time) and send time (ns)."""
         if self.failed:
             raise self.failed
+        offset = self._file.offset
         self._guard(self._mcap.add_message, self.channels[topic], log_time, data, publish_time)
         info = self.file_info
         if info.message_count == 0:
@@ -366,6 +366,8 @@ class BagWriter:
         info.duration = self._end_time - info.starting_time
         info.message_count += 1
         self.topics[topic].message_count += 1
+        if self._file.offset != offset:  # a full chunk went out, this message in it
+            self._remember_flushed()
         self.flush_if_due()
 
     def flush_if_due(self) -> None:
@@ -378,12 +380,15 @@ class BagWriter:
             raise self.failed
         self._last_flush = time.monotonic()
         self._guard(self._mcap.flush)
-        self._file.good_offset = self._file.offset
+        self._remember_flushed()
+        self._guard(write_metadata_file, self.folder, self.metadata())
+
+    def _remember_flushed(self) -> None:
+        """What is on disk now: the counts a failure later would leave readable."""
         self._flushed = (
             FileInfo(**self.file_info.__dict__),
             {name: t.message_count for name, t in self.topics.items()},
         )
-        self._guard(write_metadata_file, self.folder, self.metadata())
 
     def close(self) -> None:
         """Finish the file (summary, footer) and write the final metadata.yaml."""
@@ -409,10 +414,13 @@ class BagWriter:
     def _guard(self, function: Any, *args: Any) -> Any:
         """Run a write; on failure keep what is complete and raise one BagError."""
         try:
-            return function(*args)
+            result = function(*args)
         except OSError as error:
             self.failed = self._fail(error)
             raise self.failed from None
+        if self._file.fd >= 0:  # each call of the mcap writer ends at a record boundary
+            self._file.good_offset = self._file.offset
+        return result
 
     def _fail(self, error: OSError) -> BagError:
         kept = self._flushed[0].message_count
