@@ -65,7 +65,7 @@ def ros1_info(bag: Bag) -> str:
     duration = bag.duration / NS
     lines = [
         f"path:        {bag.path}",
-        f"version:     rosbag2 (metadata 9), {bag.storage_id} storage",
+        f"version:     rosbag2 (metadata {bag.version or 'none'}), {bag.storage_id} storage",
         f"duration:    {duration:.1f}s",
         f"start:       {_ros1_time(bag.start)}",
         f"end:         {_ros1_time(bag.end)}",

@@ -23,6 +23,8 @@ from __future__ import annotations
 import contextlib
 import datetime
 import heapq
+import io
+import itertools
 import os
 import struct
 import time
@@ -32,10 +34,22 @@ from pathlib import Path
 from typing import Any
 
 import yaml
-from mcap.exceptions import McapError
-from mcap.reader import SeekingReader
-from mcap.records import Channel, Message, Metadata, Schema
-from mcap.stream_reader import StreamReader
+from mcap.data_stream import ReadDataStream
+from mcap.exceptions import EndOfFile, McapError
+from mcap.opcode import Opcode
+from mcap.reader import FOOTER_SIZE, SeekingReader
+from mcap.records import (
+    Channel,
+    Chunk,
+    Footer,
+    Message,
+    Metadata,
+    MetadataIndex,
+    Schema,
+    Statistics,
+    SummaryOffset,
+)
+from mcap.stream_reader import MAGIC_SIZE, StreamReader, breakup_chunk
 from mcap.writer import CompressionType, Writer
 
 from rostool.errors import ToolError
@@ -464,6 +478,7 @@ class Bag:
     storage_id: str
     chunk_count: int
     complete: bool  # every file had its summary (False: scanned, e.g. a killed recording)
+    version: str = ""  # of the rosbag2 metadata ("" for a lone .mcap file)
     warnings: list[str] = field(default_factory=list)
 
     @property
@@ -490,6 +505,10 @@ def _short(error: BaseException) -> str:
     return str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
 
 
+_READ_ERRORS = (McapError, struct.error, ValueError, EOFError, OSError, KeyError)
+_SUMMARY_GROUPS = (Opcode.SCHEMA, Opcode.CHANNEL, Opcode.STATISTICS, Opcode.METADATA_INDEX)
+
+
 class _McapFile:
     """One .mcap file: its summary, or what a scan up to its last complete record finds."""
 
@@ -502,81 +521,155 @@ class _McapFile:
         self.schemas: dict[int, Schema] = {}
         self.channels: dict[int, Channel] = {}
         self.counts: dict[int, int] = {}
-        self.metadata: list[Metadata] = []
+        self.metadata_offsets: list[int] = []
         self.start = self.end = 0
         self.message_count = 0
         self.chunk_count = 0
         self.complete = True
-        self.scan_error = ""
         self.profile = ""
         try:
             self.reader = SeekingReader(self.stream, validate_crcs=True)
             self.profile = self.reader.get_header().profile
-        except (McapError, struct.error, ValueError, EOFError, OSError) as error:
+        except _READ_ERRORS as error:
             self.stream.close()
             raise BagError(f"{path} is not an MCAP file ({_short(error)})") from None
-        summary = None
-        with contextlib.suppress(McapError, struct.error, ValueError, EOFError, OSError):
-            summary = self.reader.get_summary()
-        if summary is not None and summary.statistics is not None:
-            self.schemas, self.channels = dict(summary.schemas), dict(summary.channels)
-            stats = summary.statistics
-            self.counts = dict(stats.channel_message_counts)
-            self.message_count = stats.message_count
-            self.start, self.end = stats.message_start_time, stats.message_end_time
-            self.chunk_count = stats.chunk_count
-            self._has_chunk_index = bool(summary.chunk_indexes)
-            with contextlib.suppress(McapError, struct.error, ValueError, EOFError):
-                self.metadata = list(self.reader.iter_metadata())
+        statistics = None
+        with contextlib.suppress(*_READ_ERRORS):
+            statistics = self._read_summary()
+        if statistics is not None:
+            self.counts = dict(statistics.channel_message_counts)
+            self.message_count = statistics.message_count
+            self.start, self.end = statistics.message_start_time, statistics.message_end_time
+            self.chunk_count = statistics.chunk_count
         else:
             self.complete = False
-            self._has_chunk_index = False
             for _ in self._scan():  # counts, times, schemas and channels of the complete part
                 pass
+
+    def _read_summary(self) -> Statistics | None:
+        """Schemas, channels, statistics and metadata offsets, and nothing else.
+
+        The summary's offsets say where each group is, so the chunk indexes (most of the
+        summary of a large bag) are not even parsed: `info` needs none of them.
+        """
+        stream = self.stream
+        stream.seek(-(FOOTER_SIZE + MAGIC_SIZE), io.SEEK_END)
+        footer = next(StreamReader(stream, skip_magic=True).records)
+        if not isinstance(footer, Footer) or footer.summary_start == 0:
+            return None
+        groups: dict[int, tuple[int, int]] = {}
+        if footer.summary_offset_start:
+            stream.seek(footer.summary_offset_start)
+            for record in StreamReader(stream, skip_magic=True).records:
+                if isinstance(record, SummaryOffset):
+                    groups[record.group_opcode] = (record.group_start, record.group_length)
+        if not all(opcode in groups for opcode in _SUMMARY_GROUPS[:3]):
+            summary = self.reader.get_summary()  # no offsets: read the whole summary
+            if summary is None:
+                return None
+            self.schemas, self.channels = dict(summary.schemas), dict(summary.channels)
+            self.metadata_offsets = [index.offset for index in summary.metadata_indexes]
+            return summary.statistics
+        statistics = None
+        for opcode in _SUMMARY_GROUPS:
+            if opcode not in groups:
+                continue
+            start, length = groups[opcode]
+            stream.seek(start)
+            data = io.BytesIO(stream.read(length))
+            with contextlib.suppress(EndOfFile):
+                for record in StreamReader(data, skip_magic=True).records:
+                    if isinstance(record, Schema):
+                        self.schemas[record.id] = record
+                    elif isinstance(record, Channel):
+                        self.channels[record.id] = record
+                    elif isinstance(record, Statistics):
+                        statistics = record
+                    elif isinstance(record, MetadataIndex):
+                        self.metadata_offsets.append(record.offset)
+        return statistics
+
+    def rosbag2_metadata(self) -> list[dict[str, str]]:
+        """The `rosbag2` metadata records of the file (rosbag2 writes one at open and close)."""
+        found = []
+        for offset in self.metadata_offsets:
+            with contextlib.suppress(*_READ_ERRORS):
+                self.stream.seek(offset)
+                record = next(StreamReader(self.stream, skip_magic=True).records)
+                if isinstance(record, Metadata) and record.name == "rosbag2":
+                    found.append(record.metadata)
+        return found
 
     def _scan(self) -> Iterator[tuple[Channel, Message]]:
         """Every record up to the end, or up to the first incomplete or damaged one."""
         self.stream.seek(0)
         counts: dict[int, int] = {}
-        start = end = count = chunks = 0
-        records = StreamReader(self.stream, validate_crcs=True, emit_chunks=False).records
-        try:
+        start = end = count = 0
+        records = StreamReader(self.stream, validate_crcs=True).records
+        with contextlib.suppress(*_READ_ERRORS):
             for record in records:
                 if isinstance(record, Schema):
                     self.schemas[record.id] = record
                 elif isinstance(record, Channel):
                     self.channels[record.id] = record
-                elif isinstance(record, Metadata):
-                    self.metadata.append(record)
                 elif isinstance(record, Message) and record.channel_id in self.channels:
                     counts[record.channel_id] = counts.get(record.channel_id, 0) + 1
                     start = record.log_time if count == 0 else min(start, record.log_time)
                     end = max(end, record.log_time)
                     count += 1
                     yield self.channels[record.channel_id], record
-        except (McapError, struct.error, ValueError, EOFError, OSError, KeyError) as error:
-            self.scan_error = _short(error) or "file ends early"
         if not self.complete:
             self.counts, self.start, self.end, self.message_count = counts, start, end, count
-            self.chunk_count = chunks
 
     def messages(self, topics: set[str] | None) -> Iterator[BagMessage]:
-        if self._has_chunk_index:
-            try:
-                for _schema, channel, message in self.reader.iter_messages(
-                    topics=sorted(topics) if topics is not None else None, log_time_order=True
-                ):
+        """The messages in log-time order (a killed recording's: in the order written)."""
+        if not self.complete:
+            for channel, message in self._scan():
+                if topics is None or channel.topic in topics:
                     yield BagMessage(
                         channel.topic, message.data, message.log_time, message.publish_time
                     )
-            except (McapError, struct.error, ValueError, EOFError) as error:
-                raise BagError(f"{self.path} is damaged: {_short(error)}") from None
             return
-        for channel, message in self._scan():
-            if topics is None or channel.topic in topics:
+        try:
+            yield from self._indexed_messages(topics)
+        except _READ_ERRORS as error:
+            raise BagError(f"{self.path} is damaged: {_short(error)}") from None
+
+    def _indexed_messages(self, topics: set[str] | None) -> Iterator[BagMessage]:
+        summary = self.reader.get_summary()
+        assert summary is not None
+        wanted = {
+            channel_id
+            for channel_id, channel in summary.channels.items()
+            if topics is None or channel.topic in topics
+        }
+        chunks = sorted(summary.chunk_indexes, key=lambda index: index.chunk_start_offset)
+        in_order = all(
+            b.message_start_time >= a.message_end_time for a, b in itertools.pairwise(chunks)
+        )
+        if not in_order:  # overlapping chunks: the mcap reader merges them (slower)
+            for _schema, channel, message in self.reader.iter_messages(
+                topics=sorted(topics) if topics is not None else None, log_time_order=True
+            ):
                 yield BagMessage(
                     channel.topic, message.data, message.log_time, message.publish_time
                 )
+            return
+        # Chunks one after the other in time (what a recorder writes): sort within each.
+        for index in chunks:
+            if wanted.isdisjoint(index.message_index_offsets) and index.message_index_offsets:
+                continue
+            self.stream.seek(index.chunk_start_offset + 1 + 8)
+            chunk = Chunk.read(ReadDataStream(self.stream))
+            found = [
+                record
+                for record in breakup_chunk(chunk, validate_crc=True)
+                if isinstance(record, Message) and record.channel_id in wanted
+            ]
+            found.sort(key=lambda message: message.log_time)
+            for message in found:
+                topic = summary.channels[message.channel_id].topic
+                yield BagMessage(topic, message.data, message.log_time, message.publish_time)
 
     def close(self) -> None:
         self.stream.close()
@@ -667,11 +760,10 @@ class BagReader:
         distro = self.metadata.get("ros_distro") or ""
         if not distro:
             for mcap_file in self.files:
-                for record in mcap_file.metadata:
-                    if record.name == "rosbag2":
-                        with contextlib.suppress(yaml.YAMLError, AttributeError):
-                            text = record.metadata.get("serialized_metadata", "")
-                            distro = (yaml.safe_load(text) or {}).get("ros_distro") or distro
+                for record in mcap_file.rosbag2_metadata():
+                    with contextlib.suppress(yaml.YAMLError, AttributeError):
+                        text = record.get("serialized_metadata", "")
+                        distro = (yaml.safe_load(text) or {}).get("ros_distro") or distro
         return Bag(
             path=self.path,
             files=[f.path for f in self.files],
@@ -684,6 +776,7 @@ class BagReader:
             storage_id=STORAGE_ID,
             chunk_count=sum(f.chunk_count for f in self.files),
             complete=all(f.complete for f in self.files),
+            version=str(self.metadata.get("version", "")),
             warnings=warnings,
         )
 
