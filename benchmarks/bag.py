@@ -111,7 +111,7 @@ def record_and_play() -> list[Row]:
 
 def _play_timing(folder: Path) -> list[Row]:
     with BagReader(folder) as reader:
-        recorded = [(m.topic, m.log_time) for m in reader.messages()]
+        recorded = [(m.data[:16].hex(), m.log_time) for m in reader.messages()]
     listener = start(python("-m", "benchmarks.bag_worker", "listen", str(len(recorded))))
     try:
         wait_for_lines(listener, lambda line: "ready" in line, timeout=60)
@@ -125,20 +125,11 @@ def _play_timing(folder: Path) -> list[Row]:
         arrivals = _json_result(listener, timeout=60)["arrivals"]
     finally:
         stop(listener)
-    # Pair each topic's arrivals with its recorded messages, in order.
-    by_topic: dict[str, list[int]] = {}
-    for topic, arrival in arrivals:
-        by_topic.setdefault(topic, []).append(arrival)
-    errors = []
-    first_log = recorded[0][1]
-    first_arrival = min(a for _t, a in arrivals)
-    seen: dict[str, int] = {}
-    for topic, log_time in recorded:
-        index = seen.get(topic, 0)
-        seen[topic] = index + 1
-        if index < len(by_topic.get(topic, [])):
-            played = by_topic[topic][index] - first_arrival
-            errors.append(abs(played - (log_time - first_log)) / 1e9)
+    # Pair each arrival with its recorded message by the message's first bytes (its stamp).
+    log_times = {key: log_time for key, log_time in recorded}
+    pairs = [(log_times[key], arrival) for key, arrival in arrivals if key in log_times]
+    first_log, first_arrival = min(pairs)
+    errors = [abs((arrival - first_arrival) - (log - first_log)) / 1e9 for log, arrival in pairs]
     return [
         Row(
             "play timing error vs recorded timestamps, p50/p99",

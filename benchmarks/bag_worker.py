@@ -72,15 +72,17 @@ def publish(seconds: float) -> dict:
 
 
 def listen(count: int) -> dict:
-    """Arrival times (monotonic ns) of the first COUNT messages on both topics, in order."""
+    """Arrival times of the first COUNT messages on both topics, in order: the time DDS
+    received each (rmw's received_timestamp), so this process's own lag does not count."""
     node = Node("bag_bench_listener")
     arrivals: list[tuple[str, int]] = []
     for topic, msg_type in ((TUTORIAL_TOPIC, MsgTutorial), (IMAGE_TOPIC, Image)):
         node.create_subscription(
             msg_type,
             topic,
-            lambda _data, t=topic: arrivals.append((t, time.monotonic_ns())),
-            QOS,
+            # The first bytes hold the stamp: they say which recorded message this is.
+            lambda data, info: arrivals.append((data[:16].hex(), info["received_timestamp"])),
+            RECORDER_QOS,
             raw=True,
         )
     print("ready", flush=True)
