@@ -12,10 +12,13 @@ from __future__ import annotations
 
 import errno
 import os
+import re
+import select
 import shutil
 import signal
 import subprocess
 import sys
+import termios
 import time
 from pathlib import Path
 
@@ -62,7 +65,9 @@ def usage_error(*args: str) -> str:
     return result.stderr.strip().splitlines()[-1]
 
 
-def write_bag(folder: Path, topics: dict[str, str], count: int = 5) -> list[bytes]:
+def write_bag(
+    folder: Path, topics: dict[str, str], count: int = 5, spacing: float = 0.1
+) -> list[bytes]:
     """A small bag written directly (no ROS graph): `count` String messages per topic."""
     writer = BagWriter(folder, chunk_size=500)  # several chunks, even for a few messages
     sent = []
@@ -72,7 +77,7 @@ def write_bag(folder: Path, topics: dict[str, str], count: int = 5) -> list[byte
         for topic in topics:
             data = serialize_message(String(data=f"{topic} {i}"))
             sent.append(data)
-            writer.write(topic, data, 1_700_000_000_000_000_000 + i * 100_000_000, 0)
+            writer.write(topic, data, 1_700_000_000_000_000_000 + int(i * spacing * 1e9), 0)
     writer.close()
     return sent
 
@@ -328,6 +333,53 @@ def test_sigkill_leaves_a_bag_readable_up_to_the_last_flush(ros_domain, tmp_path
         messages = list(reader.messages())
     assert len(messages) >= at_kill
     assert all(m.topic == "/chatter" for m in messages)
+
+
+def test_space_pauses_and_s_steps_in_a_terminal(ros_domain, tmp_path) -> None:
+    folder = tmp_path / "steps"
+    write_bag(folder, {"/words": "std_msgs/msg/String"}, count=20, spacing=1.0)  # 19 s long
+    controller, terminal = os.openpty()
+    saved = termios.tcgetattr(terminal)
+    player = subprocess.Popen(
+        [str(BIN / "rosbag"), "play", str(folder)],
+        stdin=terminal,
+        stdout=terminal,
+        stderr=terminal,
+        start_new_session=True,
+    )
+    text = ""
+
+    def wait_for(pattern: str, count: int = 1) -> str:
+        nonlocal text
+        deadline = time.monotonic() + TIMEOUT
+        while len(re.findall(pattern, text)) < count:
+            assert time.monotonic() < deadline, f"{pattern!r} not seen; output:\n{text}"
+            ready, _, _ = select.select([controller], [], [], 0.5)
+            if ready:
+                text += os.read(controller, 4096).decode(errors="replace")
+        return text
+
+    try:
+        wait_for("Hit space to toggle paused, or 's' to step.")
+        os.write(controller, b" ")
+        wait_for(r"\[PAUSED\]")
+        for steps in (1, 2, 3):
+            os.write(controller, b"s")
+            wait_for(r"\[PAUSED\]", 1 + steps)
+        bag_times = [float(t) for t in re.findall(r"\[PAUSED\]  Bag Time: ([\d.]+)", text)]
+        assert bag_times[1:] == sorted(set(bag_times[1:])), text  # one message further each
+        os.write(controller, b" ")
+        wait_for(r"\[RUNNING\]")
+        player.send_signal(signal.SIGINT)
+        assert player.wait(TIMEOUT) == 130  # interrupted before its end
+        # The terminal is left as it was found (echo and line mode back).
+        assert termios.tcgetattr(terminal) == saved
+    finally:
+        if player.poll() is None:
+            player.kill()
+            player.wait()
+        os.close(controller)
+        os.close(terminal)
 
 
 # The format's details

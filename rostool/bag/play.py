@@ -34,6 +34,7 @@ from rostool.typenames import load_type
 ADVERTISE_WAIT = 0.2  # ROS 1's "Waiting 0.2 seconds after advertising topics"
 PUBLISHER_DEPTH = 100
 ACK_TIMEOUT = 5.0  # at the end: how long reliable subscribers get to take the last messages
+MIN_LOOP_PERIOD = 0.1  # seconds: --loop plays a bag at most this often
 
 
 @dataclass
@@ -144,6 +145,7 @@ class Player:
         wall_start = time.monotonic()
         for message in self.messages():
             due = wall_start + (message.log_time - self.start) / NS / self.options.rate
+            stepped = False
             while True:
                 if state["paused"]:
                     key = keyboard.wait(0.1)
@@ -155,6 +157,7 @@ class Player:
                     elif key == "s":
                         wall_start += time.monotonic() - state["paused_at"]
                         state["paused_at"] = time.monotonic()
+                        stepped = True
                         break  # publish this one now, stay paused
                     continue
                 remaining = due - time.monotonic()
@@ -166,6 +169,8 @@ class Player:
                     self._status("PAUSED", message)
             self.publishers[message.topic].publish(message.data)
             self.published += 1
+            if stepped:
+                self._status("PAUSED", message)
 
     def _status(self, what: str, message: BagMessage) -> None:
         bag_time = message.log_time / NS
@@ -207,9 +212,12 @@ def play(graph: Graph, path: str, options: PlayOptions) -> None:
                 print("\nHit space to toggle paused, or 's' to step.", flush=True)
             state: dict[str, Any] = {"paused": False, "paused_at": 0.0}
             while True:
+                began = time.monotonic()
                 player.play_once(keyboard, state)
                 if not options.loop:
                     break
+                # A bag of one instant would otherwise be published in a tight loop.
+                time.sleep(max(0.0, MIN_LOOP_PERIOD - (time.monotonic() - began)))
             player.finish()
         finally:
             keyboard.restore()
