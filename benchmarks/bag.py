@@ -50,10 +50,10 @@ def _load(subscriber: list[str], ready: str) -> dict:
             raise RuntimeError(f"{subscriber} never printed {ready!r}")
         publisher = start(python("-m", "benchmarks.bag_worker", "publish", str(SECONDS)))
         wait_for_lines(publisher, lambda line: "publishing" in line, timeout=120)
-        cpu_start, wall_start = _cpu_seconds(sink.pid), time.monotonic()
+        cpu_start = _cpu_seconds(sink.pid)
         sent = _json_result(publisher, timeout=SECONDS + 120)
         time.sleep(0.5)  # the last messages reach the subscriber
-        cpu = (_cpu_seconds(sink.pid) - cpu_start) / (time.monotonic() - wall_start)
+        cpu = _cpu_seconds(sink.pid) - cpu_start  # CPU seconds spent while the load ran
         rss = peak_rss_mib(sink.pid)
         os.killpg(sink.pid, signal.SIGINT)
         out, _ = sink.communicate(timeout=60)
@@ -78,6 +78,9 @@ def record_and_play() -> list[Row]:
                 "image": topics["/bench_image"].message_count,
             }
         sent = recorded["sent"]
+        # CPU per message taken: what each costs, whatever share of the CPU it was given.
+        recorder_cpu = recorded["cpu"] / max(1, sum(in_bag.values())) * 1000
+        bare_cpu = bare["cpu"] / max(1, bare_counts["tutorial"] + bare_counts["image"]) * 1000
         lost = (sent["tutorial"] - in_bag["tutorial"]) + (sent["image"] - in_bag["image"])
         bare_lost = (bare["sent"]["tutorial"] - bare_counts["tutorial"]) + (
             bare["sent"]["image"] - bare_counts["image"]
@@ -92,10 +95,10 @@ def record_and_play() -> list[Row]:
                 met=lost == 0,
             ),
             Row(
-                "recorder CPU while recording (share of one core)",
-                f"{recorded['cpu'] * 100:.0f} %",
-                f"{bare['cpu'] * 100:.0f} % (bare subscriber, writes nothing)",
-                recorded["cpu"] / bare["cpu"] if bare["cpu"] else None,
+                "recorder CPU per 1000 messages (1 kHz + 30 Hz 1 MB mix)",
+                f"{recorder_cpu * 1e3:.0f} ms",
+                f"{bare_cpu * 1e3:.0f} ms (bare subscriber, writes nothing)",
+                recorder_cpu / bare_cpu if bare_cpu else None,
             ),
             Row(
                 "recorder peak RSS",
@@ -152,11 +155,19 @@ def info_on_a_large_bag() -> list[Row]:
         writer.close()
         size = sum(p.stat().st_size for p in folder.iterdir())
         command = [ROSBAG, "info", str(folder)]
-        times = []
+        times, cpu_times = [], []
         for _ in range(5):
+            before = os.times()
             begin = time.monotonic()
             subprocess.run(command, check=True, capture_output=True, timeout=60)
             times.append(time.monotonic() - begin)
+            after = os.times()
+            cpu_times.append(
+                after.children_user
+                - before.children_user
+                + after.children_system
+                - before.children_system
+            )
         summary_times = []
         for _ in range(5):
             begin = time.monotonic()
@@ -165,8 +176,8 @@ def info_on_a_large_bag() -> list[Row]:
             summary_times.append(time.monotonic() - begin)
         return [
             Row(
-                f"`rosbag info` on a {size / 2**30:.2f} GiB bag, process start to exit, p50/max",
-                f"{p50(times):.2f} s / {max(times):.2f} s",
+                f"`rosbag info` on a {size / 2**30:.2f} GiB bag, start to exit, p50/max (CPU p50)",
+                f"{p50(times):.2f} s / {max(times):.2f} s ({p50(cpu_times):.2f} s CPU)",
                 f"{p50(summary_times) * 1e3:.1f} ms (mcap summary read alone, in-process)",
                 target="< 0.5 s",
                 met=max(times) < 0.5,
