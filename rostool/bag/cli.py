@@ -14,7 +14,7 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
-from ros_tutorials_common.cli import positive_int, positive_rate
+from ros_tutorials_common.cli import positive_int, positive_rate, positive_seconds
 from rostool.bag import info as bag_info
 from rostool.errors import ToolError
 
@@ -128,31 +128,39 @@ def _info_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
     parser.set_defaults(run=lambda _graph, a: bag_info.print_info(a.bag, ros1), offline=True)
 
 
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+def _timeout_option() -> argparse.ArgumentParser:
+    """play's --timeout (for --wait-for-subscribers); the other graph options mean nothing here."""
+    from rostool.graph import DEFAULT_TIMEOUT
+
+    option = argparse.ArgumentParser(add_help=False)
+    option.add_argument(
+        "--timeout",
+        type=positive_seconds,
+        default=DEFAULT_TIMEOUT,
+        help=f"seconds --wait-for-subscribers waits (default {DEFAULT_TIMEOUT:g})",
+    )
+    return option
+
+
+def _add_commands(sub: argparse._SubParsersAction, ros1: bool) -> None:
+    _record_arguments(sub.add_parser("record", help="record topics into a new bag"), ros1)
+    _info_arguments(sub.add_parser("info", help="what a bag holds"), ros1)
+    play_parser = sub.add_parser(
+        "play", parents=[_timeout_option()], help="publish a bag's messages"
+    )
+    _play_arguments(play_parser, ros1)
+
+
+def register(verbs: argparse._SubParsersAction, _common: argparse.ArgumentParser) -> None:
     parser = verbs.add_parser("bag", help="bags: record, info, play (rosbag2, MCAP storage)")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    _record_arguments(
-        sub.add_parser("record", parents=[common], help="record topics into a new bag"), False
-    )
-    _info_arguments(sub.add_parser("info", help="what a bag holds"), False)
-    _play_arguments(
-        sub.add_parser("play", parents=[common], help="publish a bag's messages"), False
-    )
+    _add_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True), False)
 
 
 def rosbag_parser() -> argparse.ArgumentParser:
-    from rostool.cli import common_options
-
     parser = argparse.ArgumentParser(
         prog="rosbag", description="ROS 1's rosbag, on ROS 2 bags (see: rostool bag)"
     )
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    common = common_options()
-    _record_arguments(
-        sub.add_parser("record", parents=[common], help="record topics into a new bag"), True
-    )
-    _info_arguments(sub.add_parser("info", help="what a bag holds"), True)
-    _play_arguments(sub.add_parser("play", parents=[common], help="publish a bag's messages"), True)
+    _add_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True), True)
     return parser
 
 
