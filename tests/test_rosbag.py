@@ -87,14 +87,18 @@ def lesson_bag(ros_domain: int, tmp_path_factory: pytest.TempPathFactory):
             "-m", "ros_tutorials_parameter.talker", "--ros-args", "-p", f"talker_str:={TALKER_TEXT}"
         ),
     ]
-    publisher = processes[0]
+    publisher, talker = processes
     recorder = rosbag("record", "/ros_tutorial_msg", "/chatter", "-O", str(folder))
     processes.append(recorder)
     try:
         wait_subscribed(recorder, "/ros_tutorial_msg", "/chatter")
         # Let it record a few seconds of both (10 Hz each), then Ctrl-C as a user would.
-        recorder.wait_for_output(
-            lambda _lines: len(sent_messages(publisher)) >= 40, timeout=60, what="40 sends"
+        sent, said = len(sent_messages(publisher)), talker.output.count(TALKER_TEXT)
+        publisher.wait_for_output(
+            lambda _lines: len(sent_messages(publisher)) >= sent + 25, timeout=60, what="25 sends"
+        )
+        talker.wait_for_output(
+            lambda _lines: talker.output.count(TALKER_TEXT) >= said + 25, timeout=60, what="25 says"
         )
         assert recorder.interrupt() == 0, recorder.output
         for process in processes:  # nothing live on these topics while the bag plays
@@ -312,7 +316,6 @@ def test_record_all_picks_up_later_topics_and_latched_messages(
         )
         try:
             wait_subscribed(recorder, "/appeared_later")
-            time.sleep(0.5)  # record a few of its messages (10 Hz); counts are not asserted
         finally:
             talker.kill()
         recorder.process.send_signal(signal.SIGTERM)  # SIGTERM too closes the bag properly
