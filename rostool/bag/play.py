@@ -136,9 +136,7 @@ class Player:
             )
 
     def messages(self) -> Iterator[BagMessage]:
-        for message in self.reader.messages(self.publishers):
-            if message.log_time >= self.start:
-                yield message
+        yield from self.reader.messages(self.publishers, self.start)
 
     def play_once(self, keyboard: _Keyboard, state: dict[str, Any]) -> None:
         """One pass through the bag, in recorded time; pausing shifts the clock."""

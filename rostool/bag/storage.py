@@ -621,21 +621,22 @@ class _McapFile:
         if not self.complete:
             self.counts, self.start, self.end, self.message_count = counts, start, end, count
 
-    def messages(self, topics: set[str] | None) -> Iterator[BagMessage]:
-        """The messages in log-time order (a killed recording's: in the order written)."""
+    def messages(self, topics: set[str] | None, start: int = 0) -> Iterator[BagMessage]:
+        """The messages from `start` (ns) on, in log-time order (a killed recording's: in
+        the order written)."""
         if not self.complete:
             for channel, message in self._scan():
-                if topics is None or channel.topic in topics:
+                if (topics is None or channel.topic in topics) and message.log_time >= start:
                     yield BagMessage(
                         channel.topic, message.data, message.log_time, message.publish_time
                     )
             return
         try:
-            yield from self._indexed_messages(topics)
+            yield from self._indexed_messages(topics, start)
         except _READ_ERRORS as error:
             raise BagError(f"{self.path} is damaged: {_short(error)}") from None
 
-    def _indexed_messages(self, topics: set[str] | None) -> Iterator[BagMessage]:
+    def _indexed_messages(self, topics: set[str] | None, start: int) -> Iterator[BagMessage]:
         summary = self.reader.get_summary()
         assert summary is not None
         wanted = {
@@ -649,7 +650,9 @@ class _McapFile:
         )
         if not in_order:  # overlapping chunks: the mcap reader merges them (slower)
             for _schema, channel, message in self.reader.iter_messages(
-                topics=sorted(topics) if topics is not None else None, log_time_order=True
+                topics=sorted(topics) if topics is not None else None,
+                log_time_order=True,
+                start_time=start,
             ):
                 yield BagMessage(
                     channel.topic, message.data, message.log_time, message.publish_time
@@ -657,6 +660,8 @@ class _McapFile:
             return
         # Chunks one after the other in time (what a recorder writes): sort within each.
         for index in chunks:
+            if index.message_end_time < start:  # --start-offset: not even read
+                continue
             if wanted.isdisjoint(index.message_index_offsets) and index.message_index_offsets:
                 continue
             self.stream.seek(index.chunk_start_offset + 1 + 8)
@@ -664,7 +669,9 @@ class _McapFile:
             found = [
                 record
                 for record in breakup_chunk(chunk, validate_crc=True)
-                if isinstance(record, Message) and record.channel_id in wanted
+                if isinstance(record, Message)
+                and record.channel_id in wanted
+                and record.log_time >= start
             ]
             found.sort(key=lambda message: message.log_time)
             for message in found:
@@ -780,10 +787,10 @@ class BagReader:
             warnings=warnings,
         )
 
-    def messages(self, topics: Iterable[str] | None = None) -> Iterator[BagMessage]:
-        """All messages (of the given topics) in log-time order, across the bag's files."""
+    def messages(self, topics: Iterable[str] | None = None, start: int = 0) -> Iterator[BagMessage]:
+        """All messages (of the given topics, from `start` ns on) in log-time order."""
         wanted = set(topics) if topics is not None else None
-        streams = [f.messages(wanted) for f in self.files]
+        streams = [f.messages(wanted, start) for f in self.files]
         if len(streams) == 1:
             yield from streams[0]
             return
