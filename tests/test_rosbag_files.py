@@ -28,6 +28,7 @@ from helpers import TIMEOUT, NodeProcess, spin_until
 from mcap.reader import make_reader
 from rclpy.node import Node
 from rclpy.serialization import serialize_message
+from rosbags.rosbag2 import Reader
 from std_msgs.msg import String
 
 from rostool.bag import definitions, storage
@@ -333,6 +334,14 @@ def test_sigkill_leaves_a_bag_readable_up_to_the_last_flush(ros_domain, tmp_path
         messages = list(reader.messages())
     assert len(messages) >= at_kill
     assert all(m.topic == "/chatter" for m in messages)
+    # `rosbag reindex` gives it its summary: readers that need one (rosbags) open it then.
+    result = run("rosbag", "reindex", str(folder))
+    assert result.returncode == 0, result.stderr
+    with Reader(folder) as independent:
+        raw = [data for _connection, _time, data in independent.messages()]
+    assert raw == [m.data for m in messages]
+    metadata = yaml.safe_load((folder / "metadata.yaml").read_text())
+    assert metadata["rosbag2_bagfile_information"]["message_count"] == len(messages)
 
 
 def test_space_pauses_and_s_steps_in_a_terminal(ros_domain, tmp_path) -> None:

@@ -123,6 +123,13 @@ def _play(graph: Any, args: argparse.Namespace) -> None:
     play(graph, args.bag, options)
 
 
+def _reindex(path: str) -> None:
+    from rostool.bag.storage import reindex
+
+    bag = reindex(path)
+    print(f"Reindexed {path}: {bag.message_count} messages, metadata.yaml rewritten")
+
+
 def _info_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
     parser.add_argument("bag", help="the bag's folder (or one .mcap file)")
     parser.set_defaults(run=lambda _graph, a: bag_info.print_info(a.bag, ros1), offline=True)
@@ -145,6 +152,11 @@ def _timeout_option() -> argparse.ArgumentParser:
 def _add_commands(sub: argparse._SubParsersAction, ros1: bool) -> None:
     _record_arguments(sub.add_parser("record", help="record topics into a new bag"), ros1)
     _info_arguments(sub.add_parser("info", help="what a bag holds"), ros1)
+    reindex = sub.add_parser(
+        "reindex", help="give an unfinished recording its summary and metadata.yaml"
+    )
+    reindex.add_argument("bag", help="the bag's folder")
+    reindex.set_defaults(run=lambda _graph, a: _reindex(a.bag), offline=True)
     play_parser = sub.add_parser(
         "play", parents=[_timeout_option()], help="publish a bag's messages"
     )
@@ -166,8 +178,8 @@ def rosbag_parser() -> argparse.ArgumentParser:
 
 def rosbag(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
-    if argv[:1] == ["info"]:  # offline: no rclpy to load
-        return _info_only(argv[1:])
+    if argv[:1] in (["info"], ["reindex"]):  # offline: no rclpy to load
+        return _offline_only(argv[0], argv[1:])
     from rostool.cli import execute
     from rostool.graph import DEFAULT_TIMEOUT
 
@@ -180,10 +192,10 @@ def rosbag(argv: Sequence[str] | None = None) -> int:
     )
 
 
-def _info_only(argv: list[str]) -> int:
-    parser = argparse.ArgumentParser(prog="rosbag info", description="what a bag holds")
-    _info_arguments(parser, True)
-    args = parser.parse_args(argv)
+def _offline_only(command: str, argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(prog="rosbag")
+    _add_commands(parser.add_subparsers(dest="command", required=True), True)
+    args = parser.parse_args([command, *argv])
     try:
         args.run(None, args)
     except ToolError as error:
