@@ -147,6 +147,8 @@ def test_missing_foreign_and_metadata_less_bags_are_refused(tmp_path, small_bag)
     assert "has no metadata.yaml" in error and "small_0.mcap" in error  # names the way out
     # ... whose MCAP file alone still opens
     assert run("rostool", "bag", "info", str(bare / "small_0.mcap")).returncode == 0
+    assert "not a bag folder" in fails("rosbag", "reindex", str(bare / "small_0.mcap"))
+    assert "does not exist" in fails("rostool", "bag", "reindex", str(tmp_path / "nothing"))
     foreign = tmp_path / "notes.mcap"
     foreign.write_text("these are not the bytes you are looking for\n" * 10)
     assert "is not an MCAP file" in fails("rosbag", "info", str(foreign))
