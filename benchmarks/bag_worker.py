@@ -120,8 +120,13 @@ def bare() -> dict:
     try:
         while True:
             rclpy.spin_once(node, timeout_sec=0.1)
-    except KeyboardInterrupt:
-        pass
+    except KeyboardInterrupt:  # what has arrived still counts, as for the recorder
+        deadline = time.monotonic() + 5
+        while time.monotonic() < deadline:
+            before = sum(counts.values())
+            rclpy.spin_once(node, timeout_sec=0.01)
+            if sum(counts.values()) == before:
+                break
     return {"tutorial": counts[TUTORIAL_TOPIC], "image": counts[IMAGE_TOPIC]}
 
 

@@ -39,6 +39,7 @@ from rostool.typenames import load_type
 
 DISCOVERY_PERIOD = 0.1  # seconds between looks at the graph for new topics
 SPIN_PERIOD = 0.05
+FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
 DRAIN_LIMIT = 1000  # messages taken per topic in one go, so that no topic starves the others
 
 
@@ -65,6 +66,8 @@ class Recorder:
         self.subscriptions: dict[str, Any] = {}
         self.skipped: set[str] = set()
         self.stop_reason = ""
+        self.limit_reached = False  # --max-messages: nothing more is written
+        self.stop_ns = 0  # once stopping: messages received after this are not written
 
     def discover(self) -> None:
         """Subscribe to every wanted topic that has a publisher and is not subscribed yet."""
@@ -113,6 +116,12 @@ class Recorder:
         )
         print(f"Subscribed to topic '{topic}' ({type_name})", flush=True)
 
+    def drain_all(self) -> bool:
+        """One drain at the end; True while it still found messages (and may write more)."""
+        before = self.writer.message_count
+        self.drain()
+        return self.writer.message_count > before and not self.limit_reached
+
     def drain(self) -> None:
         """Take what else is waiting, without a round through the executor for each message.
 
@@ -121,7 +130,7 @@ class Recorder:
         """
         for topic, subscription in self.subscriptions.items():
             for _ in range(DRAIN_LIMIT):
-                if self.stop_reason:
+                if self.limit_reached:
                     return
                 with subscription.handle:
                     taken = subscription.handle.take_message(subscription.msg_type, True)
@@ -130,15 +139,12 @@ class Recorder:
                 self._received(topic, taken[0], taken[1])
 
     def _received(self, topic: str, data: bytes, message_info: dict[str, Any]) -> None:
-        if self.stop_reason:
+        received = message_info.get("received_timestamp") or time.time_ns()
+        if self.limit_reached or (self.stop_ns and received > self.stop_ns):
             return
-        self.writer.write(
-            topic,
-            data,
-            message_info.get("received_timestamp") or time.time_ns(),
-            message_info.get("source_timestamp") or 0,
-        )
+        self.writer.write(topic, data, received, message_info.get("source_timestamp") or 0)
         if self.max_messages is not None and self.writer.message_count >= self.max_messages:
+            self.limit_reached = True
             self.stop_reason = f"{self.max_messages} messages recorded"
 
 
@@ -186,6 +192,11 @@ def record(
             graph.spin_once(SPIN_PERIOD)
             recorder.drain()
             writer.flush_if_due()  # quiet topics too: nothing older than a period is at risk
+        # What arrived before the stop is recorded too, however late this process got to it.
+        recorder.stop_ns = time.time_ns()
+        deadline = time.monotonic() + FINAL_DRAIN_TIME
+        while recorder.drain_all() and time.monotonic() < deadline:
+            pass
     except BagError as failure:
         error = failure
     finally:
