@@ -1,6 +1,6 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup (default: all)
+python -m benchmarks [GROUP ...]   groups: launch service topic rate memory setup bag (all)
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import signal
 import traceback
 from collections.abc import Callable
 
-from benchmarks import launch, memory, service, setup_time, topic
+from benchmarks import bag, launch, memory, service, setup_time, topic
 from benchmarks.common import Row, print_table, private_domain
 
 # Each group is a list of steps; a step that fails costs only its own rows.
@@ -24,6 +24,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "rate": [topic.rate_accuracy],
     "memory": [memory.node_memory],
     "setup": [setup_time.setup_times],
+    "bag": [bag.bag_benchmarks],
 }
 
 

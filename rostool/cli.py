@@ -51,6 +51,9 @@ def build_parser() -> argparse.ArgumentParser:
     common = common_options()
     for module in (topic, service, param, node, action, interface, run, core):
         module.register(verbs, common)
+    from rostool.bag.cli import register as register_bag  # it uses this module: import late
+
+    register_bag(verbs, common)
     return parser
 
 

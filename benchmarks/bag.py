@@ -1,0 +1,191 @@
+"""Bags: record under load without loss, `info` on a 1 GB bag, play timing.
+
+- record: `rosbag record` of 1 kHz MsgTutorial + 30 Hz 1 MB sensor_msgs/Image for 10 s;
+  messages in the bag against the publisher's counts; the recorder's CPU and peak RSS beside
+  a bare rclpy process with the same raw subscriptions that only counts.
+- info: `rosbag info` (the whole command, process start to exit) on a 1 GB bag, beside
+  reading the same summary with the mcap package alone, in-process.
+- play: `rosbag play` of the recorded bag into a subscriber; the error of each arrival
+  against the recorded timestamps (both relative to the first message).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from mcap.reader import make_reader
+
+from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, stop, wait_for_lines
+from rostool.bag.storage import BagReader, BagWriter, TopicInfo
+
+SECONDS = 10.0
+ROSBAG = str(Path(sys.executable).parent / "rosbag")  # the installed command, as a user runs it
+TICKS = os.sysconf("SC_CLK_TCK")
+
+
+def _cpu_seconds(pid: int) -> float:
+    with open(f"/proc/{pid}/stat") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / TICKS  # utime + stime
+
+
+def _json_result(proc: subprocess.Popen, timeout: float = 120) -> dict:
+    out, _ = proc.communicate(timeout=timeout)
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def _load(subscriber: list[str], ready: str) -> dict:
+    """Run the publisher against one subscribing process; its counts, CPU and RSS."""
+    sink = start(subscriber)
+    try:
+        if not wait_for_lines(sink, lambda line: ready in line, timeout=60):
+            raise RuntimeError(f"{subscriber} never printed {ready!r}")
+        publisher = start(python("-m", "benchmarks.bag_worker", "publish", str(SECONDS)))
+        wait_for_lines(publisher, lambda line: "publishing" in line, timeout=120)
+        cpu_start = _cpu_seconds(sink.pid)
+        sent = _json_result(publisher, timeout=SECONDS + 120)
+        time.sleep(0.5)  # the last messages reach the subscriber
+        cpu = _cpu_seconds(sink.pid) - cpu_start  # CPU seconds spent while the load ran
+        rss = peak_rss_mib(sink.pid)
+        os.killpg(sink.pid, signal.SIGINT)
+        out, _ = sink.communicate(timeout=60)
+        return {"sent": sent, "cpu": cpu, "rss": rss, "output": out}
+    finally:
+        stop(sink)
+
+
+def record_and_play() -> list[Row]:
+    folder = Path(tempfile.mkdtemp(prefix="bag_bench_")) / "load"
+    try:
+        recorded = _load(
+            [ROSBAG, "record", "/bench_tutorial", "/bench_image", "-O", str(folder)],
+            "Recording to",
+        )  # fmt: skip
+        bare = _load(python("-m", "benchmarks.bag_worker", "bare"), "Subscribed")
+        bare_counts = json.loads(bare["output"].strip().splitlines()[-1])
+        with BagReader(folder) as reader:
+            topics = reader.bag.topics
+            in_bag = {
+                "tutorial": topics["/bench_tutorial"].message_count,
+                "image": topics["/bench_image"].message_count,
+            }
+        sent = recorded["sent"]
+        # CPU per message taken: what each costs, whatever share of the CPU it was given.
+        recorder_cpu = recorded["cpu"] / max(1, sum(in_bag.values())) * 1000
+        bare_cpu = bare["cpu"] / max(1, bare_counts["tutorial"] + bare_counts["image"]) * 1000
+        lost = (sent["tutorial"] - in_bag["tutorial"]) + (sent["image"] - in_bag["image"])
+        bare_lost = (bare["sent"]["tutorial"] - bare_counts["tutorial"]) + (
+            bare["sent"]["image"] - bare_counts["image"]
+        )
+        rows = [
+            Row(
+                "record 1 kHz MsgTutorial + 30 Hz 1 MB Image, 10 s: lost",
+                f"{lost} of {sent['tutorial']} + {sent['image']}",
+                f"{bare_lost} of {bare['sent']['tutorial']} + {bare['sent']['image']} "
+                "(bare rclpy raw subscriber)",
+                target="0 lost",
+                met=lost == 0,
+            ),
+            Row(
+                "recorder CPU per 1000 messages (1 kHz + 30 Hz 1 MB mix)",
+                f"{recorder_cpu * 1e3:.0f} ms",
+                f"{bare_cpu * 1e3:.0f} ms (bare subscriber, writes nothing)",
+                recorder_cpu / bare_cpu if bare_cpu else None,
+            ),
+            Row(
+                "recorder peak RSS",
+                f"{recorded['rss']:.0f} MiB",
+                f"{bare['rss']:.0f} MiB (bare subscriber)",
+                recorded["rss"] / bare["rss"],
+            ),
+        ]
+        return rows + _play_timing(folder)
+    finally:
+        shutil.rmtree(folder.parent, ignore_errors=True)
+
+
+def _play_timing(folder: Path) -> list[Row]:
+    with BagReader(folder) as reader:
+        recorded = [(m.data[:16].hex(), m.log_time) for m in reader.messages()]
+    listener = start(python("-m", "benchmarks.bag_worker", "listen", str(len(recorded))))
+    try:
+        wait_for_lines(listener, lambda line: "ready" in line, timeout=60)
+        player = start(
+            [ROSBAG, "play", str(folder), "--wait-for-subscribers", "--timeout", "60"],
+        )  # fmt: skip
+        player.communicate(timeout=SECONDS * 3 + 120)
+        time.sleep(1.0)  # the last messages reach the listener
+        if listener.poll() is None:
+            os.killpg(listener.pid, signal.SIGINT)
+        arrivals = _json_result(listener, timeout=60)["arrivals"]
+    finally:
+        stop(listener)
+    # Pair each arrival with its recorded message by the message's first bytes (its stamp).
+    log_times = {key: log_time for key, log_time in recorded}
+    pairs = [(log_times[key], arrival) for key, arrival in arrivals if key in log_times]
+    first_log, first_arrival = min(pairs)
+    errors = [abs((arrival - first_arrival) - (log - first_log)) / 1e9 for log, arrival in pairs]
+    return [
+        Row(
+            "play timing error vs recorded timestamps, p50/p99",
+            f"{p50(errors) * 1e3:.2f} ms / {p99(errors) * 1e3:.2f} ms",
+            f"{len(errors)} of {len(recorded)} messages arrived",
+            target="",
+        )
+    ]
+
+
+def info_on_a_large_bag() -> list[Row]:
+    """A 1 GiB bag (1024 messages of 1 MiB) written directly, then `rosbag info` on it."""
+    folder = Path(tempfile.mkdtemp(prefix="bag_bench_")) / "large"
+    try:
+        writer = BagWriter(folder)
+        writer.add_topic(TopicInfo("/large", "sensor_msgs/msg/Image"), "", "ros2msg")
+        payload = bytes(1024 * 1024)
+        for i in range(1024):
+            writer.write("/large", payload, 1_700_000_000_000_000_000 + i * 33_000_000, 0)
+        writer.close()
+        size = sum(p.stat().st_size for p in folder.iterdir())
+        command = [ROSBAG, "info", str(folder)]
+        times, cpu_times = [], []
+        for _ in range(5):
+            before = os.times()
+            begin = time.monotonic()
+            subprocess.run(command, check=True, capture_output=True, timeout=60)
+            times.append(time.monotonic() - begin)
+            after = os.times()
+            cpu_times.append(
+                after.children_user
+                - before.children_user
+                + after.children_system
+                - before.children_system
+            )
+        summary_times = []
+        for _ in range(5):
+            begin = time.monotonic()
+            with open(folder / "large_0.mcap", "rb") as stream:
+                make_reader(stream).get_summary()
+            summary_times.append(time.monotonic() - begin)
+        return [
+            Row(
+                f"`rosbag info` on a {size / 2**30:.2f} GiB bag, start to exit, p50/max (CPU p50)",
+                f"{p50(times):.2f} s / {max(times):.2f} s ({p50(cpu_times):.2f} s CPU)",
+                f"{p50(summary_times) * 1e3:.1f} ms (mcap summary read alone, in-process)",
+                target="< 0.5 s",
+                met=max(times) < 0.5,
+            )
+        ]
+    finally:
+        shutil.rmtree(folder.parent, ignore_errors=True)
+
+
+def bag_benchmarks() -> list[Row]:
+    return record_and_play() + info_on_a_large_bag()

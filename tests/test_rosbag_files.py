@@ -1,0 +1,419 @@
+"""rosbag / rostool bag with files that are not what they should be, and ROS 2's own bags.
+
+Bags written by ROS 2's rosbag2 itself (tests/data/ros2_bags) open and play here; a type
+not installed here is a warning for its topic. Every bad input ends with one clear line and
+a non-zero exit status, never a traceback: a missing path, a folder without metadata, a
+foreign or truncated file, an existing output name, a full disk (a real small tmpfs, and a
+write-failing file in a unit test), invalid rates and durations. A recorder killed with
+SIGKILL leaves a bag that is readable up to its last flush.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+import select
+import shutil
+import signal
+import subprocess
+import sys
+import termios
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+from helpers import TIMEOUT, NodeProcess, spin_until
+from mcap.reader import make_reader
+from rclpy.node import Node
+from rclpy.serialization import serialize_message
+from rosbags.rosbag2 import Reader
+from std_msgs.msg import String
+
+from rostool.bag import definitions, storage
+from rostool.bag.storage import BagError, BagReader, BagWriter, TopicInfo
+from rostool.errors import ToolError
+
+BIN = Path(sys.executable).parent
+ROS2_BAGS = Path(__file__).parent / "data" / "ros2_bags"
+
+
+def run(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
+    try:
+        return subprocess.run(
+            [str(BIN / args[0]), *args[1:]], capture_output=True, text=True, timeout=timeout
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+
+
+def fails(*args: str) -> str:
+    """A command that must fail with one error line (exit 1), no traceback."""
+    result = run(*args)
+    assert result.returncode == 1, f"{' '.join(args)}: {result.returncode}\n{result.stdout}"
+    assert "Traceback" not in result.stderr
+    lines = [line for line in result.stderr.splitlines() if not line.startswith("warning:")]
+    assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
+    assert lines[0].startswith("error: ")
+    return lines[0]
+
+
+def usage_error(*args: str) -> str:
+    result = run(*args)
+    assert result.returncode == 2, f"{' '.join(args)}: {result.returncode}\n{result.stderr}"
+    assert "usage:" in result.stderr and "Traceback" not in result.stderr
+    return result.stderr.strip().splitlines()[-1]
+
+
+def write_bag(
+    folder: Path, topics: dict[str, str], count: int = 5, spacing: float = 0.1
+) -> list[bytes]:
+    """A small bag written directly (no ROS graph): `count` String messages per topic."""
+    writer = BagWriter(folder, chunk_size=500)  # several chunks, even for a few messages
+    sent = []
+    for topic, type_name in topics.items():
+        writer.add_topic(TopicInfo(topic, type_name), "string data\n", "ros2msg")
+    for i in range(count):
+        for topic in topics:
+            data = serialize_message(String(data=f"{topic} {i}"))
+            sent.append(data)
+            writer.write(topic, data, 1_700_000_000_000_000_000 + int(i * spacing * 1e9), 0)
+    writer.close()
+    return sent
+
+
+@pytest.fixture
+def small_bag(tmp_path: Path) -> Path:
+    folder = tmp_path / "small"
+    write_bag(folder, {"/words": "std_msgs/msg/String"}, count=50)
+    return folder
+
+
+# ROS 2's own bags
+
+
+def test_a_bag_written_by_ros2_plays_here(ros_domain, context, executor) -> None:
+    bag = ROS2_BAGS / "talker"
+    with open(bag / "talker.mcap", "rb") as stream:
+        recorded = [
+            m.data for _s, c, m in make_reader(stream).iter_messages() if c.topic == "/topic"
+        ]
+    result = run("rostool", "bag", "info", str(bag))
+    assert result.returncode == 0, result.stderr
+    assert "Topic: /topic | Type: std_msgs/msg/String | Count: 10 | Serialization Format: cdr" in (
+        result.stdout
+    )
+    node = Node("ros2_bag_check", context=context)
+    executor.add_node(node)
+    received: list[bytes] = []
+    node.create_subscription(String, "/topic", lambda data: received.append(data), 100, raw=True)
+    player = NodeProcess(
+        str(BIN / "rosbag"), "play", str(bag), "--topics", "/topic", "-r", "5",
+        "--wait-for-subscribers", "--timeout", "30",
+    )  # fmt: skip
+    spin_until(executor, lambda: len(received) >= len(recorded), what="the ROS 2 bag played")
+    assert player.wait() == 0, player.output
+    assert received == recorded
+
+
+def test_types_not_installed_are_a_warning_per_topic(ros_domain, tmp_path) -> None:
+    # rosbag2's own bag: every type in it (test_msgs, rosbag2_interfaces) is unknown here.
+    bag = ROS2_BAGS / "bag_with_topics_and_service_events"
+    info = run("rosbag", "info", str(bag))
+    assert info.returncode == 0 and "messages:    10" in info.stdout, info.stderr
+    error = fails("rosbag", "play", str(bag))
+    assert "no topic to play" in error
+    # A bag with one unknown type and one known: the known one plays, exit 0.
+    folder = tmp_path / "mixed"
+    write_bag(folder, {"/known": "std_msgs/msg/String", "/unknown": "no_such_msgs/msg/Thing"})
+    result = run("rosbag", "play", str(folder), "-r", "10")
+    assert result.returncode == 0, result.stderr
+    warnings = [line for line in result.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 1 and "/unknown" in warnings[0] and "no_such_msgs" in warnings[0]
+    assert "Done: 5 messages published." in result.stdout
+
+
+# Bad input
+
+
+def test_missing_foreign_and_metadata_less_bags_are_refused(tmp_path, small_bag) -> None:
+    assert "does not exist" in fails("rosbag", "info", str(tmp_path / "nothing"))
+    assert "does not exist" in fails("rosbag", "play", str(tmp_path / "nothing"))
+    bare = tmp_path / "bare"
+    bare.mkdir()
+    shutil.copy(small_bag / "small_0.mcap", bare)
+    error = fails("rostool", "bag", "info", str(bare))
+    assert "has no metadata.yaml" in error and "small_0.mcap" in error  # names the way out
+    # ... whose MCAP file alone still opens
+    assert run("rostool", "bag", "info", str(bare / "small_0.mcap")).returncode == 0
+    assert "not a bag folder" in fails("rosbag", "reindex", str(bare / "small_0.mcap"))
+    assert "does not exist" in fails("rostool", "bag", "reindex", str(tmp_path / "nothing"))
+    foreign = tmp_path / "notes.mcap"
+    foreign.write_text("these are not the bytes you are looking for\n" * 10)
+    assert "is not an MCAP file" in fails("rosbag", "info", str(foreign))
+    assert "is not an MCAP file" in fails("rosbag", "play", str(foreign))
+    not_metadata = tmp_path / "odd"
+    not_metadata.mkdir()
+    (not_metadata / "metadata.yaml").write_text("just: some yaml\n")
+    assert "is not rosbag2 metadata" in fails("rosbag", "info", str(not_metadata))
+    (not_metadata / "metadata.yaml").write_text("{{{ not yaml")
+    assert "cannot read" in fails("rosbag", "info", str(not_metadata))
+    sqlite = tmp_path / "sqlite"
+    sqlite.mkdir()
+    (sqlite / "metadata.yaml").write_text(
+        "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
+    )
+    assert "uses storage 'sqlite3'" in fails("rosbag", "info", str(sqlite))
+
+
+def test_truncated_files(tmp_path, small_bag) -> None:
+    mcap_file = small_bag / "small_0.mcap"
+    whole = mcap_file.read_bytes()
+    # Cut within the data: the summary is gone; what is complete is still read, with a warning.
+    folder = tmp_path / "cut"
+    shutil.copytree(small_bag, folder)
+    (folder / "small_0.mcap").write_bytes(whole[: len(whole) // 2])
+    with BagReader(folder) as reader:
+        assert not reader.bag.complete
+        kept = list(reader.messages())
+    assert 0 < len(kept) < 50
+    result = run("rosbag", "info", str(folder))
+    assert result.returncode == 0 and "Traceback" not in result.stderr
+    assert "has no summary" in result.stderr and f"messages:    {len(kept)}" in result.stdout
+    # Cut to almost nothing: not an MCAP file any more.
+    (folder / "small_0.mcap").write_bytes(whole[:10])
+    assert "is not an MCAP file" in fails("rosbag", "info", str(folder))
+
+
+def test_info_reads_the_summary_not_the_messages(tmp_path, small_bag) -> None:
+    """Damage every message's bytes: info still answers from the summary at the end."""
+    folder = tmp_path / "damaged"
+    shutil.copytree(small_bag, folder)
+    path = folder / "small_0.mcap"
+    data = bytearray(path.read_bytes())
+    for index in range(len(data)):
+        if data[index : index + 7] == b"/words ":  # the messages' text, in the chunk
+            data[index : index + 7] = b"XXXXXXX"
+    path.write_bytes(bytes(data))
+    result = run("rostool", "bag", "info", str(folder))
+    assert result.returncode == 0, result.stderr
+    assert "Messages:          50" in result.stdout
+    # Reading the messages does notice (the chunk's CRC): one clear line.
+    assert "damaged" in fails("rosbag", "play", str(folder))
+
+
+def test_an_existing_output_is_never_overwritten(ros_domain, tmp_path) -> None:
+    existing = tmp_path / "existing"
+    existing.mkdir()
+    (existing / "keep.txt").write_text("mine")
+    assert "already exists" in fails("rosbag", "record", "/chatter", "-O", str(existing))
+    assert "already exists" in fails("rostool", "bag", "record", "/chatter", "-o", str(existing))
+    assert [p.name for p in existing.iterdir()] == ["keep.txt"]
+    with pytest.raises(BagError, match="already exists"):
+        BagWriter(existing)
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rosbag", "play", "BAG", "-r", "0"),
+        ("rosbag", "play", "BAG", "--rate", "-2"),
+        ("rostool", "bag", "play", "BAG", "--rate", "abc"),
+        ("rostool", "bag", "play", "BAG", "--rate", "nan"),
+        ("rosbag", "play", "BAG", "--start-offset", "-1"),
+        ("rosbag", "record", "/chatter", "--duration", "0"),
+        ("rosbag", "record", "/chatter", "--duration", "-5"),
+        ("rosbag", "record", "/chatter", "--duration", "soon"),
+        ("rostool", "bag", "record", "/chatter", "--max-messages", "0"),
+    ],
+)
+def test_invalid_rates_and_durations_are_usage_errors(args, small_bag) -> None:
+    args = tuple(str(small_bag) if arg == "BAG" else arg for arg in args)
+    assert "error:" in usage_error(*args)
+
+
+def test_other_bad_requests_are_one_line(ros_domain, small_bag) -> None:
+    assert "beyond the bag's end" in fails("rosbag", "play", str(small_bag), "--start-offset", "60")
+    assert "expected FROM:=TO" in fails("rosbag", "play", str(small_bag), "--remap", "/a=/b")
+    assert "-a" in fails("rosbag", "record")
+    assert "not both" in fails("rosbag", "record", "-a", "/chatter")
+
+
+def test_a_full_disk_stops_the_write_and_keeps_what_was_written(tmp_path, monkeypatch) -> None:
+    """Unit test: the .mcap file's writes fail with ENOSPC after 20 kB."""
+    real_write = storage._File.write
+
+    def write(self, data):
+        if self.offset + len(data) > 20_000:
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+        return real_write(self, data)
+
+    monkeypatch.setattr(storage._File, "write", write)
+    writer = BagWriter(tmp_path / "full", chunk_size=2_000, flush_period=3600)
+    writer.add_topic(TopicInfo("/words", "std_msgs/msg/String"), "string data\n", "ros2msg")
+    with pytest.raises(BagError, match="No space left on device") as failure:
+        for i in range(10_000):
+            writer.write("/words", b"\x00\x01\x00\x00" + bytes(100), i, 0)
+    writer.close()  # safe after a failure
+    assert "stay readable" in str(failure.value)
+    with BagReader(tmp_path / "full") as reader:
+        assert not reader.bag.complete
+        messages = list(reader.messages())
+    assert 50 < len(messages) < 10_000
+    assert [m.log_time for m in messages] == list(range(len(messages)))
+
+
+def test_a_full_disk_while_recording(ros_domain, tmp_path) -> None:
+    """A real full file system: a 1 MiB tmpfs in a private mount namespace (unshare)."""
+    if shutil.which("unshare") is None:
+        pytest.skip("unshare is not installed")
+    probe = subprocess.run(
+        ["unshare", "-rm", "sh", "-c", f"mount -t tmpfs -o size=64k tmpfs {tmp_path}"],
+        capture_output=True,
+    )
+    if probe.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {probe.stderr.decode().strip()}")
+    disk, out = tmp_path / "disk", tmp_path / "out"
+    disk.mkdir()
+    out.mkdir()
+    publisher = NodeProcess(
+        str(BIN / "rostool"), "topic", "pub", "/big", "std_msgs/msg/String",
+        "{data: " + "x" * 8000 + "}", "-r", "50",
+    )  # fmt: skip
+    try:
+        script = (
+            f"mount -t tmpfs -o size=1m tmpfs {disk} || exit 99; "
+            f"{BIN / 'rosbag'} record /big -O {disk}/bag; status=$?; "
+            f"cp -a {disk}/bag {out}/bag; exit $status"
+        )
+        result = subprocess.run(
+            ["unshare", "-rm", "sh", "-c", script], capture_output=True, text=True, timeout=120
+        )
+    finally:
+        publisher.kill()
+    assert result.returncode == 1, result.stdout + result.stderr
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    assert len(errors) == 1 and "No space left on device" in errors[0], result.stderr
+    assert "Traceback" not in result.stderr
+    with BagReader(out / "bag") as reader:
+        messages = list(reader.messages())
+    assert len(messages) > 0
+    assert all(len(m.data) > 8000 for m in messages)
+
+
+def test_sigkill_leaves_a_bag_readable_up_to_the_last_flush(ros_domain, tmp_path) -> None:
+    folder = tmp_path / "killed"
+    talker = NodeProcess("-m", "ros_tutorials_topic.talker")
+    recorder = NodeProcess(str(BIN / "rosbag"), "record", "/chatter", "-O", str(folder))
+    try:
+        recorder.wait_for_output(
+            lambda lines: any("Subscribed to topic '/chatter'" in line for line in lines),
+            what="recorder subscribed",
+        )
+
+        def flushed_count() -> int:
+            try:
+                text = (folder / "metadata.yaml").read_text()
+            except OSError:
+                return 0
+            return yaml.safe_load(text)["rosbag2_bagfile_information"]["message_count"]
+
+        deadline = time.monotonic() + 60
+        while flushed_count() < 5:  # metadata.yaml follows every flush (once a second)
+            assert time.monotonic() < deadline, "no flush within 60 s"
+            time.sleep(0.1)
+        at_kill = flushed_count()
+        os.killpg(recorder.process.pid, signal.SIGKILL)
+        recorder.process.wait()
+    finally:
+        recorder.kill()
+        talker.kill()
+    result = run("rosbag", "info", str(folder))
+    assert result.returncode == 0, result.stderr
+    assert "has no summary" in result.stderr
+    with BagReader(folder) as reader:
+        messages = list(reader.messages())
+    assert len(messages) >= at_kill
+    assert all(m.topic == "/chatter" for m in messages)
+    # `rosbag reindex` gives it its summary: readers that need one (rosbags) open it then.
+    result = run("rosbag", "reindex", str(folder))
+    assert result.returncode == 0, result.stderr
+    with Reader(folder) as independent:
+        raw = [data for _connection, _time, data in independent.messages()]
+    assert raw == [m.data for m in messages]
+    metadata = yaml.safe_load((folder / "metadata.yaml").read_text())
+    assert metadata["rosbag2_bagfile_information"]["message_count"] == len(messages)
+
+
+def test_space_pauses_and_s_steps_in_a_terminal(ros_domain, tmp_path) -> None:
+    folder = tmp_path / "steps"
+    write_bag(folder, {"/words": "std_msgs/msg/String"}, count=20, spacing=1.0)  # 19 s long
+    controller, terminal = os.openpty()
+    saved = termios.tcgetattr(terminal)
+    player = subprocess.Popen(
+        [str(BIN / "rosbag"), "play", str(folder)],
+        stdin=terminal,
+        stdout=terminal,
+        stderr=terminal,
+        start_new_session=True,
+    )
+    text = ""
+
+    def wait_for(pattern: str, count: int = 1) -> str:
+        nonlocal text
+        deadline = time.monotonic() + TIMEOUT
+        while len(re.findall(pattern, text)) < count:
+            assert time.monotonic() < deadline, f"{pattern!r} not seen; output:\n{text}"
+            ready, _, _ = select.select([controller], [], [], 0.5)
+            if ready:
+                text += os.read(controller, 4096).decode(errors="replace")
+        return text
+
+    try:
+        wait_for("Hit space to toggle paused, or 's' to step.")
+        os.write(controller, b" ")
+        wait_for(r"\[PAUSED\]")
+        for steps in (1, 2, 3):
+            os.write(controller, b"s")
+            wait_for(r"\[PAUSED\]", 1 + steps)
+        bag_times = [float(t) for t in re.findall(r"\[PAUSED\]  Bag Time: ([\d.]+)", text)]
+        assert bag_times[1:] == sorted(set(bag_times[1:])), text  # one message further each
+        os.write(controller, b" ")
+        wait_for(r"\[RUNNING\]")
+        player.send_signal(signal.SIGINT)
+        assert player.wait(TIMEOUT) == 130  # interrupted before its end
+        # The terminal is left as it was found (echo and line mode back).
+        assert termios.tcgetattr(terminal) == saved
+    finally:
+        if player.poll() is None:
+            player.kill()
+            player.wait()
+        os.close(controller)
+        os.close(terminal)
+
+
+# The format's details
+
+
+def test_definitions_follow_rosbag2() -> None:
+    text = definitions.message_definition("ros_tutorials_interfaces/msg/MsgTutorial")
+    time_msg = definitions.definition_path("builtin_interfaces", "msg", "Time").read_text()
+    tutorial_msg = definitions.definition_path(
+        "ros_tutorials_interfaces", "msg", "MsgTutorial"
+    ).read_text()
+    assert text == tutorial_msg + "\n" + "=" * 80 + "\nMSG: builtin_interfaces/Time\n" + time_msg
+    image = definitions.message_definition("sensor_msgs/msg/Image")
+    assert image.count("MSG: std_msgs/Header\n") == 1
+    assert image.count("MSG: builtin_interfaces/Time\n") == 1  # once, though nested
+    with pytest.raises(ToolError, match="no definition file"):
+        definitions.message_definition("no_such_msgs/msg/Thing")
+
+
+def test_qos_of_every_metadata_version_reads_as_names() -> None:
+    old = "- history: 3\n  depth: 0\n  reliability: 2\n  durability: 1\n"
+    assert storage.qos_profiles_from_yaml(old)[0]["reliability"] == "best_effort"
+    assert storage.qos_profiles_from_yaml(old)[0]["durability"] == "transient_local"
+    new = [{"history": "keep_last", "reliability": "reliable", "durability": "volatile"}]
+    assert storage.qos_profiles_from_yaml(new)[0]["reliability"] == "reliable"
+    assert storage.qos_profiles_from_yaml("") == []
