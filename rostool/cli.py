@@ -37,7 +37,8 @@ def common_options() -> argparse.ArgumentParser:
     common.add_argument(
         "--spin-time",
         type=positive_seconds,
-        help="seconds a list waits for discovery (default: until the graph is quiet, "
+        help="seconds a list waits for discovery (default: until every participant's "
+        "announced nodes and endpoints are seen, "
         f"at most {MAX_SETTLE_TIME:g})",
     )
     return common
