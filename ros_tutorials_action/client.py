@@ -50,7 +50,7 @@ STATUS_NAMES = {
 
 class FibonacciActionClient(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("action_client", **node_kwargs)
+        super().__init__("action_client", enable_logger_service=True, **node_kwargs)
         self.client = ActionClient(self, Fibonacci, ACTION_NAME)
         # The SIGINT handler (installed by main): Ctrl-C only sets a flag that the waits in
         # run() check, so that the goal can still be canceled through ROS.

@@ -72,7 +72,7 @@ class _Run:
 
 class FibonacciActionServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("action_server", **node_kwargs)
+        super().__init__("action_server", enable_logger_service=True, **node_kwargs)
         # dynamic_typing: "-p step_period:=1" (an integer) is as good as 1.0.
         self.declare_parameter(
             "step_period",

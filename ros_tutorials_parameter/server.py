@@ -42,7 +42,7 @@ OPERATORS: dict[int, tuple[str, str, Callable[[int, int], int]]] = {
 
 class ServiceServerWithParameter(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("service_server", **node_kwargs)
+        super().__init__("service_server", enable_logger_service=True, **node_kwargs)
         # The descriptor documents the parameter (ros2 param describe shows it) and makes
         # rclpy refuse other types and values outside 1..4, at start and at run time.
         self.declare_parameter(

@@ -19,7 +19,7 @@ RATE_HZ = 10.0
 
 class DynamicsTalker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("dynamics_talker", **node_kwargs)
+        super().__init__("dynamics_talker", enable_logger_service=True, **node_kwargs)
         self.declare_parameter(
             "talker_str", "hello world", ParameterDescriptor(description="the text to publish")
         )

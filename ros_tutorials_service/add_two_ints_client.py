@@ -14,7 +14,7 @@ from ros_tutorials_common.service_client import call_once
 
 class AddTwoIntsClient(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("add_two_ints_client", **node_kwargs)
+        super().__init__("add_two_ints_client", enable_logger_service=True, **node_kwargs)
         self.client = self.create_client(AddTwoInts, "add_two_ints")
 
     def report(self, request: AddTwoInts.Request, response: AddTwoInts.Response) -> None:

@@ -14,7 +14,7 @@ from ros_tutorials_common.node_main import run_node
 
 class AddTwoIntsServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("add_two_ints_server", **node_kwargs)
+        super().__init__("add_two_ints_server", enable_logger_service=True, **node_kwargs)
         self.service = self.create_service(AddTwoInts, "add_two_ints", self.add)
         self.get_logger().info("Ready to add two ints.")
 

@@ -15,7 +15,7 @@ from ros_tutorials_common.service_client import call_once
 
 class ServiceClient(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("service_client", **node_kwargs)
+        super().__init__("service_client", enable_logger_service=True, **node_kwargs)
         self.client = self.create_client(SrvTutorial, "ros_tutorial_srv")
 
     def report(self, request: SrvTutorial.Request, response: SrvTutorial.Response) -> None:

@@ -15,7 +15,7 @@ from ros_tutorials_common.node_main import run_node
 
 class ServiceServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("service_server", **node_kwargs)
+        super().__init__("service_server", enable_logger_service=True, **node_kwargs)
         self.service = self.create_service(SrvTutorial, "ros_tutorial_srv", self.calculation)
         self.get_logger().info("ready srv server!")
 

@@ -15,7 +15,7 @@ QUEUE_SIZE = 1000
 
 class Listener(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("listener", **node_kwargs)
+        super().__init__("listener", enable_logger_service=True, **node_kwargs)
         self.subscription = self.create_subscription(String, "chatter", self.on_message, QUEUE_SIZE)
 
     def on_message(self, msg: String) -> None:

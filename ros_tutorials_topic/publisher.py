@@ -17,7 +17,7 @@ RATE_HZ = 10.0
 
 class TopicPublisher(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("topic_publisher", **node_kwargs)
+        super().__init__("topic_publisher", enable_logger_service=True, **node_kwargs)
         self.publisher = self.create_publisher(MsgTutorial, "ros_tutorial_msg", QUEUE_SIZE)
         self.timer = self.create_timer(1.0 / RATE_HZ, self.publish_message)
         self.count = 0

@@ -16,7 +16,7 @@ RATE_HZ = 10.0
 
 class Talker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("talker", **node_kwargs)
+        super().__init__("talker", enable_logger_service=True, **node_kwargs)
         self.publisher = self.create_publisher(String, "chatter", QUEUE_SIZE)
         self.timer = self.create_timer(1.0 / RATE_HZ, self.publish_message)
         self.count = 0

@@ -20,7 +20,7 @@ from rclpy.executors import ExternalShutdownException
 
 from ros_tutorials_common.action_goal import Interrupted
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
-from rostool import action, interface, node, param, service, topic
+from rostool import action, console, graph_view, interface, log, node, param, service, topic
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 
@@ -50,7 +50,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
     common = common_options()
-    for module in (topic, service, param, node, action, interface):
+    for module in (topic, service, param, node, action, interface, console, log, graph_view):
         module.register(verbs, common)
     return parser
 
