@@ -1,6 +1,7 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup (default: all)
+python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup graph
+                                     (default: all)
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import os
 import platform
 import signal
 
-from benchmarks import launch, memory, service, setup_time, topic
+from benchmarks import graph, launch, memory, service, setup_time, topic
 from benchmarks.common import print_table, private_domain
 
 GROUPS = {
@@ -21,6 +22,7 @@ GROUPS = {
     "rate": topic.rate_accuracy,
     "memory": memory.node_memory,
     "setup": setup_time.setup_times,
+    "graph": lambda: graph.lists() + graph.picture(),
 }
 
 

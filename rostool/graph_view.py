@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import html
 import os
+import random
 import sys
 import time
 from collections import defaultdict
@@ -33,7 +34,7 @@ from itertools import pairwise
 from pathlib import Path
 
 from rostool.errors import ToolError
-from rostool.graph import Graph, Snapshot, split_node_name
+from rostool.graph import Graph, Snapshot, split_node_name, until_stopped
 
 DEBUG_TOPICS = {"/rosout", "/parameter_events"}  # hidden unless --all, as rqt_graph does
 ROOT = "/"
@@ -346,6 +347,37 @@ def _frames(bands, band_top, band_height, boxes, measure) -> list[Frame]:
     return frames
 
 
+def example_model(nodes: int = 50, topics: int = 100, seed: int = 12) -> GraphModel:
+    """A made-up robot-like graph, for the layout's tests and benchmark.
+
+    Nodes in pipeline stages (drivers, perception, planning, control) and namespaces (one
+    nested) and the root; each topic published by 1-2 nodes of a stage and heard by 0-3
+    nodes of later stages, one in ten also by an earlier one (a cycle).
+    """
+    rng = random.Random(seed)
+    namespaces = ["/", "/robot1", "/robot2", "/robot2/arm", "/sensors", "/a_long_namespace_name"]
+    model = GraphModel()
+    stages: list[list[str]] = [[] for _ in range(5)]
+    for n in range(nodes):
+        ns = rng.choice(namespaces)
+        name = f"{ns.rstrip('/')}/node_{n}_{'x' * rng.randrange(0, 12)}"
+        model.add("n:" + name, name, "node", ns)
+        stages[n % 5].append("n:" + name)
+    for t in range(topics):
+        ns = rng.choice(namespaces)
+        name = f"{ns.rstrip('/')}/topic_{t}"
+        model.add("t:" + name, name, "topic", ns)
+        stage = rng.randrange(4)
+        for pub in rng.sample(stages[stage], rng.randint(1, 2)):
+            model.edges.append((pub, "t:" + name))
+        later = [key for s in stages[stage + 1 :] for key in s]
+        for sub in rng.sample(later, rng.randint(0, 3)):
+            model.edges.append(("t:" + name, sub))
+        if rng.random() < 0.1 and stage > 0:
+            model.edges.append(("t:" + name, rng.choice(stages[stage - 1])))
+    return model
+
+
 # Output: DOT, SVG, PNG.
 
 
@@ -564,7 +596,8 @@ def window(graph: Graph, groups: bool, all_topics: bool, refresh: float = 1.0) -
 def run(graph: Graph, args: argparse.Namespace) -> None:
     groups, all_topics = not args.no_groups, args.all
     if args.window:
-        window(graph, groups, all_topics)
+        with until_stopped():  # Ctrl-C is how a window that follows the graph ends: exit 0
+            window(graph, groups, all_topics)
         return
     graph.settle()
     model = current_model(graph, groups, all_topics)

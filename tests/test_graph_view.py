@@ -8,7 +8,6 @@ with and without groups, gives exactly the book's edges.
 
 from __future__ import annotations
 
-import random
 import re
 import subprocess
 import sys
@@ -19,37 +18,16 @@ import pytest
 from helpers import TIMEOUT, NodeProcess
 
 from rostool import graph_view
-from rostool.graph_view import GROUP_LABEL, PAD_X, GraphModel, layout, monospace_measure
+from rostool.graph_view import (
+    GROUP_LABEL,
+    PAD_X,
+    GraphModel,
+    layout,
+    monospace_measure,
+)
+from rostool.graph_view import example_model as generated_model
 
 BIN = Path(sys.executable).parent
-
-
-def generated_model(nodes: int = 50, topics: int = 100, seed: int = 12) -> GraphModel:
-    """A robot-like graph: nodes in pipeline stages (drivers, perception, planning, control)
-    and namespaces (one nested) and the root; each topic published by 1-2 nodes of a stage
-    and heard by 0-3 nodes of later stages, one in ten also by an earlier one (a cycle)."""
-    rng = random.Random(seed)
-    namespaces = ["/", "/robot1", "/robot2", "/robot2/arm", "/sensors", "/a_long_namespace_name"]
-    model = GraphModel()
-    stages: list[list[str]] = [[] for _ in range(5)]
-    for n in range(nodes):
-        ns = rng.choice(namespaces)
-        name = f"{ns.rstrip('/')}/node_{n}_{'x' * rng.randrange(0, 12)}"
-        model.add("n:" + name, name, "node", ns)
-        stages[n % 5].append("n:" + name)
-    for t in range(topics):
-        ns = rng.choice(namespaces)
-        name = f"{ns.rstrip('/')}/topic_{t}"
-        model.add("t:" + name, name, "topic", ns)
-        stage = rng.randrange(4)
-        for pub in rng.sample(stages[stage], rng.randint(1, 2)):
-            model.edges.append((pub, "t:" + name))
-        later = [key for s in stages[stage + 1 :] for key in s]
-        for sub in rng.sample(later, rng.randint(0, 3)):
-            model.edges.append(("t:" + name, sub))
-        if rng.random() < 0.1 and stage > 0:
-            model.edges.append(("t:" + name, rng.choice(stages[stage - 1])))
-    return model
 
 
 def overlaps(a, b, gap: float = 0.0) -> bool:
