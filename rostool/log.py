@@ -69,12 +69,18 @@ def level_command(graph: Graph, node: str | None, level: str | None) -> None:
         services = graph.service_types()
         for full_name in graph.node_names():
             if f"{full_name}/{GET}" in services:
-                print(f"{full_name}: {get_level(graph, full_name)}")
+                print(f"{full_name}: {_described(get_level(graph, full_name))}")
         return
     if level is not None:
         set_level(graph, node, level)
     full_name = "/" + node.strip("/")
-    print(f"{full_name}: {get_level(graph, full_name)}")
+    print(f"{full_name}: {_described(get_level(graph, full_name))}")
+
+
+def _described(level: str) -> str:
+    if level == "UNSET":
+        return "UNSET (the default applies: INFO, unless started with --log-level)"
+    return level
 
 
 def latest_launch_folder(base: Path | None = None) -> Path:
