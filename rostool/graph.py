@@ -10,7 +10,8 @@ fixed time: it polls until what it needs appears (``wait_for``), and reports "un
 
 Listing commands must show everything that was running before they started. Discovery
 tells them when that is (``settle``): every running participant has announced itself once
-its announcement period (0.25 s here) has passed since ours started (we wait three); each
+its announcement period (0.25 s here) has passed since ours started (we wait three, and
+three after the last participant found: participants are not visible through ROS); each
 participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
 readers and writers each node has; the graph is complete when every participant seen has sent it and
 every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
@@ -164,7 +165,8 @@ class Graph:
         """Wait until the graph holds everything that was running when this command started.
 
         Complete means: ANNOUNCEMENTS announcement periods have passed since our participant
-        started (so every running participant has announced itself), and every participant seen has
+        started and since the last participant found (so every running participant has
+        announced itself), and every participant seen has
         sent its ros_discovery_info, and every node and endpoint it announced is in our graph.
         At most MAX_SETTLE_TIME; what is still missing then is reported on stderr. With
         ``spin_time`` given, wait exactly that long instead.
@@ -177,9 +179,19 @@ class Graph:
         # Participant discovery itself is not visible through ROS; what bounds it is the
         # running participants' announcement period. Three of them: on a loaded 2-core
         # machine an announcement and the endpoint exchange after it took up to 0.7 s.
-        all_announced = self.started + announcement_period() * ANNOUNCEMENTS + 0.05
+        # Participants found in one run arrive spread out (up to 0.5 s apart seen), so the
+        # same wait also follows the last participant found.
+        period = announcement_period() * ANNOUNCEMENTS + 0.05
+        all_announced = self.started + period
+        participants = self.participants()
         while time.monotonic() < all_announced:
             self.spin_once()
+            found = self.participants()
+            if not found <= participants:
+                participants |= found
+                all_announced = max(all_announced, time.monotonic() + period)
+            if time.monotonic() - start >= MAX_SETTLE_TIME:
+                break
         while True:
             # One look costs a query per DDS topic (0.1 to 0.3 s with 20 nodes on a loaded
             # machine), so look only once the participants have had time to announce.
@@ -198,14 +210,18 @@ class Graph:
                 return
             self.spin_once(0.05)
 
+    def participants(self) -> set[bytes]:
+        """The participants (ROS 2 processes) seen: each has a ros_discovery_info writer."""
+        return {
+            participant_of(bytes(endpoint.endpoint_gid))
+            for endpoint in self.node.get_publishers_info_by_topic(DISCOVERY_TOPIC, no_mangle=True)
+        }
+
     def missing(self) -> list[str]:
         """What participants announced that our graph does not hold yet ([] if nothing)."""
         if not self.discovery.available:
             return []  # no announcements to compare with: the announcement period must do
-        participants = {
-            participant_of(bytes(endpoint.endpoint_gid))
-            for endpoint in self.node.get_publishers_info_by_topic(DISCOVERY_TOPIC, no_mangle=True)
-        }
+        participants = self.participants()
         own = self.node.get_name()
         missing: list[str] = []
         known_nodes = set(self.node.get_node_names_and_namespaces())
