@@ -112,3 +112,5 @@ def test_echo_hears_a_latched_and_a_periodic_publisher(node_process, latched_fir
         _echoed(echo, text)
     assert echo.interrupt() == 0
     assert "incompatible" not in echo.output
+    # No one QoS gets the latched message and the periodic ones: echo says what it chose.
+    assert "note: /chatter has transient-local (latched) and volatile publishers" in echo.output
