@@ -191,6 +191,11 @@ class Graph:
                 participants |= found
                 all_announced = max(all_announced, time.monotonic() + period)
             if time.monotonic() - start >= MAX_SETTLE_TIME:
+                print(
+                    f"warning: after {MAX_SETTLE_TIME:g} s processes were still being "
+                    "discovered (a very busy machine?); the list may miss some",
+                    file=sys.stderr,
+                )
                 break
         while True:
             # One look costs a query per DDS topic (0.1 to 0.3 s with 20 nodes on a loaded
