@@ -284,24 +284,39 @@ class Graph:
                     endpoints.append(Endpoint(full, endpoint.qos_profile))
         services: dict[str, ServiceInfo] = {}
         actions: dict[str, ServiceInfo] = {}
-        for full in nodes:
-            namespace, name = split_node_name(full)
-            for table, role, query in (
-                (services, "servers", node.get_service_names_and_types_by_node),
-                (services, "clients", node.get_client_names_and_types_by_node),
-                (actions, "servers", get_action_server_names_and_types_by_node),
-                (actions, "clients", get_action_client_names_and_types_by_node),
-            ):
-                if table is actions:
-                    offered = query(node, name, namespace)
-                else:
-                    offered = query(name, namespace)
+        for full in list(nodes):
+            try:
+                offers = self._offers(full)
+            except RuntimeError:  # rclpy's NodeNameNonExistentError: it has just gone
+                nodes.remove(full)
+                continue
+            for kind, role, offered in offers:
+                table = services if kind == "services" else actions
                 for offered_name, types in offered:
                     if is_hidden(offered_name):
                         continue
                     entry = table.setdefault(offered_name, ServiceInfo(list(types)))
                     getattr(entry, role).append(full)
         return Snapshot(nodes, topics, services, actions)
+
+    def _offers(self, full_name: str) -> list[tuple[str, str, list]]:
+        """A node's services and actions: ('services'|'actions', 'servers'|'clients', names)."""
+        node = self.node
+        namespace, name = split_node_name(full_name)
+        return [
+            ("services", "servers", node.get_service_names_and_types_by_node(name, namespace)),
+            ("services", "clients", node.get_client_names_and_types_by_node(name, namespace)),
+            (
+                "actions",
+                "servers",
+                get_action_server_names_and_types_by_node(node, name, namespace),
+            ),
+            (
+                "actions",
+                "clients",
+                get_action_client_names_and_types_by_node(node, name, namespace),
+            ),
+        ]
 
     # What the graph holds, hidden names left out as ros2cli does.
 
