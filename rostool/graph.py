@@ -180,16 +180,20 @@ class Graph:
         # running participants' announcement period. Three of them: on a loaded 2-core
         # machine an announcement and the endpoint exchange after it took up to 0.7 s.
         # Participants found in one run arrive spread out (up to 0.5 s apart seen), so the
-        # same wait also follows the last participant found.
+        # same wait also follows the last participant found; on a busy machine, where they
+        # arrive further apart, it is 1.5 times the longest gap between two arrivals.
         period = announcement_period() * ANNOUNCEMENTS + 0.05
         all_announced = self.started + period
         participants = self.participants()
+        last_found, longest_gap = self.started, 0.0
         while time.monotonic() < all_announced:
             self.spin_once()
             found = self.participants()
             if not found <= participants:
                 participants |= found
-                all_announced = max(all_announced, time.monotonic() + period)
+                now = time.monotonic()
+                longest_gap, last_found = max(longest_gap, now - last_found), now
+                all_announced = max(all_announced, now + max(period, 1.5 * longest_gap))
             if time.monotonic() - start >= MAX_SETTLE_TIME:
                 print(
                     f"warning: after {MAX_SETTLE_TIME:g} s processes were still being "

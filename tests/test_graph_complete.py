@@ -54,7 +54,7 @@ def test_node_list_is_complete_in_every_run(union_launch, capsys):
     incomplete = []
     for run in range(RUNS):
         listed = _listed(capsys, node.list_nodes)
-        if listed != UNION_NODES:
+        if not set(listed) >= set(UNION_NODES):
             incomplete.append((run, listed))
     assert not incomplete, f"node list incomplete in {len(incomplete)} of {RUNS} runs: {incomplete}"
 
@@ -75,7 +75,7 @@ def test_node_list_command_is_complete(union_launch, command):
     for _ in range(3):
         proc = NodeProcess(str(BIN / command[0]), *command[1:])
         assert proc.wait() == 0, proc.output
-        assert proc.output.split() == UNION_NODES
+        assert set(proc.output.split()) >= set(UNION_NODES), proc.output
 
 
 def test_rosservice_info_names_the_node_every_time(node_process, capsys):
