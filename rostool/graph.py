@@ -10,8 +10,8 @@ fixed time: it polls until what it needs appears (``wait_for``), and reports "un
 
 Listing commands must show everything that was running before they started. Discovery
 tells them when that is (``settle``): every running participant has announced itself once
-its announcement period (0.25 s here) has passed since ours started (we wait three, and
-three after the last participant found: participants are not visible through ROS); each
+its announcement period (0.25 s here) has passed since ours started (we wait five, and
+five after the last participant found: participants are not visible through ROS); each
 participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
 readers and writers each node has; the graph is complete when every participant seen has sent it and
 every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
@@ -46,7 +46,7 @@ from rostool.errors import ToolError
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
 MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete (load: 7 s seen)
 POLL_PERIOD = 0.02
-ANNOUNCEMENTS = 3  # announcement periods a listing waits for participants to be discovered
+ANNOUNCEMENTS = 5  # announcement periods a listing waits for participants to be discovered
 UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"  # rmw's name for an endpoint whose node is not known yet
 
 T = TypeVar("T")
@@ -177,9 +177,10 @@ class Graph:
                 self.spin_once()
             return
         # Participant discovery itself is not visible through ROS; what bounds it is the
-        # running participants' announcement period. Three of them: on a loaded 2-core
-        # machine an announcement and the endpoint exchange after it took up to 0.7 s.
-        # Participants found in one run arrive spread out (up to 0.5 s apart seen), so the
+        # running participants' announcement period. Five of them: on a loaded 2-core
+        # machine (load 13) an announcement and the endpoint exchange after it took up to
+        # 0.7 s, and three periods missed one in 20. Participants found in one run arrive
+        # spread out (up to 0.6 s apart seen), so the
         # same wait also follows the last participant found; on a busy machine, where they
         # arrive further apart, it is 1.5 times the longest gap between two arrivals.
         period = announcement_period() * ANNOUNCEMENTS + 0.05
