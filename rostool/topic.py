@@ -156,8 +156,8 @@ def pub(
         except ToolError:
             print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     if rate is None:
-        print("publishing and latching message. Press ctrl-C to terminate", flush=True)
-        with until_stopped():
+        with until_stopped():  # the line first inside: Ctrl-C right after it still means 0
+            print("publishing and latching message. Press ctrl-C to terminate", flush=True)
             _latch(graph, publisher, msg)
         return
     if times is None:
