@@ -19,7 +19,19 @@ from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
-from rostool import action, core, interface, node, param, run, service, topic
+from rostool import (
+    action,
+    console,
+    core,
+    graph_view,
+    interface,
+    log,
+    node,
+    param,
+    run,
+    service,
+    topic,
+)
 from rostool.action_goal import Interrupted
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
@@ -37,7 +49,8 @@ def common_options() -> argparse.ArgumentParser:
     common.add_argument(
         "--spin-time",
         type=positive_seconds,
-        help="seconds a list waits for discovery (default: until the graph is quiet, "
+        help="seconds a list waits for discovery (default: until every participant's "
+        "announced nodes and endpoints are seen, "
         f"at most {MAX_SETTLE_TIME:g})",
     )
     return common
@@ -49,7 +62,19 @@ def build_parser() -> argparse.ArgumentParser:
     )
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
     common = common_options()
-    for module in (topic, service, param, node, action, interface, run, core):
+    for module in (
+        topic,
+        service,
+        param,
+        node,
+        action,
+        interface,
+        run,
+        core,
+        console,
+        log,
+        graph_view,
+    ):
         module.register(verbs, common)
     from rostool.bag.cli import register as register_bag  # it uses this module: import late
 

@@ -6,33 +6,48 @@ is already running shows up in a new process after a few milliseconds, or after 
 running participants' next announcement (every 0.25 s with this project's Fast DDS
 profile, every 3 s with Fast DDS's default). So a command never sleeps a
 fixed time: it polls until what it needs appears (``wait_for``), and reports "unknown
-..." only when its timeout has passed. Listing commands cannot know what they have not
-seen yet; they wait until another node has shown up and the graph has been quiet for a
-moment (``settle``, at most MAX_SETTLE_TIME), or exactly ``spin_time`` seconds if given:
-discovery can also deliver a node's endpoints in parts seconds apart, and only a fixed
-wait long enough makes a list complete.
+..." only when its timeout has passed.
+
+Listing commands must show everything that was running before they started. Discovery
+tells them when that is (``settle``): every running participant has announced itself once
+its announcement period (0.25 s here) has passed since ours started (we wait five, and
+five after the last participant found: participants are not visible through ROS); each
+participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
+readers and writers each node has; the graph is complete when every participant seen has sent it and
+every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
+same view: nodes, topics with their publishers and subscribers (with node names and QoS),
+services and actions with their servers and clients.
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import sys
 import time
 from collections.abc import Callable
+from dataclasses import dataclass, field
 from typing import TypeVar
 
 import rclpy
+from rclpy.action.graph import (
+    get_action_client_names_and_types_by_node,
+    get_action_server_names_and_types_by_node,
+)
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
+from rclpy.qos import QoSProfile
 from rclpy.signals import SignalHandlerOptions
 
 from ros_tutorials_common.node_main import init
+from rostool.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
 from rostool.errors import ToolError
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
-MAX_SETTLE_TIME = 4.0  # the most a listing command waits for discovery (slow case ~3 s)
-QUIET_TIME = 0.25  # a listing is complete once the graph has not changed for this long
+MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete (load: 7 s seen)
 POLL_PERIOD = 0.02
+ANNOUNCEMENTS = 5  # announcement periods a listing waits for participants to be discovered
+UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"  # rmw's name for an endpoint whose node is not known yet
 
 T = TypeVar("T")
 
@@ -66,6 +81,40 @@ def until_stopped() -> contextlib.AbstractContextManager:
     return contextlib.suppress(KeyboardInterrupt, ExternalShutdownException)
 
 
+@dataclass
+class Endpoint:
+    """A publisher or subscription: its node's full name ('' while unknown) and its QoS."""
+
+    node: str
+    qos: QoSProfile
+
+
+@dataclass
+class TopicInfo:
+    types: list[str]
+    publishers: list[Endpoint] = field(default_factory=list)
+    subscribers: list[Endpoint] = field(default_factory=list)
+
+
+@dataclass
+class ServiceInfo:
+    """A service or an action: its types and the full names of its servers and clients."""
+
+    types: list[str]
+    servers: list[str] = field(default_factory=list)
+    clients: list[str] = field(default_factory=list)
+
+
+@dataclass
+class Snapshot:
+    """What the graph holds at one moment, the tools' own nodes and hidden names left out."""
+
+    nodes: list[str]
+    topics: dict[str, TopicInfo]
+    services: dict[str, ServiceInfo]
+    actions: dict[str, ServiceInfo]
+
+
 class Graph:
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
@@ -79,10 +128,14 @@ class Graph:
         self.node = Node(
             f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False
         )
+        self.started = time.monotonic()
         self.executor = SingleThreadedExecutor()
         self.executor.add_node(self.node)
+        self.discovery = DiscoveryInfo(self.node)
+        self.incomplete: list[str] = []  # what the last settle() still missed
 
     def close(self) -> None:
+        self.discovery.close()
         self.executor.shutdown()
         self.node.destroy_node()
         rclpy.try_shutdown()
@@ -109,27 +162,166 @@ class Graph:
             self.spin_once()
 
     def settle(self) -> None:
-        """Let discovery run before listing: until other nodes are seen and nothing changes."""
+        """Wait until the graph holds everything that was running when this command started.
+
+        Complete means: ANNOUNCEMENTS announcement periods have passed since our participant
+        started and since the last participant found (so every running participant has
+        announced itself), and every participant seen has
+        sent its ros_discovery_info, and every node and endpoint it announced is in our graph.
+        At most MAX_SETTLE_TIME; what is still missing then is reported on stderr. With
+        ``spin_time`` given, wait exactly that long instead.
+        """
         start = time.monotonic()
         if self.spin_time is not None:
             while time.monotonic() - start < self.spin_time:
                 self.spin_once()
             return
-        last_change = start
-        snapshot = None
-        while time.monotonic() - start < MAX_SETTLE_TIME:
-            current = (
-                sorted(self.node.get_node_names_and_namespaces()),
-                sorted(self.node.get_topic_names_and_types()),
-                sorted(self.node.get_service_names_and_types()),
-            )
-            now = time.monotonic()
-            if current != snapshot:
-                snapshot, last_change = current, now
-            others_seen = len(current[0]) > 1
-            if others_seen and now - last_change >= QUIET_TIME:
-                return
+        # Participant discovery itself is not visible through ROS; what bounds it is the
+        # running participants' announcement period. Five of them: on a loaded 2-core
+        # machine (load 13) an announcement and the endpoint exchange after it took up to
+        # 0.7 s, and three periods missed one in 20. Participants found in one run arrive
+        # spread out (up to 0.6 s apart seen), so the
+        # same wait also follows the last participant found; on a busy machine, where they
+        # arrive further apart, it is 1.5 times the longest gap between two arrivals.
+        period = announcement_period() * ANNOUNCEMENTS + 0.05
+        all_announced = self.started + period
+        participants = self.participants()
+        last_found, longest_gap = self.started, 0.0
+        while time.monotonic() < all_announced:
             self.spin_once()
+            found = self.participants()
+            if not found <= participants:
+                participants |= found
+                now = time.monotonic()
+                longest_gap, last_found = max(longest_gap, now - last_found), now
+                all_announced = max(all_announced, now + max(period, 1.5 * longest_gap))
+            if time.monotonic() - start >= MAX_SETTLE_TIME:
+                print(
+                    f"warning: after {MAX_SETTLE_TIME:g} s processes were still being "
+                    "discovered (a very busy machine?); the list may miss some",
+                    file=sys.stderr,
+                )
+                break
+        while True:
+            # One look costs a query per DDS topic (0.1 to 0.3 s with 20 nodes on a loaded
+            # machine), so look only once the participants have had time to announce.
+            self.discovery.take()
+            missing = self.missing()
+            if not missing:
+                self.incomplete = []
+                return
+            if time.monotonic() - start >= MAX_SETTLE_TIME:
+                self.incomplete = missing
+                print(
+                    f"warning: after {MAX_SETTLE_TIME:g} s discovery is still incomplete "
+                    f"({'; '.join(missing[:3])}); the list may miss something",
+                    file=sys.stderr,
+                )
+                return
+            self.spin_once(0.05)
+
+    def participants(self) -> set[bytes]:
+        """The participants (ROS 2 processes) seen: each has a ros_discovery_info writer."""
+        return {
+            participant_of(bytes(endpoint.endpoint_gid))
+            for endpoint in self.node.get_publishers_info_by_topic(DISCOVERY_TOPIC, no_mangle=True)
+        }
+
+    def missing(self) -> list[str]:
+        """What participants announced that our graph does not hold yet ([] if nothing)."""
+        if not self.discovery.available:
+            return []  # no announcements to compare with: the announcement period must do
+        participants = self.participants()
+        own = self.node.get_name()
+        missing: list[str] = []
+        known_nodes = set(self.node.get_node_names_and_namespaces())
+        announced: list[tuple[str, list]] = []  # (node, its reader and writer GIDs)
+        for participant in sorted(participants):
+            info = self.discovery.latest.get(participant)
+            if info is None:
+                missing.append(f"participant {participant.hex()} has not said what it holds")
+                continue
+            for entry in info.node_entities_info_seq:
+                if entry.node_name == own:
+                    continue
+                name = join_node_name(entry.node_namespace, entry.node_name)
+                if (entry.node_name, entry.node_namespace) not in known_nodes:
+                    missing.append(f"node {name}")
+                else:
+                    announced.append((name, [*entry.reader_gid_seq, *entry.writer_gid_seq]))
+        if missing:
+            return missing  # the endpoints' turn comes after: they cost more to look at
+        endpoints = self._endpoint_gids()
+        for name, gids in announced:
+            unseen = sum(bytes(gid.data) not in endpoints for gid in gids)
+            if unseen:
+                missing.append(f"{unseen} endpoint(s) of {name}")
+        return missing
+
+    def _endpoint_gids(self) -> dict[bytes, str]:
+        """Every reader and writer in our graph (topics, services, ...): GID -> node name."""
+        found: dict[bytes, str] = {}
+        node = self.node
+        for name, _types in node.get_topic_names_and_types(no_demangle=True):
+            for endpoint in (
+                *node.get_publishers_info_by_topic(name, no_mangle=True),
+                *node.get_subscriptions_info_by_topic(name, no_mangle=True),
+            ):
+                if endpoint.node_name != UNKNOWN_NODE:
+                    found[bytes(endpoint.endpoint_gid)] = endpoint.node_name
+        return found
+
+    def snapshot(self) -> Snapshot:
+        """The graph as it is now (call settle() first for a complete one)."""
+        node = self.node
+        nodes = self.node_names()
+        topics: dict[str, TopicInfo] = {}
+        for name, types in self.topic_types().items():
+            info = topics[name] = TopicInfo(types)
+            for endpoints, found in (
+                (info.publishers, node.get_publishers_info_by_topic(name)),
+                (info.subscribers, node.get_subscriptions_info_by_topic(name)),
+            ):
+                for endpoint in found:
+                    if endpoint.node_name.startswith("_"):  # the tools' own, or unknown yet
+                        continue
+                    full = join_node_name(endpoint.node_namespace, endpoint.node_name)
+                    endpoints.append(Endpoint(full, endpoint.qos_profile))
+        services: dict[str, ServiceInfo] = {}
+        actions: dict[str, ServiceInfo] = {}
+        for full in list(nodes):
+            try:
+                offers = self._offers(full)
+            except RuntimeError:  # rclpy's NodeNameNonExistentError: it has just gone
+                nodes.remove(full)
+                continue
+            for kind, role, offered in offers:
+                table = services if kind == "services" else actions
+                for offered_name, types in offered:
+                    if is_hidden(offered_name):
+                        continue
+                    entry = table.setdefault(offered_name, ServiceInfo(list(types)))
+                    getattr(entry, role).append(full)
+        return Snapshot(nodes, topics, services, actions)
+
+    def _offers(self, full_name: str) -> list[tuple[str, str, list]]:
+        """A node's services and actions: ('services'|'actions', 'servers'|'clients', names)."""
+        node = self.node
+        namespace, name = split_node_name(full_name)
+        return [
+            ("services", "servers", node.get_service_names_and_types_by_node(name, namespace)),
+            ("services", "clients", node.get_client_names_and_types_by_node(name, namespace)),
+            (
+                "actions",
+                "servers",
+                get_action_server_names_and_types_by_node(node, name, namespace),
+            ),
+            (
+                "actions",
+                "clients",
+                get_action_client_names_and_types_by_node(node, name, namespace),
+            ),
+        ]
 
     # What the graph holds, hidden names left out as ros2cli does.
 

@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name, join_node_name
+from rostool.graph import Graph, ServiceInfo, absolute_name
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
 from rostool.typenames import full_type_name, load_type
 
@@ -30,14 +30,12 @@ def find(graph: Graph, type_name: str) -> None:
 
 
 def servers(graph: Graph, service: str) -> list[str]:
-    """The nodes that offer a service (the graph has no direct query for it)."""
-    found = []
-    for full_name in graph.node_names():
-        namespace, _, name = full_name.rpartition("/")
-        offered = graph.node.get_service_names_and_types_by_node(name, namespace or "/")
-        if any(offered_name == service for offered_name, _ in offered):
-            found.append(join_node_name(namespace or "/", name))
-    return found
+    """The nodes that offer a service, once the graph is complete (and one is known)."""
+    graph.settle()
+    return graph.wait_for(
+        lambda: graph.snapshot().services.get(service, ServiceInfo([])).servers,
+        f"service '{service}': the node that serves it is not known",
+    )
 
 
 def call(

@@ -16,12 +16,14 @@ from rclpy.duration import Duration
 from rclpy.executors import ExternalShutdownException
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.publisher import Publisher
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.qos import DurabilityPolicy, QoSProfile
 
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool.errors import ToolError
 from rostool.graph import Graph, absolute_name, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
+from rostool.qos import AdaptiveSubscription
+from rostool.qos import compatible_qos as compatible_qos  # moved to qos.py; kept importable
 from rostool.typenames import full_type_name, load_type
 
 DEFAULT_PUB_RATE = 1.0  # Hz, as `ros2 topic pub`
@@ -73,23 +75,6 @@ def _node_names_known(graph: Graph, topic: str) -> bool:
     return all(not e.node_name.startswith("_NODE_NAME_UNKNOWN") for e in endpoints)
 
 
-def compatible_qos(graph: Graph, topic: str) -> QoSProfile:
-    """A subscription QoS that matches every current publisher, as `ros2 topic echo` picks it.
-
-    A reliable subscription gets nothing from a best-effort publisher, and only a
-    transient-local one receives what a latching publisher sent before we joined.
-    """
-    publishers = graph.node.get_publishers_info_by_topic(topic)
-    qos = QoSProfile(depth=10)
-    if publishers and all(
-        p.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for p in publishers
-    ):
-        qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
-    if any(p.qos_profile.reliability == ReliabilityPolicy.BEST_EFFORT for p in publishers):
-        qos.reliability = ReliabilityPolicy.BEST_EFFORT
-    return qos
-
-
 def _message_type(graph: Graph, topic: str, type_name: str | None) -> type:
     return load_type(type_name or graph.wait_for_topic_type(topic), ("msg",))
 
@@ -121,12 +106,11 @@ def _echo(
     msg_type = _message_type(graph, topic, type_name)
     received: deque = deque()
     # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
-    graph.node.create_subscription(
-        msg_type, topic, lambda msg: received.append(msg), compatible_qos(graph, topic)
-    )
+    subscription = AdaptiveSubscription(graph, msg_type, topic, lambda msg: received.append(msg))
     printed = 0
     while True:
         graph.spin_once(0.1)
+        subscription.update()
         while received:
             msg = received.popleft()
             if field is None:
@@ -174,8 +158,8 @@ def pub(
         except ToolError:
             print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     if rate is None:
-        print("publishing and latching message. Press ctrl-C to terminate", flush=True)
-        with until_stopped():
+        with until_stopped():  # the line first inside: Ctrl-C right after it still means 0
+            print("publishing and latching message. Press ctrl-C to terminate", flush=True)
             _latch(graph, publisher, msg)
         return
     if times is None:
@@ -251,13 +235,12 @@ def _hz(graph: Graph, topic: str, window: int, bandwidth: bool) -> None:
     msg_type = _message_type(graph, topic, None)
     meter = _RateMeter(window)
     # raw=True: count serialized messages without the cost of deserializing them.
-    graph.node.create_subscription(
-        msg_type, topic, meter.add, compatible_qos(graph, topic), raw=True
-    )
+    subscription = AdaptiveSubscription(graph, msg_type, topic, meter.add, raw=True)
     print(f"subscribed to [{topic}]", flush=True)
     last_report = time.monotonic()
     while True:
         graph.spin_once(0.1)
+        subscription.update()
         if time.monotonic() - last_report < 1.0:
             continue
         last_report = time.monotonic()

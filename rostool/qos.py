@@ -1,0 +1,132 @@
+"""Subscribing so that every publisher of a topic is heard, also those that come later.
+
+A subscription and a publisher only match when their QoS are compatible: a reliable
+subscription gets nothing from a best-effort publisher, and a transient-local subscription
+(the only kind that receives what a latching publisher sent before it joined) gets nothing
+from a volatile publisher. `ros2 topic echo` picks its QoS once, from the publishers present
+at start; a publisher with other QoS that appears later is never heard ("offering
+incompatible QoS ... DURABILITY"). ``AdaptiveSubscription`` picks the QoS the same way and
+creates the subscription again whenever the set of publisher QoS changes.
+
+When no single QoS gets everything (transient-local and volatile publishers together), it
+subscribes volatile, which matches them all, and says once on stderr that what the
+transient-local publishers sent before it joined is not received. The other policies
+(deadline, liveliness) are left at the defaults that match any publisher; should one still be
+incompatible, rmw's event is reported in one line and the publishers are looked at again.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from rclpy.event_handler import SubscriptionEventCallbacks
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+CHECK_PERIOD = 0.2  # s between looks at the topic's publishers
+
+
+def publisher_qos_kinds(graph: Any, topic: str) -> set[tuple[DurabilityPolicy, ReliabilityPolicy]]:
+    """The (durability, reliability) pairs the topic's publishers offer now."""
+    return {
+        (p.qos_profile.durability, p.qos_profile.reliability)
+        for p in graph.node.get_publishers_info_by_topic(topic)
+    }
+
+
+def qos_for(kinds: set[tuple[DurabilityPolicy, ReliabilityPolicy]]) -> QoSProfile:
+    """A subscription QoS that matches every publisher offering one of these kinds."""
+    qos = QoSProfile(depth=10)
+    if kinds and all(durability == DurabilityPolicy.TRANSIENT_LOCAL for durability, _ in kinds):
+        qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
+    if any(reliability == ReliabilityPolicy.BEST_EFFORT for _, reliability in kinds):
+        qos.reliability = ReliabilityPolicy.BEST_EFFORT
+    return qos
+
+
+def compatible_qos(graph: Any, topic: str) -> QoSProfile:
+    """A subscription QoS that matches every current publisher, as `ros2 topic echo` picks it.
+
+    A reliable subscription gets nothing from a best-effort publisher, and only a
+    transient-local one receives what a latching publisher sent before we joined.
+    """
+    return qos_for(publisher_qos_kinds(graph, topic))
+
+
+def _say(message: str) -> None:
+    print(message, file=sys.stderr, flush=True)
+
+
+class AdaptiveSubscription:
+    """A subscription that follows the topic's publishers' QoS; call ``update()`` often."""
+
+    def __init__(
+        self,
+        graph: Any,
+        msg_type: type,
+        topic: str,
+        callback: Callable[[Any], None],
+        raw: bool = False,
+    ) -> None:
+        self.graph = graph
+        self.msg_type = msg_type
+        self.topic = topic
+        self.callback = callback
+        self.raw = raw
+        self.kinds: set | None = None
+        self.qos: QoSProfile | None = None
+        self.subscription = None
+        self._next_check = 0.0
+        self._warned_mixed = False
+        self._incompatible: tuple[str, float] | None = None  # (policy, when reported)
+        self.update(force=True)
+
+    def update(self, force: bool = False) -> None:
+        """Create the subscription again if the publishers' QoS ask for another one."""
+        now = time.monotonic()
+        if not force and now < self._next_check:
+            return
+        self._next_check = now + CHECK_PERIOD
+        kinds = publisher_qos_kinds(self.graph, self.topic)
+        if kinds == self.kinds:
+            # rmw may report a new publisher before our graph shows it: give it a second.
+            if self._incompatible is not None and now - self._incompatible[1] > 1.0:
+                policy, self._incompatible = self._incompatible[0], None
+                _say(f"warning: a publisher of {self.topic} offers an incompatible QoS ({policy})")
+            return
+        self.kinds = kinds
+        self._incompatible = None
+        durabilities = {durability for durability, _ in kinds}
+        if len(durabilities) > 1 and not self._warned_mixed:
+            self._warned_mixed = True
+            _say(
+                f"note: {self.topic} has transient-local (latched) and volatile publishers; "
+                "no one QoS gets both the latched messages sent before now and the others: "
+                "subscribing volatile, so every publisher is heard from now on"
+            )
+        qos = qos_for(kinds)
+        if self.qos is not None and _same(qos, self.qos):
+            return
+        if self.subscription is not None:
+            self.graph.node.destroy_subscription(self.subscription)
+        self.qos = qos
+        self.subscription = self.graph.node.create_subscription(
+            self.msg_type,
+            self.topic,
+            self.callback,
+            qos,
+            raw=self.raw,
+            event_callbacks=SubscriptionEventCallbacks(incompatible_qos=self._on_incompatible),
+        )
+
+    def _on_incompatible(self, event: Any) -> None:
+        """rmw reports a publisher we do not match: usually one that just appeared."""
+        policy = getattr(event.last_policy_kind, "name", str(event.last_policy_kind))
+        self._incompatible = (policy.removeprefix("RMW_QOS_POLICY_"), time.monotonic())
+        self._next_check = 0.0  # look at the publishers again at once
+
+
+def _same(a: QoSProfile, b: QoSProfile) -> bool:
+    return (a.durability, a.reliability) == (b.durability, b.reliability)

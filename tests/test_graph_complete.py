@@ -1,0 +1,116 @@
+"""The graph the tools see is complete (issue 12's three defects, each with its test).
+
+1. `rosnode list` / `rostopic list` with union.launch running show every node and topic that
+   was running before they started, in every run (here: 20 runs of the list function in one
+   process, each with a fresh participant, plus real command-line runs).
+2. `rosservice info` names the serving node every time.
+3. `rostopic echo` receives from a latched publisher and from a later periodic one on the
+   same topic, in both orders (seed 004's sequence).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+from helpers import NodeProcess
+
+from rostool import node, ros1, topic
+from rostool.graph import Graph
+
+BIN = Path(sys.executable).parent
+RUNS = 20
+UNION_NODES = [
+    f"/{ns}/{name}" for ns in ("ns1", "ns2") for name in ("topic_publisher", "topic_subscriber")
+]
+UNION_TOPICS = {"/ns1/ros_tutorial_msg", "/ns2/ros_tutorial_msg", "/rosout", "/parameter_events"}
+
+
+@pytest.fixture(scope="module")
+def union_launch(ros_domain):
+    """union.launch running, all four nodes talking, for the whole module."""
+    launcher = NodeProcess("-m", "launcher", "union.launch")
+    try:
+        launcher.wait_for_output(
+            lambda lines: all(
+                any(f"[{ns}.topic_subscriber]: recieve msg" in line for line in lines)
+                for ns in ("ns1", "ns2")
+            ),
+            what="both groups talking",
+        )
+        yield launcher
+    finally:
+        launcher.kill()
+
+
+def _listed(capsys, command) -> list[str]:
+    with Graph() as graph:
+        command(graph)
+    return capsys.readouterr().out.split()
+
+
+def test_node_list_is_complete_in_every_run(union_launch, capsys):
+    incomplete = []
+    for run in range(RUNS):
+        listed = _listed(capsys, node.list_nodes)
+        if not set(listed) >= set(UNION_NODES):
+            incomplete.append((run, listed))
+    assert not incomplete, f"node list incomplete in {len(incomplete)} of {RUNS} runs: {incomplete}"
+
+
+def test_topic_list_is_complete_in_every_run(union_launch, capsys):
+    incomplete = []
+    for run in range(RUNS):
+        listed = set(_listed(capsys, topic.list_topics))
+        if not listed >= UNION_TOPICS:
+            incomplete.append((run, sorted(UNION_TOPICS - listed)))
+    assert not incomplete, (
+        f"topic list incomplete in {len(incomplete)} of {RUNS} runs: {incomplete}"
+    )
+
+
+@pytest.mark.parametrize("command", [["rosnode", "list"], ["rostool", "node", "list"]])
+def test_node_list_command_is_complete(union_launch, command):
+    for _ in range(3):
+        proc = NodeProcess(str(BIN / command[0]), *command[1:])
+        assert proc.wait() == 0, proc.output
+        assert set(proc.output.split()) >= set(UNION_NODES), proc.output
+
+
+def test_rosservice_info_names_the_node_every_time(node_process, capsys):
+    server = node_process("-m", "ros_tutorials_service.server")
+    server.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines))
+    for _ in range(10):
+        with Graph() as graph:
+            ros1._service_info(graph, "/ros_tutorial_srv")
+        out = capsys.readouterr().out
+        assert "Node: /service_server\n" in out, out
+        assert "Type: ros_tutorials_interfaces/srv/SrvTutorial" in out
+
+
+def _rostopic(node_process, *args: str) -> NodeProcess:
+    return node_process(str(BIN / "rostopic"), *args)
+
+
+def _echoed(echo: NodeProcess, text: str) -> None:
+    echo.wait_for_output(lambda lines: f"data: {text}" in lines, what=f"echo of '{text}'")
+
+
+@pytest.mark.parametrize("latched_first", [True, False], ids=["latched-first", "periodic-first"])
+def test_echo_hears_a_latched_and_a_periodic_publisher(node_process, latched_first):
+    """Seed 004: echo running, then `rostopic pub` (latched) and `rostopic pub -r` on one topic."""
+    echo = _rostopic(node_process, "echo", "/chatter")
+    publishers = [
+        ("latched", ["pub", "/chatter", "std_msgs/String", "latched"]),
+        ("periodic", ["pub", "-r", "5", "/chatter", "std_msgs/String", "periodic"]),
+    ]
+    if not latched_first:
+        publishers.reverse()
+    for text, args in publishers:
+        _rostopic(node_process, *args)
+        _echoed(echo, text)
+    assert echo.interrupt() == 0
+    assert "incompatible" not in echo.output
+    # No one QoS gets the latched message and the periodic ones: echo says what it chose.
+    assert "note: /chatter has transient-local (latched) and volatile publishers" in echo.output
