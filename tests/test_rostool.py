@@ -88,7 +88,8 @@ def parameter_lesson(node_process):
     "kind,name", [(kind, name) for kind, names in PROJECT_TYPES.items() for name in names]
 )
 def test_interface_show_prints_each_project_type(kind, name):
-    source = (Path(__file__).parents[1] / "interfaces" / kind / f"{name}.{kind}").read_text()
+    package = Path(__file__).parents[1] / "interfaces" / "ros_tutorials_interfaces"
+    source = (package / kind / f"{name}.{kind}").read_text()
     shown = ok("rostool", "interface", "show", f"ros_tutorials_interfaces/{kind}/{name}")
     # Every line of the definition, in order (nested types add indented lines in between).
     top_level = [line for line in shown.splitlines() if not line.startswith("\t")]
