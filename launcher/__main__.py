@@ -75,6 +75,7 @@ def find_launch_file(names: list[str]) -> Path:
     """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
     if len(names) == 2:
         package, name = names
+        package = packages.real_name(package)
         if package not in packages.package_dirs():
             known = ", ".join(packages.package_dirs())
             raise LaunchError(f"unknown package {package!r}; known packages: {known}")

@@ -18,6 +18,14 @@ from functools import cache
 from pathlib import Path
 
 PACKAGE_PREFIX = "ros_tutorials_"
+# ROS package names whose executables live in a tutorial package of another name: turtlesim's
+# nodes are in ros_tutorials_turtlesim, since rosidl's generated module is already `turtlesim`.
+PACKAGE_ALIASES = {"turtlesim": "ros_tutorials_turtlesim"}
+
+
+def real_name(package: str) -> str:
+    """The tutorial package a ROS package name stands for (itself unless aliased)."""
+    return PACKAGE_ALIASES.get(package, package)
 
 
 @cache
@@ -44,6 +52,7 @@ def _has_main(source_file: Path) -> bool:
 @cache
 def executables(package: str) -> dict[str, list[str]]:
     """Executable name -> command line, for one tutorial package ({} if unknown)."""
+    package = real_name(package)
     directory = package_dirs().get(package)
     if directory is None:
         return {}
@@ -68,7 +77,7 @@ def runnable_packages() -> list[str]:
 
 def launch_files(package: str) -> list[Path]:
     """The launch files a package ships in its ``launch/`` folder."""
-    folder = package_dirs()[package] / "launch"
+    folder = package_dirs()[real_name(package)] / "launch"
     if not folder.is_dir():
         return []
     return sorted(path for path in folder.iterdir() if path.name.endswith((".launch", ".xml")))

@@ -137,6 +137,7 @@ def _optenv(words: list[str], _context: Context, _element: Element) -> str:
 
 def package_dir(package: str, element: Element) -> Path:
     found = packages.package_dirs()
+    package = packages.real_name(package)
     if package not in found:
         raise element.error(f"unknown package {package!r}; known: {', '.join(found)}")
     return found[package]
