@@ -18,9 +18,9 @@ from collections.abc import Iterable, Sequence
 
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")  # pygame greets on import otherwise
 
-import pygame  # noqa: E402
+import pygame
 
-from ros_tutorials_turtlesim.simulation import (  # noqa: E402
+from ros_tutorials_turtlesim.simulation import (
     CANVAS_PIXELS,
     METER_PIXELS,
     WORLD_SIZE,
@@ -96,7 +96,7 @@ class Canvas:
 
     def color_under(self, x: float, y: float, background: Sequence[int]) -> tuple[int, int, int]:
         """What the turtle's colour sensor sees: the trail under it, else the background."""
-        px, py = (min(max(int(round(c)), 0), CANVAS_PIXELS - 1) for c in to_pixels(x, y))
+        px, py = (min(max(round(c), 0), CANVAS_PIXELS - 1) for c in to_pixels(x, y))
         r, g, b, a = self.path.get_at((px, py))
         return (r, g, b) if a else (background[0], background[1], background[2])
 

@@ -28,8 +28,8 @@ FORWARD, STOP_FORWARD, TURN, STOP_TURN = "forward", "stop_forward", "turn", "sto
 
 
 class DrawSquare(Node):
-    def __init__(self) -> None:
-        super().__init__("draw_square", enable_logger_service=True)
+    def __init__(self, **kwargs) -> None:
+        super().__init__("draw_square", enable_logger_service=True, **kwargs)
         qos = QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)  # turtlesim's
         self.twist_publisher = self.create_publisher(Twist, "turtle1/cmd_vel", qos)
         self.create_subscription(Pose, "turtle1/pose", self.on_pose, qos)

@@ -27,8 +27,8 @@ from ros_tutorials_common.node_main import init
 
 
 class Mimic(Node):
-    def __init__(self) -> None:
-        super().__init__("turtle_mimic", enable_logger_service=True)
+    def __init__(self, **kwargs) -> None:
+        super().__init__("turtle_mimic", enable_logger_service=True, **kwargs)
         qos = QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)  # turtlesim's
         # "/input" unless a ROS 1-style namespace remap moved it (see the docstring)
         input_ns, output_ns = self.resolve_topic_name("input"), self.resolve_topic_name("output")

@@ -57,8 +57,8 @@ HEADINGS = {
 
 
 class TeleopTurtle(Node):
-    def __init__(self) -> None:
-        super().__init__("teleop_turtle", enable_logger_service=True)
+    def __init__(self, **kwargs) -> None:
+        super().__init__("teleop_turtle", enable_logger_service=True, **kwargs)
         self.declare_parameter("scale_angular", 2.0)
         self.declare_parameter("scale_linear", 2.0)
         qos = QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)  # turtlesim's
