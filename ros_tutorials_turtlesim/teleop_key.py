@@ -152,7 +152,10 @@ def main(argv: list[str] | None = None) -> int:
         pass
     finally:
         termios.tcsetattr(fd, termios.TCSADRAIN, saved)
+        # Stop the background spin and wait for it: a thread still inside rclpy's C++ code
+        # when Python exits aborts the process.
         executor.shutdown(timeout_sec=1.0)
+        spinner.join(timeout=5.0)
         node.destroy_node()
         rclpy.try_shutdown()
     return 0

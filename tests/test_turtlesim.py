@@ -6,6 +6,7 @@ PNG is read back with pygame and checked pixel by pixel.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterator
 
@@ -149,7 +150,7 @@ def test_cmd_vel_is_integrated_16_ms_per_update_and_stops_after_1_s(probe):
     moving = [p for p in probe.poses["turtle1"] if p.linear_velocity == v]
     assert len(moving) > 10, "the turtle hardly moved"
     steps = 0
-    for before, after in zip(moving, moving[1:], strict=False):
+    for before, after in itertools.pairwise(moving):
         n = round(normalize_angle(after.theta - before.theta) / (w * UPDATE_PERIOD))
         assert n >= 1
         steps += n
@@ -191,7 +192,7 @@ def test_draw_square_tutorial_drives_a_square_and_leaves_its_trail(
     pose = probe.pose()
     assert (pose.x, pose.y) == pytest.approx(corners[-1], abs=0.05)
     image = png(sim, tmp_path)
-    for (x0, y0), (x1, y1) in zip(corners, corners[1:], strict=False):
+    for (x0, y0), (x1, y1) in itertools.pairwise(corners):
         for t in (0.25, 0.5, 0.75):  # along each side: the pen's colour
             x, y = x0 + (x1 - x0) * t, y0 + (y1 - y0) * t
             assert near(image, x, y, DEFAULT_PEN), f"no trail at ({x:.2f}, {y:.2f})"
@@ -229,9 +230,7 @@ def test_kill_removes_the_turtle_and_its_topics(sim, probe, executor):
     )
     probe.call(Kill, "/kill", name="doomed")
     assert "doomed" not in sim.turtles
-    spin_until(
-        executor, lambda: probe.node.count_publishers("/doomed/pose") == 0, what="pose gone"
-    )
+    spin_until(executor, lambda: probe.node.count_publishers("/doomed/pose") == 0, what="pose gone")
     probe.call(Kill, "/kill", name="nobody")  # answered, nothing else happens
     assert sorted(sim.turtles) == ["turtle1"]
     probe.pose()  # the simulation goes on

@@ -1,0 +1,314 @@
+"""turtlesim as a learner runs it: the node as a process, the seeds' ROS 1 commands against it,
+the seeds' launch files, and turtle_teleop_key typed at through a pseudo-terminal.
+"""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import signal
+import subprocess
+import sys
+import termios
+import threading
+import time
+from pathlib import Path
+
+import pygame
+import pytest
+from geometry_msgs.msg import Twist
+from helpers import TIMEOUT, spin_until
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from turtlesim.msg import Pose
+
+from ros_tutorials_turtlesim.turtlesim_node import TurtlesimNode, topic_qos
+
+BIN = Path(sys.executable).parent
+HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
+
+
+def tool(*args: str) -> subprocess.CompletedProcess:
+    try:
+        return subprocess.run(
+            [str(BIN / args[0]), *args[1:]], capture_output=True, text=True, timeout=TIMEOUT
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
+
+
+def ok(*args: str) -> str:
+    result = tool(*args)
+    assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
+    assert "Traceback" not in result.stderr
+    return result.stdout
+
+
+class Watcher:
+    """The test's node: watches a pose topic, publishes cmd_vel."""
+
+    def __init__(self, executor, pose_topic: str = "/turtle1/pose") -> None:
+        self.executor = executor
+        self.node = Node("turtle_watcher", context=executor.context)
+        executor.add_node(self.node)
+        self.poses: list[Pose] = []
+        self.node.create_subscription(Pose, pose_topic, self.poses.append, 1000)
+        self.seen = 0  # poses before this one have been looked at
+
+    def until(self, condition, what: str, timeout: float = TIMEOUT) -> Pose:
+        """The first pose, not looked at before, for which condition holds."""
+
+        def found() -> bool:
+            while self.seen < len(self.poses):
+                self.seen += 1
+                if condition(self.poses[self.seen - 1]):
+                    return True
+            return False
+
+        spin_until(self.executor, found, timeout, what)
+        return self.poses[self.seen - 1]
+
+    def publish(self, topic: str, twist: Twist) -> None:
+        publisher = self.node.create_publisher(Twist, topic, topic_qos())
+        spin_until(self.executor, lambda: publisher.get_subscription_count() > 0, what=topic)
+        publisher.publish(twist)
+
+
+def started(proc, line: str) -> None:
+    proc.wait_for_output(lambda lines: any(line in text for text in lines), what=line)
+
+
+def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_path):
+    at_exit = tmp_path / "exit.png"
+    sim = node_process(
+        "-m",
+        "ros_tutorials_turtlesim.turtlesim_node",
+        "--ros-args",
+        "-p",
+        "snapshot_on_exit:=true",
+        "-p",
+        f"snapshot_path:={at_exit}",
+        env=HEADLESS,
+    )
+    started(sim, "Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]")
+    assert "Running headless (no DISPLAY or WAYLAND_DISPLAY, so no window)" in sim.output
+    assert "Starting turtlesim with node name /turtlesim" in sim.output
+    watcher = Watcher(executor)
+
+    # seed 004: the spawn service, its type, and a call with the fields in order
+    shown = subprocess.run(
+        f"{BIN}/rosservice type /spawn | {BIN}/rossrv show",
+        shell=True,
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+    )
+    expected = "float32 x float32 y float32 theta string name --- string name"
+    assert shown.stdout.split() == expected.split(" ")
+    assert "name: new_turtle" in ok("rosservice", "call", "/spawn", "3", "3", "0.2", "new_turtle")
+    started(sim, "Spawning turtle [new_turtle] at x=[3.000000], y=[3.000000], theta=[0.200000]")
+    assert "/new_turtle/pose" in ok("rostopic", "list")
+
+    # seed 004: move forward at 0.2 m/s, in both of its spellings (the second one latches)
+    forward = ok(
+        "rostopic", "pub", "-1", "/turtle1/cmd_vel", "geometry_msgs/Twist",
+        "{linear: {x: 0.2, y: 0, z: 0},  \nangular: {x: 0, y: 0, z: 0}}",
+    )  # fmt: skip
+    assert "publishing" in forward
+    watcher.until(lambda p: p.linear_velocity == pytest.approx(0.2), "linear_velocity 0.2")
+    watcher.until(lambda p: p.linear_velocity == 0.0, "the command to time out")
+    latched = node_process(
+        str(BIN / "rostopic"), "pub", "/turtle1/cmd_vel", "geometry_msgs/Twist", "linear: x: 0.3"
+    )
+    watcher.until(lambda p: p.linear_velocity == pytest.approx(0.3), "linear_velocity 0.3")
+    assert latched.interrupt() == 0
+    # turn in circles, 10 times a second, and watch the pose
+    circling = node_process(
+        str(BIN / "rostopic"), "pub", "/turtle1/cmd_vel", "-r", "10", "geometry_msgs/Twist",
+        "angular: z: 0.5",
+    )  # fmt: skip
+    watcher.until(lambda p: p.angular_velocity == pytest.approx(0.5), "angular_velocity 0.5")
+    echoed = ok("rostopic", "echo", "-n", "1", "/turtle1/pose")
+    assert "angular_velocity: 0.5" in echoed and "theta:" in echoed
+    assert circling.interrupt() == 0
+
+    # the background, changed while running, and a PNG on SIGUSR1
+    ok("rosparam", "set", "/turtlesim/background_r", "150")
+    assert ok("rosparam", "get", "/turtlesim/background_r").strip() == "150"
+    sim.process.send_signal(signal.SIGUSR1)
+    started(sim, f"Wrote the canvas to {at_exit}")
+    assert tuple(pygame.image.load(str(at_exit)).get_at((2, 2)))[:3] == (150, 86, 255)
+    at_exit.unlink()
+
+    assert sim.interrupt() == 0
+    assert at_exit.is_file(), sim.output  # snapshot_on_exit
+    assert "Traceback" not in sim.output
+
+
+def _launch(node_process, *args: str):
+    return node_process("-m", "launcher", *args, env=HEADLESS)
+
+
+@pytest.mark.parametrize("launch_file", ["multisim.launch", "multisim.launch.xml"])
+def test_seed_003_two_simulators_joined_by_mimic(node_process, executor, launch_file):
+    launch = _launch(node_process, "turtlesim", launch_file)
+    launch.wait_for_output(
+        lambda lines: sum("Spawning turtle [turtle1]" in line for line in lines) == 2,
+        what="both simulators' turtle1",
+    )
+    watcher = Watcher(executor, "/turtlesim2/turtle1/pose")
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 1.0, 1.0
+    watcher.publish("/turtlesim1/turtle1/cmd_vel", twist)
+    # turtlesim2's turtle copies turtlesim1's: same velocities, it moves off the centre
+    pose = watcher.until(
+        lambda p: p.linear_velocity == 1.0 and p.angular_velocity == 1.0,
+        "turtlesim2's turtle to move as turtlesim1's",
+    )
+    watcher.until(lambda p: p.y > pose.y + 0.05, "turtlesim2's turtle to move on")
+    assert launch.interrupt() == 130
+    assert "Traceback" not in launch.output
+
+
+@pytest.mark.parametrize("launch_file", ["turtlesim_teleop.launch", "turtlesim_teleop.launch.xml"])
+def test_seed_002_turtlesim_and_teleop_launch(node_process, executor, launch_file):
+    launch = _launch(node_process, "turtlesim", launch_file)
+    started(launch, "Spawning turtle [turtle1]")
+    # launched, the teleop has no terminal: it says so, and turtlesim runs on
+    started(launch, "stdin is not a terminal")
+    Watcher(executor).until(lambda p: True, "turtle1's pose")
+    assert launch.interrupt() == 130
+    assert "Traceback" not in launch.output
+
+
+class Terminal:
+    """turtle_teleop_key in a pseudo-terminal of its own, as if typed at by a person."""
+
+    def __init__(self) -> None:
+        self.controller, self.terminal = pty.openpty()
+
+        def own_terminal() -> None:  # the child's controlling terminal: Ctrl-C works
+            os.setsid()
+            fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+
+        self.process = subprocess.Popen(
+            [str(BIN / "turtle_teleop_key")],
+            stdin=self.terminal,
+            stdout=self.terminal,
+            stderr=self.terminal,
+            preexec_fn=own_terminal,
+        )
+        self.output = b""
+        self.reader = threading.Thread(target=self._read, daemon=True)
+        self.reader.start()
+
+    def _read(self) -> None:
+        while True:
+            try:
+                data = os.read(self.controller, 1024)
+            except OSError:
+                return
+            if not data:
+                return
+            self.output += data
+
+    def wait_for(self, text: str) -> None:
+        deadline = time.monotonic() + TIMEOUT
+        while text.encode() not in self.output:
+            if time.monotonic() > deadline or self.process.poll() is not None:
+                pytest.fail(
+                    f"{text!r} not seen; output was:\n{self.output.decode(errors='replace')}"
+                )
+            time.sleep(0.05)
+
+    def type(self, keys: str) -> None:
+        os.write(self.controller, keys.encode())
+
+    def line_mode(self) -> bool:
+        """Whether the terminal is in its normal mode (lines, echo)."""
+        lflag = termios.tcgetattr(self.terminal)[3]
+        return bool(lflag & termios.ICANON and lflag & termios.ECHO)
+
+    def wait(self) -> int:
+        try:
+            code = self.process.wait(TIMEOUT)
+            assert code == 0, self.output.decode(errors="replace")
+            return code
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            pytest.fail("turtle_teleop_key did not exit")
+
+    def close(self) -> None:
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
+        os.close(self.controller)
+        os.close(self.terminal)
+
+
+@pytest.fixture
+def teleop(ros_domain):
+    terminal = Terminal()
+    yield terminal
+    terminal.close()
+
+
+@pytest.fixture
+def watched_sim(context, executor) -> Watcher:
+    sim = TurtlesimNode(context=context, parameter_overrides=[Parameter("headless", value=True)])
+    executor.add_node(sim)
+    return Watcher(executor)
+
+
+def test_teleop_key_drives_rotates_cancels_and_quits(watched_sim, teleop):
+    teleop.wait_for("Reading from keyboard")
+    teleop.wait_for("'Q' to quit.")
+    assert not teleop.line_mode()  # single keys, no echo
+    spin_until(
+        watched_sim.executor,
+        lambda: (
+            watched_sim.node.count_subscribers("/turtle1/cmd_vel") >= 1
+            and watched_sim.node.count_publishers("/turtle1/cmd_vel") >= 1
+        ),
+        what="the teleop's publisher",
+    )
+    teleop.type("\x1b[A")  # up arrow: forward at scale_linear
+    watched_sim.until(lambda p: p.linear_velocity == 2.0, "forward at 2 m/s")
+    teleop.type("\x1b[D")  # left arrow: turn at scale_angular
+    watched_sim.until(lambda p: p.angular_velocity == 2.0, "turning at 2 rad/s")
+    teleop.type("r")  # rotate to 1.5708 (north)
+    watched_sim.until(
+        lambda p: p.angular_velocity == 0.0 and abs(p.theta - 1.5708) < 0.03, "heading north"
+    )
+    teleop.type("d")  # toward 3.1416 (west) ... and cancel it on the way
+    watched_sim.until(lambda p: p.angular_velocity == 1.0, "the rotation to start")
+    teleop.type("f")
+    pose = watched_sim.until(lambda p: p.angular_velocity == 0.0, "the rotation to stop")
+    assert 1.55 < pose.theta < 3.1
+    teleop.type("q")
+    assert teleop.wait() == 0
+    assert teleop.line_mode(), "the terminal was not restored"
+    assert b"Traceback" not in teleop.output
+
+
+def test_teleop_key_restores_the_terminal_on_ctrl_c(teleop):
+    teleop.wait_for("'Q' to quit.")
+    assert not teleop.line_mode()
+    teleop.type("\x03")  # Ctrl-C through the terminal
+    assert teleop.wait() == 0
+    assert teleop.line_mode(), "the terminal was not restored"
+    assert b"Traceback" not in teleop.output
+
+
+def test_teleop_key_without_a_terminal_says_so():
+    result = subprocess.run(
+        [str(BIN / "turtle_teleop_key")],
+        stdin=subprocess.DEVNULL,
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+    )
+    assert result.returncode == 1
+    assert "stdin is not a terminal" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
