@@ -1,6 +1,6 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup (default: all)
+python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup turtlesim (default: all)
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import os
 import platform
 import signal
 
-from benchmarks import launch, memory, service, setup_time, topic
+from benchmarks import launch, memory, service, setup_time, topic, turtlesim
 from benchmarks.common import print_table, private_domain
 
 GROUPS = {
@@ -21,6 +21,7 @@ GROUPS = {
     "rate": topic.rate_accuracy,
     "memory": memory.node_memory,
     "setup": setup_time.setup_times,
+    "turtlesim": turtlesim.update_rate,
 }
 
 

@@ -118,7 +118,8 @@ class TurtlesimNode(Node):
             ParameterDescriptor(description="Write the canvas to snapshot_path when the node ends"),
         )
         self.add_on_set_parameters_callback(self._check_parameters)
-        self.add_post_set_parameters_callback(lambda _: self._set_dirty())
+        self.add_post_set_parameters_callback(self._parameters_set)
+        self._parameters_set([])
 
         self.canvas = self._open_canvas()
         self.turtles: dict[str, TurtleEntry] = {}
@@ -164,9 +165,6 @@ class TurtlesimNode(Node):
         )
         return drawn
 
-    @property
-    def background(self) -> tuple[int, int, int]:
-        return tuple(self.get_parameter(f"background_{c}").value for c in "rgb")
 
     def _check_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
         for parameter in parameters:
@@ -174,7 +172,10 @@ class TurtlesimNode(Node):
                 return SetParametersResult(successful=False, reason="snapshot_path is empty")
         return SetParametersResult(successful=True)
 
-    def _set_dirty(self) -> None:
+    def _parameters_set(self, _parameters: list[Parameter]) -> None:
+        # Read here once, not every update: 62.5 updates/s times every turtle's colour sensor.
+        self.background = tuple(self.get_parameter(f"background_{c}").value for c in "rgb")
+        self.holonomic = self.get_parameter("holonomic").value
         self._dirty = True
 
     def request_snapshot(self) -> None:
@@ -396,10 +397,9 @@ class TurtlesimNode(Node):
                 throttle_duration_sec=1.0,
             )
             return
-        holonomic = self.get_parameter("holonomic").value
         with self._lock:
             entry.turtle.command_velocity(
-                values[0], values[1] if holonomic else 0.0, values[2], time.monotonic()
+                values[0], values[1] if self.holonomic else 0.0, values[2], time.monotonic()
             )
             if entry.goal is not None:
                 self.get_logger().warning(
