@@ -1,6 +1,7 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]     groups: launch service topic rate memory setup turtlesim (default: all)
+python -m benchmarks [GROUP ...]
+    groups: launch service topic rate memory setup turtlesim (default: all)
 """
 
 from __future__ import annotations

@@ -9,6 +9,7 @@ CPU is the node process's user + system time over the measured window.
 
 from __future__ import annotations
 
+import itertools
 import os
 import threading
 import time
@@ -96,7 +97,7 @@ class Bench:
         self.spin_for(seconds)
         cpu, wall = _cpu_seconds(pid) - cpu, time.monotonic() - wall
         times = list(self.arrivals)
-        periods = [b - a for a, b in zip(times, times[1:], strict=False)]
+        periods = [b - a for a, b in itertools.pairwise(times)]
         mean = (times[-1] - times[0]) / (len(times) - 1)
         return mean, p99([abs(p - PERIOD) for p in periods]), cpu / wall
 

@@ -165,7 +165,6 @@ class TurtlesimNode(Node):
         )
         return drawn
 
-
     def _check_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
         for parameter in parameters:
             if parameter.name == "snapshot_path" and not str(parameter.value):
@@ -498,9 +497,10 @@ class TurtlesimNode(Node):
 def main(argv: list[str] | None = None) -> int:
     init(argv)
     node = None
+    # kill -USR1 PID: a PNG now (set first: SIGUSR1's default would end the process)
+    signal.signal(signal.SIGUSR1, lambda *_: node and node.request_snapshot())
     try:
         node = TurtlesimNode()
-        signal.signal(signal.SIGUSR1, lambda *_: node.request_snapshot())
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException, WindowClosed):
         pass

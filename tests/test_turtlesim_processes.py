@@ -109,6 +109,7 @@ def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_
     assert "name: new_turtle" in ok("rosservice", "call", "/spawn", "3", "3", "0.2", "new_turtle")
     started(sim, "Spawning turtle [new_turtle] at x=[3.000000], y=[3.000000], theta=[0.200000]")
     assert "/new_turtle/pose" in ok("rostopic", "list")
+    assert "name: turtle2" in ok("rosservice", "call", "/spawn", "8", "2", "2.0", "")  # any name
 
     # seed 004: move forward at 0.2 m/s, in both of its spellings (the second one latches)
     forward = ok(
