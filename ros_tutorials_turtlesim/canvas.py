@@ -72,7 +72,16 @@ class Canvas:
         self.clear()
         self.screen: pygame.Surface | None = None
         if window:
+            # The display that is named, and no other: SDL would otherwise fall back to an
+            # invisible "offscreen" window when it cannot reach it.
+            if "SDL_VIDEODRIVER" not in os.environ:
+                os.environ["SDL_VIDEODRIVER"] = "x11" if os.environ.get("DISPLAY") else "wayland"
             pygame.display.init()
+            if pygame.display.get_driver() in ("offscreen", "dummy"):
+                pygame.display.quit()
+                raise pygame.error(
+                    f"SDL video driver {os.environ['SDL_VIDEODRIVER']} has no screen"
+                )
             pygame.display.set_caption(WINDOW_TITLE)
             self.screen = pygame.display.set_mode((CANVAS_PIXELS, CANVAS_PIXELS))
 

@@ -157,7 +157,14 @@ class TurtlesimNode(Node):
         try:
             drawn = canvas.Canvas(window=True)
         except Exception as error:  # pygame.error: the display named cannot be opened
-            self.get_logger().warning(f"Running headless: no window could open ({error}); {png}")
+            shown = ", ".join(
+                f"{name}={os.environ[name]}"
+                for name in ("DISPLAY", "WAYLAND_DISPLAY")
+                if os.environ.get(name)
+            )
+            self.get_logger().warning(
+                f"Running headless: no window could open on {shown} ({error}); {png}"
+            )
             return canvas.Canvas(window=False)
         self.get_logger().info(
             f"Drawing in a window (pygame {canvas.pygame.version.ver}, "
