@@ -74,7 +74,7 @@ class Canvas:
         if window:
             # The display that is named, and no other: SDL would otherwise fall back to an
             # invisible "offscreen" window when it cannot reach it.
-            if "SDL_VIDEODRIVER" not in os.environ:
+            if not os.environ.get("SDL_VIDEODRIVER"):
                 os.environ["SDL_VIDEODRIVER"] = "x11" if os.environ.get("DISPLAY") else "wayland"
             pygame.display.init()
             if pygame.display.get_driver() in ("offscreen", "dummy"):

@@ -313,3 +313,15 @@ def test_teleop_key_without_a_terminal_says_so():
     assert result.returncode == 1
     assert "stdin is not a terminal" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_a_display_that_cannot_open_means_headless_with_a_warning(node_process):
+    sim = node_process(
+        "-m",
+        "ros_tutorials_turtlesim.turtlesim_node",
+        env={"DISPLAY": ":4242", "WAYLAND_DISPLAY": "", "SDL_VIDEODRIVER": ""},
+    )
+    started(sim, "Spawning turtle [turtle1]")
+    assert "Running headless: no window could open on DISPLAY=:4242" in sim.output
+    assert sim.interrupt() == 0
+    assert "Traceback" not in sim.output
