@@ -18,6 +18,7 @@ The simulation (``simulation.py``) is apart from the drawing (``canvas.py``).
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -81,6 +82,9 @@ class TurtleEntry:
     goal: ServerGoalHandle | None = None
     goal_start: float = 0.0
     goal_delta: float = 0.0
+    alive: bool = True  # False once killed
+    executing: int = 0  # goals whose execute callback has not returned yet
+    retire_at: float | None = None  # when a killed turtle's action server goes
 
 
 class TurtlesimNode(Node):
@@ -125,7 +129,7 @@ class TurtlesimNode(Node):
         self.turtles: dict[str, TurtleEntry] = {}
         self._id_counter = 0  # for turtleN names
         self._spawned = 0  # for shell colours
-        self._retired: list[tuple[float, ActionServer]] = []
+        self._retired: list[TurtleEntry] = []  # killed, their action servers still to go
         self._dirty = True
         self._snapshot_requested = threading.Event()
         self._lock = threading.RLock()  # SIGUSR1 and tests may ask for a PNG from elsewhere
@@ -313,8 +317,8 @@ class TurtlesimNode(Node):
                 self,
                 RotateAbsolute,
                 f"{name}/rotate_absolute",
-                execute_callback=self._execute_rotation,
-                goal_callback=self._check_rotation_goal,
+                execute_callback=functools.partial(self._execute_rotation, entry),
+                goal_callback=functools.partial(self._check_rotation_goal, entry),
                 handle_accepted_callback=lambda handle: self._accept_rotation(entry, handle),
                 cancel_callback=lambda _handle: CancelResponse.ACCEPT,
             )
@@ -330,12 +334,12 @@ class TurtlesimNode(Node):
             entry = self.turtles.pop(name, None)
             if entry is None:
                 return False
+            entry.alive = False
             self._finish_rotation(entry, "abort")
             for endpoint in entry.endpoints:
                 self._destroy(endpoint)
-            # The action server goes a second later: the goal it just ended still has its
-            # result to send, from a task of the executor.
-            self._retired.append((time.monotonic() + 1.0, entry.action_server))
+            # The action server goes once the goal it just ended has sent its result.
+            self._retired.append(entry)
             self._dirty = True
         return True
 
@@ -348,8 +352,14 @@ class TurtlesimNode(Node):
             self.destroy_subscription(endpoint)
 
     def _retire_action_servers(self, now: float) -> None:
-        while self._retired and self._retired[0][0] <= now:
-            self._retired.pop(0)[1].destroy()
+        for entry in list(self._retired):
+            if entry.executing:
+                continue
+            if entry.retire_at is None:
+                entry.retire_at = now + 0.1  # a few updates for the result to go out
+            elif now >= entry.retire_at:
+                entry.action_server.destroy()
+                self._retired.remove(entry)
 
     def _on_spawn(self, request: Spawn.Request, response: Spawn.Response) -> Spawn.Response:
         if not all(math.isfinite(v) for v in (request.x, request.y, request.theta)):
@@ -445,7 +455,9 @@ class TurtlesimNode(Node):
 
     # --- the rotate_absolute action, stepped by the update timer like upstream ---------------
 
-    def _check_rotation_goal(self, goal: RotateAbsolute.Goal) -> GoalResponse:
+    def _check_rotation_goal(self, entry: TurtleEntry, goal: RotateAbsolute.Goal) -> GoalResponse:
+        if not entry.alive:
+            return GoalResponse.REJECT
         if not math.isfinite(goal.theta):
             self.get_logger().error(f"Rejecting a rotation goal of theta={goal.theta}")
             return GoalResponse.REJECT
@@ -462,11 +474,17 @@ class TurtlesimNode(Node):
             entry.goal = handle
             entry.goal_start = entry.turtle.theta
             entry.goal_delta = 0.0
+            entry.executing += 1
         handle.execute()
 
-    async def _execute_rotation(self, handle: ServerGoalHandle) -> RotateAbsolute.Result:
+    async def _execute_rotation(
+        self, entry: TurtleEntry, handle: ServerGoalHandle
+    ) -> RotateAbsolute.Result:
         # The update timer moves the turtle and ends the goal; this only waits for its result.
-        return await handle.done
+        try:
+            return await handle.done
+        finally:
+            entry.executing -= 1
 
     def _rotate(self, entry: TurtleEntry, now: float) -> None:
         handle = entry.goal

@@ -401,3 +401,14 @@ def test_color_sensor_sees_the_trail_under_the_turtle(sim, probe):
         lambda: probe.colors["turtle1"][-1] == Color(r=10, g=200, b=30),
         what="the colour sensor to see the trail",
     )
+
+
+def test_reset_mid_rotation_aborts_and_the_new_turtle1_takes_goals(sim, probe):
+    rotation = Rotation(probe, 3.0)
+    spin_until(probe.executor, lambda: rotation.feedback, what="feedback")
+    probe.call(Empty, "/reset")
+    assert rotation.result()[0] == GoalStatus.STATUS_ABORTED
+    # the old turtle1's action server goes; the new turtle1's answers every goal
+    spin_until(probe.executor, lambda: not sim._retired, what="the old action server to go")
+    for theta in (1.0, -1.0):
+        assert Rotation(probe, theta).result()[0] == GoalStatus.STATUS_SUCCEEDED
