@@ -15,8 +15,10 @@ exits with status 1.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import select
+import signal
 import sys
 import termios
 import threading
@@ -100,7 +102,10 @@ class Keyboard:
             ready, _, _ = select.select([self.fd], [], [], timeout)
             if not ready:
                 return ""
-            data = os.read(self.fd, 32)
+            try:
+                data = os.read(self.fd, 32)
+            except OSError:  # the terminal went away (EIO)
+                data = b""
             if not data:
                 return None
             self.pending = data
@@ -129,6 +134,10 @@ def key_loop(node: TeleopTurtle, keyboard: Keyboard) -> None:
             node.cancel_goal()
 
 
+def _hang_up(_signum: int, _frame) -> None:
+    raise KeyboardInterrupt  # the terminal was closed: leave as on Ctrl-C, cleaning up
+
+
 def main(argv: list[str] | None = None) -> int:
     fd = sys.stdin.fileno()
     if not os.isatty(fd):
@@ -139,6 +148,7 @@ def main(argv: list[str] | None = None) -> int:
         )
         return 1
     init(argv)  # rclpy.init with this project's DDS defaults
+    signal.signal(signal.SIGHUP, _hang_up)
     node = TeleopTurtle()
     executor = SingleThreadedExecutor()
     executor.add_node(node)
@@ -151,7 +161,8 @@ def main(argv: list[str] | None = None) -> int:
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        termios.tcsetattr(fd, termios.TCSADRAIN, saved)
+        with contextlib.suppress(termios.error):  # unless the terminal itself is gone
+            termios.tcsetattr(fd, termios.TCSADRAIN, saved)
         # Stop the background spin and wait for it: a thread still inside rclpy's C++ code
         # when Python exits aborts the process.
         executor.shutdown(timeout_sec=1.0)

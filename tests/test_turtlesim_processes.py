@@ -7,6 +7,7 @@ from __future__ import annotations
 import fcntl
 import os
 import pty
+import select
 import signal
 import subprocess
 import sys
@@ -201,11 +202,14 @@ class Terminal:
             preexec_fn=own_terminal,
         )
         self.output = b""
+        self.hung_up = threading.Event()
         self.reader = threading.Thread(target=self._read, daemon=True)
         self.reader.start()
 
     def _read(self) -> None:
-        while True:
+        while not self.hung_up.is_set():
+            if not select.select([self.controller], [], [], 0.1)[0]:
+                continue
             try:
                 data = os.read(self.controller, 1024)
             except OSError:
@@ -240,11 +244,20 @@ class Terminal:
             self.process.kill()
             pytest.fail("turtle_teleop_key did not exit")
 
+    def hang_up(self) -> None:
+        """Close the terminal's controlling side, as closing a terminal window does."""
+        self.hung_up.set()
+        self.reader.join()
+        os.close(self.controller)
+
     def close(self) -> None:
         if self.process.poll() is None:
             self.process.kill()
             self.process.wait()
-        os.close(self.controller)
+        if not self.hung_up.is_set():
+            self.hung_up.set()
+            self.reader.join()
+            os.close(self.controller)
         os.close(self.terminal)
 
 
@@ -300,6 +313,12 @@ def test_teleop_key_restores_the_terminal_on_ctrl_c(teleop):
     assert teleop.wait() == 0
     assert teleop.line_mode(), "the terminal was not restored"
     assert b"Traceback" not in teleop.output
+
+
+def test_teleop_key_leaves_cleanly_when_its_terminal_closes(teleop):
+    teleop.wait_for("'Q' to quit.")
+    teleop.hang_up()
+    assert teleop.wait() == 0
 
 
 def test_teleop_key_without_a_terminal_says_so():
