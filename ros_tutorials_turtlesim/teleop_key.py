@@ -46,6 +46,7 @@ ARROWS = {
     "C": (0.0, -1.0),
     "D": (0.0, 1.0),
 }  # up down right left
+ROTATE_ACTION = "turtle1/rotate_absolute"
 HEADINGS = {
     "g": 0.0,
     "t": 0.7854,
@@ -65,8 +66,11 @@ class TeleopTurtle(Node):
         self.declare_parameter("scale_linear", 2.0)
         qos = QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)  # turtlesim's
         self.twist_publisher = self.create_publisher(Twist, "turtle1/cmd_vel", qos)
-        self.rotate_client = ActionClient(self, RotateAbsolute, "turtle1/rotate_absolute")
-        self.goal_handle = None
+        self.rotate_client = ActionClient(self, RotateAbsolute, ROTATE_ACTION)
+        self.goal_future = None  # the latest goal sent, until the server answers
+        self.goal_handle = None  # ... and its handle once it has
+        self.cancel_wanted = False  # F pressed before the server had answered
+        self.goal_lock = threading.Lock()  # keys come from the main thread, answers from ROS's
 
     def drive(self, linear: float, angular: float) -> None:
         twist = Twist()
@@ -75,15 +79,28 @@ class TeleopTurtle(Node):
         self.twist_publisher.publish(twist)
 
     def send_goal(self, theta: float) -> None:
-        future = self.rotate_client.send_goal_async(RotateAbsolute.Goal(theta=theta))
-        future.add_done_callback(self.on_goal_response)
+        if not self.rotate_client.server_is_ready():
+            self.get_logger().warning(f"{ROTATE_ACTION} is not available: is turtlesim running?")
+            return
+        with self.goal_lock:
+            self.cancel_wanted = False
+            self.goal_future = self.rotate_client.send_goal_async(RotateAbsolute.Goal(theta=theta))
+        self.goal_future.add_done_callback(self.on_goal_response)
 
     def on_goal_response(self, future) -> None:
-        self.goal_handle = future.result()
+        with self.goal_lock:
+            if future is not self.goal_future:  # an older goal's answer
+                return
+            self.goal_handle = future.result()
+            if self.cancel_wanted and self.goal_handle.accepted:
+                self.goal_handle.cancel_goal_async()
 
     def cancel_goal(self) -> None:
-        if self.goal_handle is not None:
-            self.goal_handle.cancel_goal_async()
+        with self.goal_lock:
+            if self.goal_future is not None and not self.goal_future.done():
+                self.cancel_wanted = True  # cancelled as soon as the server answers
+            elif self.goal_handle is not None:
+                self.goal_handle.cancel_goal_async()
 
 
 class Keyboard:
