@@ -70,10 +70,18 @@ class Watcher:
         spin_until(self.executor, found, timeout, what)
         return self.poses[self.seen - 1]
 
-    def publish(self, topic: str, twist: Twist) -> None:
+    def publish_until(self, topic: str, twist: Twist, condition, what: str) -> Pose:
+        """Publish the command every second until condition holds for a pose: the nodes
+        in between (mimic) may still be discovering each other when the first one goes."""
         publisher = self.node.create_publisher(Twist, topic, topic_qos())
-        spin_until(self.executor, lambda: publisher.get_subscription_count() > 0, what=topic)
-        publisher.publish(twist)
+        deadline = time.monotonic() + TIMEOUT
+        while True:
+            publisher.publish(twist)
+            try:
+                return self.until(condition, what, timeout=1.0)
+            except pytest.fail.Exception:
+                if time.monotonic() > deadline:
+                    raise
 
 
 def started(proc, line: str) -> None:
@@ -162,9 +170,10 @@ def test_seed_003_two_simulators_joined_by_mimic(node_process, executor, launch_
     watcher = Watcher(executor, "/turtlesim2/turtle1/pose")
     twist = Twist()
     twist.linear.x, twist.angular.z = 1.0, 1.0
-    watcher.publish("/turtlesim1/turtle1/cmd_vel", twist)
     # turtlesim2's turtle copies turtlesim1's: same velocities, it moves off the centre
-    pose = watcher.until(
+    pose = watcher.publish_until(
+        "/turtlesim1/turtle1/cmd_vel",
+        twist,
         lambda p: p.linear_velocity == 1.0 and p.angular_velocity == 1.0,
         "turtlesim2's turtle to move as turtlesim1's",
     )
