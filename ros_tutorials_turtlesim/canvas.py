@@ -12,6 +12,7 @@ and tail, turned to its heading, with a different shell colour per turtle.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from collections.abc import Iterable, Sequence
@@ -69,6 +70,11 @@ class Canvas:
 
     def __init__(self, window: bool) -> None:
         self.path = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS), pygame.SRCALPHA)
+        # The background with the path on it, kept up to date stroke by stroke and rebuilt
+        # only when the background changes or the path is cleared: a frame is then one
+        # plain copy plus the turtles, not a 500 x 500 alpha blend.
+        self.base = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
+        self._base_background: tuple[int, ...] | None = None
         self.clear()
         self.screen: pygame.Surface | None = None
         if window:
@@ -84,6 +90,7 @@ class Canvas:
                 )
             pygame.display.set_caption(WINDOW_TITLE)
             self.screen = pygame.display.set_mode((CANVAS_PIXELS, CANVAS_PIXELS))
+            self.base = self.base.convert()  # the screen's pixel format: copies are plain copies
 
     @property
     def windowed(self) -> bool:
@@ -95,13 +102,15 @@ class Canvas:
 
     def clear(self) -> None:
         self.path.fill((0, 0, 0, 0))
+        self._base_background = None
 
     def draw_strokes(self, strokes: Iterable[Stroke]) -> None:
         for stroke in strokes:
             start, end = to_pixels(*stroke.start), to_pixels(*stroke.end)
-            pygame.draw.line(self.path, stroke.color, start, end, stroke.width)
-            if stroke.width > 2:  # round joints, so a turning trail has no notches
-                pygame.draw.circle(self.path, stroke.color, end, stroke.width / 2)
+            for surface in (self.path, self.base):
+                pygame.draw.line(surface, stroke.color, start, end, stroke.width)
+                if stroke.width > 2:  # round joints, so a turning trail has no notches
+                    pygame.draw.circle(surface, stroke.color, end, stroke.width / 2)
 
     def color_under(self, x: float, y: float, background: Sequence[int]) -> tuple[int, int, int]:
         """What the turtle's colour sensor sees: the trail under it, else the background."""
@@ -112,8 +121,12 @@ class Canvas:
     def compose(
         self, target: pygame.Surface, background: Sequence[int], turtles: Iterable[Turtle]
     ) -> None:
-        target.fill(tuple(background))
-        target.blit(self.path, (0, 0))
+        background = tuple(background)
+        if background != self._base_background:
+            self.base.fill(background)
+            self.base.blit(self.path, (0, 0))
+            self._base_background = background
+        target.blit(self.base, (0, 0))
         for turtle in turtles:
             draw_turtle(target, turtle)
 
@@ -158,18 +171,19 @@ _SHELL = _ellipse(14, 11.5)
 _PLATES = [(-6, 0), (-2.5, 6), (4.5, 6), (8, 0), (4.5, -6), (-2.5, -6)]
 
 
-def draw_turtle(surface: pygame.Surface, turtle: Turtle) -> None:
-    cx, cy = to_pixels(turtle.x, turtle.y)
-    cos, sin = math.cos(turtle.theta), math.sin(turtle.theta)
+_SPRITE_SIZE = 56
+
+
+@functools.lru_cache(maxsize=16)
+def _sprite(index: int) -> pygame.Surface:
+    """The turtle facing east, drawn once per shell colour."""
+    surface = pygame.Surface((_SPRITE_SIZE, _SPRITE_SIZE), pygame.SRCALPHA)
+    centre = _SPRITE_SIZE / 2
 
     def place(points: Iterable[tuple[float, float]], dx: float = 0.0, dy: float = 0.0) -> list:
-        # turn by theta (counter-clockwise, y up), then flip y for the screen
-        return [
-            (cx + (x + dx) * cos - (y + dy) * sin, cy - ((x + dx) * sin + (y + dy) * cos))
-            for x, y in points
-        ]
+        return [(centre + x + dx, centre - (y + dy)) for x, y in points]  # y up -> screen
 
-    shell = SHELL_COLORS[turtle.index % len(SHELL_COLORS)]
+    shell = SHELL_COLORS[index % len(SHELL_COLORS)]
     for leg, (dx, dy) in zip(_LEGS, _LEG_PLACES, strict=True):
         pygame.draw.polygon(surface, SKIN_DARK, place(leg, dx, dy))
     pygame.draw.polygon(surface, SKIN_DARK, place(_TAIL))
@@ -181,3 +195,17 @@ def draw_turtle(surface: pygame.Surface, turtle: Turtle) -> None:
     darker = tuple(int(c * 0.6) for c in shell)
     pygame.draw.polygon(surface, darker, place(_PLATES), 2)
     pygame.draw.polygon(surface, OUTLINE, place(_SHELL), 2)
+    return surface
+
+
+@functools.lru_cache(maxsize=512)
+def _turned(index: int, degrees: int) -> pygame.Surface:
+    """The sprite turned to a heading (whole degrees, counter-clockwise), smoothed."""
+    image = pygame.transform.rotozoom(_sprite(index), degrees, 1.0)
+    return image.convert_alpha() if pygame.display.get_surface() else image
+
+
+def draw_turtle(surface: pygame.Surface, turtle: Turtle) -> None:
+    cx, cy = to_pixels(turtle.x, turtle.y)
+    image = _turned(turtle.index % len(SHELL_COLORS), round(math.degrees(turtle.theta)) % 360)
+    surface.blit(image, (cx - image.get_width() / 2, cy - image.get_height() / 2))

@@ -59,6 +59,7 @@ from ros_tutorials_turtlesim.simulation import (
 
 DEFAULT_BACKGROUND = (69, 86, 255)  # 0x45, 0x56, 0xff
 FLOAT32_MAX = 3.4028234663852886e38
+REPAINT_HZ = 30
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
 
@@ -130,7 +131,8 @@ class TurtlesimNode(Node):
         self._id_counter = 0  # for turtleN names
         self._spawned = 0  # for shell colours
         self._retired: list[TurtleEntry] = []  # killed, their action servers still to go
-        self._dirty = True
+        self._dirty = True  # the window needs a repaint
+        self._last_paint = -math.inf
         self._snapshot_requested = threading.Event()
         self._lock = threading.RLock()  # SIGUSR1 and tests may ask for a PNG from elsewhere
 
@@ -257,9 +259,11 @@ class TurtlesimNode(Node):
             if self.canvas.windowed:
                 if self.canvas.window_closed():
                     raise WindowClosed()
-                if self._dirty:
+                # Repaint what changed, at most REPAINT_HZ times a second: the simulation
+                # keeps its 16 ms steps even when the display is slow.
+                if self._dirty and now - self._last_paint >= 1 / REPAINT_HZ:
                     self.canvas.show(self.background, [e.turtle for e in self.turtles.values()])
-            self._dirty = False
+                    self._dirty, self._last_paint = False, now
 
     def _publish(self, entry: TurtleEntry) -> None:
         turtle = entry.turtle
