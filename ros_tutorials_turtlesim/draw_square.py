@@ -15,7 +15,7 @@ import sys
 
 import rclpy
 from geometry_msgs.msg import Twist
-from rclpy.executors import ExternalShutdownException
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_srvs.srv import Empty
@@ -115,13 +115,16 @@ class DrawSquare(Node):
 
 def main(argv: list[str] | None = None) -> int:
     init(argv)  # rclpy.init with this project's DDS defaults
-    node = DrawSquare()
+    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
+    node = None
     try:
-        rclpy.spin(node)
+        node = DrawSquare()
+        rclpy.spin(node, executor)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
     return 0
 

@@ -18,7 +18,7 @@ import sys
 
 import rclpy
 from geometry_msgs.msg import Twist
-from rclpy.executors import ExternalShutdownException
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.msg import Pose
@@ -44,13 +44,16 @@ class Mimic(Node):
 
 def main(argv: list[str] | None = None) -> int:
     init(argv)  # rclpy.init with this project's DDS defaults
-    node = Mimic()
+    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
+    node = None
     try:
-        rclpy.spin(node)
+        node = Mimic()
+        rclpy.spin(node, executor)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
     return 0
 

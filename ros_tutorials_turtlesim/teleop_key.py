@@ -151,6 +151,12 @@ def key_loop(node: TeleopTurtle, keyboard: Keyboard) -> None:
             node.cancel_goal()
 
 
+def spin(executor: SingleThreadedExecutor) -> None:
+    # Ctrl-C: rclpy has shut down and the key loop ends too; nothing to report here
+    with contextlib.suppress(ExternalShutdownException):
+        executor.spin()
+
+
 def _hang_up(_signum: int, _frame) -> None:
     raise KeyboardInterrupt  # the terminal was closed: leave as on Ctrl-C, cleaning up
 
@@ -169,7 +175,7 @@ def main(argv: list[str] | None = None) -> int:
     node = TeleopTurtle()
     executor = SingleThreadedExecutor()
     executor.add_node(node)
-    spinner = threading.Thread(target=executor.spin, daemon=True)  # ROS in the background
+    spinner = threading.Thread(target=spin, args=(executor,), daemon=True)  # ROS alongside
     spinner.start()
     saved = termios.tcgetattr(fd)
     try:

@@ -34,7 +34,7 @@ from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersR
 from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.action.server import ServerGoalHandle
 from rclpy.exceptions import ParameterException
-from rclpy.executors import ExternalShutdownException
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -525,12 +525,13 @@ class TurtlesimNode(Node):
 
 def main(argv: list[str] | None = None) -> int:
     init(argv)
+    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as turtle1 is up
     node = None
     # kill -USR1 PID: a PNG now (set first: SIGUSR1's default would end the process)
     signal.signal(signal.SIGUSR1, lambda *_: node and node.request_snapshot())
     try:
         node = TurtlesimNode()
-        rclpy.spin(node)
+        rclpy.spin(node, executor)
     except (KeyboardInterrupt, ExternalShutdownException, WindowClosed):
         pass
     except ParameterException as error:
