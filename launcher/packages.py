@@ -33,6 +33,8 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
     "rospy_tutorials": _TOPIC_AND_SERVICE,
     "pub_sub": "ros_tutorials_topic",  # seed 003
     "my_package": (*_TOPIC_AND_SERVICE, "ros_tutorials_parameter"),  # seed 004
+    # turtlesim's nodes: rosidl's generated module is already called `turtlesim`.
+    "turtlesim": "ros_tutorials_turtlesim",  # seeds 001-004
 }
 # A seed executable whose name belongs to another lesson here: (seed package, name) -> name.
 EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {

@@ -13,6 +13,7 @@ from __future__ import annotations
 import array
 import importlib
 import math
+import re
 from typing import Any
 
 import yaml
@@ -50,6 +51,11 @@ for _alias, _name in {
 FLOAT32_MAX = 3.4028234663852886e38
 
 
+# `linear: x: 0.2`: block YAML (`linear:` newline `  x: 0.2`) whose line breaks were lost, as
+# seed 004 prints its rostopic pub examples. Not YAML; read as {linear: {x: 0.2}}.
+_FLATTENED_BLOCK = re.compile(r"\s*(?:[A-Za-z_]\w*\s*:\s+){2,}[^:{}\[\],]+")
+
+
 def parse_yaml(text: str) -> Any:
     """Parse the YAML a user typed; a syntax error becomes one line saying where."""
     try:
@@ -57,6 +63,9 @@ def parse_yaml(text: str) -> Any:
     except InputError as error:
         raise ToolError(str(error)) from None
     except yaml.YAMLError as error:
+        if _FLATTENED_BLOCK.fullmatch(text):
+            *keys, value = (part.strip() for part in text.split(":"))
+            return parse_yaml("".join(f"{{{key}: " for key in keys) + value + "}" * len(keys))
         mark = getattr(error, "problem_mark", None)
         where = f" at column {mark.column + 1}" if mark else ""
         problem = getattr(error, "problem", None) or str(error).splitlines()[0]

@@ -57,7 +57,9 @@ NO_ROS2_MEANING = {
 
 def values_from_args(args: Sequence[str]) -> Any:
     """ROS 1 values: one YAML mapping (`'{a: 1}'`), or field values in order (`10 5`)."""
-    values = [parse_yaml(arg) for arg in args]
+    # An empty argument ("" in the shell) is an empty string, as in ROS 1
+    # (`rosservice call /spawn 3 3 0.2 ""` lets turtlesim pick the name), not YAML's null.
+    values = [parse_yaml(arg) if arg else "" for arg in args]
     if not values:
         return None
     if len(values) == 1 and isinstance(values[0], dict):

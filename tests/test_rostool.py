@@ -322,7 +322,7 @@ def test_action_send_goal_with_feedback(node_process):
             ),
             "has type ros_tutorials_interfaces/srv/SrvTutorial",
         ),
-        (("rostopic", "pub", "/t", "std_msgs/String", "linear: x: 0.2"), "invalid YAML"),
+        (("rostopic", "pub", "/t", "std_msgs/String", "linear: {x: 0.2"), "invalid YAML"),
         (("rostopic", "pub", "/t", "ros_tutorials_interfaces/Num", "{num: x}"), "integer"),
     ],
 )
