@@ -146,7 +146,7 @@ def test_parameter_given_at_start(node_process, context, executor, ros_args, exp
     server = node_process("-m", "ros_tutorials_parameter.server", "--ros-args", *ros_args)
     probe = Probe(context, executor)
     assert probe.call(10, 5) == expected
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
 
 
 @pytest.mark.parametrize(
@@ -167,7 +167,7 @@ def test_client_with_parameter_calls_the_server(node_process):
     client = node_process("-m", "ros_tutorials_parameter.client", "10", "5", "--timeout", "60")
     assert client.wait(90) == 0, client.output
     assert "[service_client]: receive srv, srv.Response.result: 50" in client.output
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
 
 
 def test_dynamics_talker_follows_talker_str(context, executor):

@@ -496,7 +496,7 @@ def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
 
 def test_send_goal_notices_a_server_that_goes_away(node_process):
     server, goal = _goal_in_progress(node_process)
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
     assert goal.wait() == 1
     assert "went away before the goal finished" in goal.output
     assert "Traceback" not in goal.output

@@ -86,7 +86,7 @@ def test_service_client_calls_the_server(node_process):
     assert "[service_client]: send srv, srv.Request.a and b: 2, 3" in client.output
     assert "[service_client]: receive srv, srv.Response.result: 5" in client.output
     server.wait_for_output(lambda lines: any("sending back response: 5" in x for x in lines))
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
 
 
 def test_add_two_ints_client_calls_the_server(node_process):
@@ -97,7 +97,7 @@ def test_add_two_ints_client_calls_the_server(node_process):
 
     assert client.wait(90) == 0, client.output
     assert "[add_two_ints_client]: Sum: 7" in client.output
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
 
 
 @pytest.mark.parametrize("module", [module for module, _ in CLIENTS])

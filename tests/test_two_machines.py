@@ -151,7 +151,7 @@ def test_subnet_range_service_call_across_machines(machines, on_machine):
     assert client.wait() == 0, client.output
     assert "receive srv, srv.Response.result: 5" in client.output
     server.wait_for_output(lambda lines: any("request: x=2, y=3" in x for x in lines))
-    assert server.interrupt() == 0
+    assert server.interrupt() == 0, server.output
 
 
 def _split_union_launch(folder: Path) -> tuple[Path, Path]:
