@@ -3,6 +3,7 @@
 #   make test   set up if needed, then ruff and pytest
 #   make setup  only the set-up (venv, install, interface generation)
 #   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
+#   make test-load  the test suite with every core kept busy (RUNS=3: three runs in a row)
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -11,7 +12,7 @@ INTERFACES := $(VENV)/.interfaces
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
-.PHONY: setup run test lint bench clean
+.PHONY: setup run test test-load lint bench clean
 
 setup: $(INTERFACES)
 
@@ -33,6 +34,15 @@ lint: setup
 
 test: lint
 	$(PY) -m pytest
+
+# One busy process per core beside the tests (tests/cpu_load.py), stopped when pytest ends;
+# RUNS runs in a row, stopping at the first that fails.
+RUNS ?= 1
+test-load: lint
+	@for run in $$(seq $(RUNS)); do \
+		echo "== test run $$run of $(RUNS), CPU kept busy"; \
+		$(PY) -m pytest --cpu-load=auto $(PYTEST_ARGS) || exit 1; \
+	done
 
 bench: setup
 	$(PY) -m benchmarks

@@ -62,10 +62,16 @@ def execute(
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes."""
     graph = None
+    done = False
     try:
-        if not offline:
-            graph = Graph(timeout, spin_time)
-        command(graph)
+        try:
+            if not offline:
+                graph = Graph(timeout, spin_time)
+            command(graph)
+            done = True
+        finally:
+            if graph is not None:
+                graph.close()
     except ToolError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
@@ -73,14 +79,13 @@ def execute(
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         return 1
     except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
-        return EXIT_INTERRUPTED
+        # A Ctrl-C that comes while the tool closes, after the command did its job, does
+        # not undo it: the exit status is the command's, not the moment's.
+        return 0 if done else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    finally:
-        if graph is not None:
-            graph.close()
     return 0
 
 

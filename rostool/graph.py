@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import signal
 import time
 from collections.abc import Callable
 from typing import TypeVar
@@ -62,6 +63,10 @@ def until_stopped() -> contextlib.AbstractContextManager:
     """For what runs until Ctrl-C (echo, hz, pub -r): that is its normal end, exit status 0.
 
     Elsewhere Ctrl-C interrupts a command before it has done its job: exit status 130.
+    Enter it before printing anything that tells the user the command now runs until
+    Ctrl-C ("publishing and latching message. Press ctrl-C to terminate"): a Ctrl-C
+    answering that line must find the command already in this state, however late the
+    process gets the CPU back after printing.
     """
     return contextlib.suppress(KeyboardInterrupt, ExternalShutdownException)
 
@@ -83,9 +88,20 @@ class Graph:
         self.executor.add_node(self.node)
 
     def close(self) -> None:
-        self.executor.shutdown()
-        self.node.destroy_node()
-        rclpy.try_shutdown()
+        """Destroy the node and shut ROS down; a Ctrl-C meanwhile takes effect afterwards.
+
+        Closing is short, and one interrupted half-way would leave rclpy to complain at exit.
+        """
+        pressed = []
+        previous = signal.signal(signal.SIGINT, lambda *_: pressed.append(True))
+        try:
+            self.executor.shutdown()
+            self.node.destroy_node()
+            rclpy.try_shutdown()
+        finally:
+            signal.signal(signal.SIGINT, previous)
+        if pressed and callable(previous):
+            previous(signal.SIGINT, None)  # Python's default raises KeyboardInterrupt now
 
     def __enter__(self) -> Graph:
         return self
