@@ -11,7 +11,9 @@ Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
@@ -60,18 +62,31 @@ def execute(
     timeout: float = DEFAULT_TIMEOUT,
     spin_time: float | None = None,
 ) -> int:
-    """Run one command with a graph node (unless offline); map failures to exit codes."""
-    graph = None
-    done = False
+    """Run one command with a graph node (unless offline); map failures to exit codes.
+
+    Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
+    DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
+    SIGINT (a shell shows 130) after the command had printed its answer.
+    """
     try:
-        try:
-            if not offline:
-                graph = Graph(timeout, spin_time)
-            command(graph)
-            done = True
-        finally:
-            if graph is not None:
-                graph.close()
+        status = _execute(command, offline, timeout, spin_time)
+    except KeyboardInterrupt:  # while an error line was being printed
+        status = EXIT_INTERRUPTED
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    return status
+
+
+def _execute(
+    command: Callable[[Graph | None], None],
+    offline: bool,
+    timeout: float,
+    spin_time: float | None,
+) -> int:
+    graph = None
+    try:
+        if not offline:
+            graph = Graph(timeout, spin_time)
+        command(graph)
     except ToolError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
@@ -79,13 +94,17 @@ def execute(
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         return 1
     except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
-        # A Ctrl-C that comes while the tool closes, after the command did its job, does
-        # not undo it: the exit status is the command's, not the moment's.
-        return 0 if done else EXIT_INTERRUPTED
+        return EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    finally:
+        if graph is not None:
+            # The status is decided: a Ctrl-C while the node closes (Graph.close finishes
+            # first) does not turn a command that did its job into "interrupted".
+            with contextlib.suppress(KeyboardInterrupt):
+                graph.close()
     return 0
 
 

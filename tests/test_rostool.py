@@ -513,6 +513,21 @@ def _goal_in_progress(node_process):
     return server, goal
 
 
+def test_ctrl_c_after_a_one_shot_verb_answered_leaves_exit_0(service_lesson, node_process):
+    """Once the answer is printed the command has done its job: a Ctrl-C the instant it
+    arrives, while the tool closes its node and Python shuts down (about 0.3 s), does not
+    make the exit status 130 (or SIGINT's) nor print a traceback."""
+    calls = {}
+    for a in range(1, 5):
+        proc = node_process(str(BIN / "rosservice"), "call", "/ros_tutorial_srv", str(a), "10")
+        proc.interrupt_when(lambda line, answer=f"result: {a + 10}": line == answer)
+        calls[f"result: {a + 10}"] = proc
+    for answer, proc in calls.items():
+        proc.wait_for_output(lambda lines, answer=answer: answer in lines, what=answer)
+        assert proc.wait() == 0, proc.output
+        assert "Traceback" not in proc.output
+
+
 def test_ctrl_c_on_send_goal_cancels_the_goal_on_the_server(node_process):
     server, goal = _goal_in_progress(node_process)
     assert goal.interrupt() == 130
