@@ -94,7 +94,7 @@ def _execute(
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         return 1
     except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
-        return EXIT_INTERRUPTED
+        return 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

@@ -77,6 +77,7 @@ class Graph:
     def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float | None = None):
         self.timeout = timeout
         self.spin_time = spin_time
+        self.finished = False  # see finish()
         # SIGTERM only: Ctrl-C stays Python's KeyboardInterrupt and ROS keeps running, so
         # that `action send_goal` can still cancel its goal after it.
         init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
@@ -108,6 +109,15 @@ class Graph:
 
     def __exit__(self, *exc_info: object) -> None:
         self.close()
+
+    def finish(self) -> None:
+        """A one-shot command has its answer: call this just before printing it.
+
+        From then on a Ctrl-C (the user answering the printed line, however late the
+        process gets the CPU back) does not make the command "interrupted" (130): its exit
+        status stays 0 (see cli.execute). The counterpart of until_stopped.
+        """
+        self.finished = True
 
     def spin_once(self, timeout: float = POLL_PERIOD) -> None:
         self.executor.spin_once(timeout_sec=timeout)

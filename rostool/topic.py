@@ -108,8 +108,11 @@ def echo(
     count: int | None = None,
     field: str | None = None,
 ) -> None:
-    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
-    with until_stopped():
+    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C.
+
+    With a count it is a one-shot command: Ctrl-C before the last message is "interrupted".
+    """
+    with until_stopped() if count is None else contextlib.nullcontext():
         _echo(graph, absolute_name(topic), type_name, count, field)
 
 
@@ -127,6 +130,8 @@ def _echo(
         graph.spin_once(0.1)
         while received:
             msg = received.popleft()
+            if printed + 1 == count:
+                graph.finish()
             if field is None:
                 print(message_to_yaml(msg))
             else:

@@ -490,6 +490,7 @@ def _wait_until_in_graph(executor, proc) -> None:
         ("rosparam", "get", "/nope"),
         ("rostool", "param", "set", "/nope", "x", "1"),
         ("rostool", "topic", "list", "--spin-time", "600"),
+        ("rostopic", "echo", "/nope", "-n", "1"),
         ("rostool", "action", "send_goal", "/nope", FIBONACCI, "{order: 1}"),
     ],
 )
