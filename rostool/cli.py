@@ -17,6 +17,7 @@ import signal
 import sys
 from collections.abc import Callable, Sequence
 
+import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
@@ -99,6 +100,12 @@ def _execute(
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except Exception:
+        if rclpy.ok():
+            raise
+        # SIGTERM: rclpy's handler shut ROS down while the command was creating its node, a
+        # subscription or a timer, which then fails (RCLError "context is not valid").
+        return EXIT_INTERRUPTED
     finally:
         if graph is not None:
             # The status is decided: a Ctrl-C while the node closes (Graph.close finishes
