@@ -32,8 +32,9 @@ run: setup
 lint: setup
 	$(VENV)/bin/ruff check .
 
+# Two pytest processes (pytest-xdist); each claims its own ROS_DOMAIN_ID (tests/conftest.py).
 test: lint
-	$(PY) -m pytest
+	$(PY) -m pytest -n 2
 
 # One busy process per core beside the tests (tests/cpu_load.py), stopped when pytest ends;
 # RUNS runs in a row, stopping at the first that fails.
