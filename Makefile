@@ -4,6 +4,7 @@
 #   make setup  only the set-up (venv, install, interface generation)
 #   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
 #   make interfaces  regenerate the interface packages after a .msg/.srv/.action changed
+#   make test-load  the test suite with every core kept busy (RUNS=3: three runs in a row)
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -12,7 +13,7 @@ INTERFACES := $(VENV)/.interfaces
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
-.PHONY: setup run test lint bench clean interfaces
+.PHONY: setup run test test-load lint bench clean interfaces
 
 setup: $(INTERFACES)
 
@@ -35,8 +36,18 @@ run: setup
 lint: setup
 	$(VENV)/bin/ruff check .
 
+# Two pytest processes (pytest-xdist); each claims its own ROS_DOMAIN_ID (tests/conftest.py).
 test: lint
-	$(PY) -m pytest
+	$(PY) -m pytest -n 2
+
+# One busy process per core beside the tests (tests/cpu_load.py), stopped when pytest ends;
+# RUNS runs in a row, stopping at the first that fails.
+RUNS ?= 1
+test-load: lint
+	@for run in $$(seq $(RUNS)); do \
+		echo "== test run $$run of $(RUNS), CPU kept busy"; \
+		$(PY) -m pytest --cpu-load=auto $(PYTEST_ARGS) || exit 1; \
+	done
 
 bench: setup
 	$(PY) -m benchmarks

@@ -183,6 +183,8 @@ class Supervisor:
             self.say(f"logging to {self.log_dir}")
             try:
                 for child in self.children:
+                    if self.stop_signal is not None:
+                        break  # no new process once told to stop: it would be stopped at once
                     self.start(child)
                 self.watch()
             except (OSError, subprocess.SubprocessError) as error:
@@ -378,6 +380,8 @@ class Supervisor:
                 if child.process is not None and _exited(child.process.pid):
                     self.on_exit(child, self.reap(child), now)
                 elif child.restart_at is not None and now >= child.restart_at:
+                    if self.stop_signal is not None:
+                        break  # a signal came during this round: stop, don't respawn
                     self.start(child)
             if all(child.process is None and child.restart_at is None for child in self.children):
                 return

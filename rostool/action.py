@@ -117,7 +117,10 @@ def send_goal(
         ) from None
     finally:
         signal.signal(signal.SIGINT, previous_handler)
-    status = _print_result(result.result())
+    answer = result.result()
+    if answer.status == GoalStatus.STATUS_SUCCEEDED:
+        graph.finish()
+    status = _print_result(answer)
     if status != "SUCCEEDED":
         raise ToolError(f"goal finished with status {status}")
 

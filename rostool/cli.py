@@ -11,10 +11,13 @@ Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
+import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
@@ -88,7 +91,26 @@ def execute(
     timeout: float = DEFAULT_TIMEOUT,
     spin_time: float | None = None,
 ) -> int:
-    """Run one command with a graph node (unless offline); map failures to exit codes."""
+    """Run one command with a graph node (unless offline); map failures to exit codes.
+
+    Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
+    DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
+    SIGINT (a shell shows 130) after the command had printed its answer.
+    """
+    try:
+        status = _execute(command, offline, timeout, spin_time)
+    except KeyboardInterrupt:  # while an error line was being printed
+        status = EXIT_INTERRUPTED
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    return status
+
+
+def _execute(
+    command: Callable[[Graph | None], None],
+    offline: bool,
+    timeout: float,
+    spin_time: float | None,
+) -> int:
     graph = None
     try:
         if not offline:
@@ -101,14 +123,23 @@ def execute(
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         return 1
     except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
-        return EXIT_INTERRUPTED
+        return 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except Exception:
+        if rclpy.ok():
+            raise
+        # SIGTERM: rclpy's handler shut ROS down while the command was creating its node, a
+        # subscription or a timer, which then fails (RCLError "context is not valid").
+        return EXIT_INTERRUPTED
     finally:
         if graph is not None:
-            graph.close()
+            # The status is decided: a Ctrl-C while the node closes (Graph.close finishes
+            # first) does not turn a command that did its job into "interrupted".
+            with contextlib.suppress(KeyboardInterrupt):
+                graph.close()
     return 0
 
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import signal
 import sys
 import time
 from collections.abc import Callable
@@ -77,6 +78,10 @@ def until_stopped() -> contextlib.AbstractContextManager:
     """For what runs until Ctrl-C (echo, hz, pub -r): that is its normal end, exit status 0.
 
     Elsewhere Ctrl-C interrupts a command before it has done its job: exit status 130.
+    Enter it before printing anything that tells the user the command now runs until
+    Ctrl-C ("publishing and latching message. Press ctrl-C to terminate"): a Ctrl-C
+    answering that line must find the command already in this state, however late the
+    process gets the CPU back after printing.
     """
     return contextlib.suppress(KeyboardInterrupt, ExternalShutdownException)
 
@@ -121,6 +126,7 @@ class Graph:
     def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float | None = None):
         self.timeout = timeout
         self.spin_time = spin_time
+        self.finished = False  # see finish()
         # SIGTERM only: Ctrl-C stays Python's KeyboardInterrupt and ROS keeps running, so
         # that `action send_goal` can still cancel its goal after it.
         init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
@@ -135,16 +141,36 @@ class Graph:
         self.incomplete: list[str] = []  # what the last settle() still missed
 
     def close(self) -> None:
-        self.discovery.close()
-        self.executor.shutdown()
-        self.node.destroy_node()
-        rclpy.try_shutdown()
+        """Destroy the node and shut ROS down; a Ctrl-C meanwhile takes effect afterwards.
+
+        Closing is short, and one interrupted half-way would leave rclpy to complain at exit.
+        """
+        pressed = []
+        previous = signal.signal(signal.SIGINT, lambda *_: pressed.append(True))
+        try:
+            self.discovery.close()
+            self.executor.shutdown()
+            self.node.destroy_node()
+            rclpy.try_shutdown()
+        finally:
+            signal.signal(signal.SIGINT, previous)
+        if pressed and callable(previous):
+            previous(signal.SIGINT, None)  # Python's default raises KeyboardInterrupt now
 
     def __enter__(self) -> Graph:
         return self
 
     def __exit__(self, *exc_info: object) -> None:
         self.close()
+
+    def finish(self) -> None:
+        """A one-shot command has its answer: call this just before printing it.
+
+        From then on a Ctrl-C (the user answering the printed line, however late the
+        process gets the CPU back) does not make the command "interrupted" (130): its exit
+        status stays 0 (see cli.execute). The counterpart of until_stopped.
+        """
+        self.finished = True
 
     def spin_once(self, timeout: float = POLL_PERIOD) -> None:
         self.executor.spin_once(timeout_sec=timeout)

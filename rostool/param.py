@@ -194,12 +194,14 @@ def nodes_with_parameters(graph: Graph) -> list[str]:
 
 def get_command(graph: Graph, node: str, name: str) -> None:
     param_type, value = get_values(graph, node, [name])[name]
+    graph.finish()
     print(f"{TYPE_NAMES.get(param_type, 'Unknown')} value is: {value}")
 
 
 def set_command(graph: Graph, node: str, name: str, value: str) -> None:
     # Read as YAML like ros2 does: 2 is an integer, 2.0 a double, true a boolean, hi a string.
     set_values(graph, node, {name: parse_yaml(value)})
+    graph.finish()
     print("Set parameter successful")
 
 

@@ -110,6 +110,7 @@ def rosparam_list(graph: Graph) -> None:
 def rosparam_get(graph: Graph, name: str) -> None:
     node_name, param_name = resolve_parameter(graph, name)
     _, value = param.get_values(graph, node_name, [param_name])[param_name]
+    graph.finish()
     print(_value_text(value))
 
 

@@ -59,6 +59,7 @@ def call(
     if not ros1_output:
         print(f"requester: making request: {request}\n", flush=True)
     response = graph.call(client, request, f"cannot call '{service}'")
+    graph.finish()
     print(message_to_yaml(response) if ros1_output else f"response:\n{response}")
     return response
 

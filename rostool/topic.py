@@ -95,8 +95,11 @@ def echo(
     count: int | None = None,
     field: str | None = None,
 ) -> None:
-    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C."""
-    with until_stopped():
+    """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C.
+
+    With a count it is a one-shot command: Ctrl-C before the last message is "interrupted".
+    """
+    with until_stopped() if count is None else contextlib.nullcontext():
         _echo(graph, absolute_name(topic), type_name, count, field)
 
 
@@ -113,6 +116,8 @@ def _echo(
         subscription.update()
         while received:
             msg = received.popleft()
+            if printed + 1 == count:
+                graph.finish()
             if field is None:
                 print(message_to_yaml(msg))
             else:
@@ -150,22 +155,23 @@ def pub(
     qos = QoSProfile(depth=10)
     if latch:
         qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
-    publisher = graph.node.create_publisher(msg_type, topic, qos)
-    if times is not None:
-        # A one-shot publication into a void is lost: give subscribers time to match first.
-        try:
-            graph.wait_for(publisher.get_subscription_count, "no subscriber")
-        except ToolError:
-            print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
-    if rate is None:
-        with until_stopped():  # the line first inside: Ctrl-C right after it still means 0
-            print("publishing and latching message. Press ctrl-C to terminate", flush=True)
-            _latch(graph, publisher, msg)
-        return
-    if times is None:
+    if rate is None or times is None:
+        # Runs until Ctrl-C, as echo and hz do: from here on, Ctrl-C is its normal end. The
+        # lines below that say so are printed inside, never just before (see until_stopped).
         with until_stopped():
-            _publish(graph, publisher, msg, rate, times)
+            publisher = graph.node.create_publisher(msg_type, topic, qos)
+            if rate is None:
+                print("publishing and latching message. Press ctrl-C to terminate", flush=True)
+                _latch(graph, publisher, msg)
+            else:
+                _publish(graph, publisher, msg, rate, times)
         return
+    publisher = graph.node.create_publisher(msg_type, topic, qos)
+    # A one-shot publication into a void is lost: give subscribers time to match first.
+    try:
+        graph.wait_for(publisher.get_subscription_count, "no subscriber")
+    except ToolError:
+        print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
     _publish(graph, publisher, msg, rate, times)  # Ctrl-C before the last one: interrupted
     # Reliable delivery of the last message before the process goes away.
     publisher.wait_for_all_acked(Duration(seconds=graph.timeout))

@@ -19,6 +19,9 @@ from rclpy.executors import SingleThreadedExecutor
 
 from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 
+# `pytest --cpu-load=auto` (`make test-load`): the suite with every core kept busy.
+pytest_plugins = ["cpu_load"]
+
 
 @pytest.fixture(scope="session", autouse=True)
 def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:

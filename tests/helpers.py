@@ -41,6 +41,7 @@ class NodeProcess:
         self.args = [sys.executable, *args]
         self.lines: list[str] = []
         self._changed = threading.Condition()
+        self._interrupt_on: Callable[[str], bool] | None = None
         self.process = subprocess.Popen(
             self.args,
             stdout=subprocess.PIPE,
@@ -57,6 +58,9 @@ class NodeProcess:
         for line in self.process.stdout:
             with self._changed:
                 self.lines.append(line.rstrip("\n"))
+                if self._interrupt_on is not None and self._interrupt_on(self.lines[-1]):
+                    self._interrupt_on = None
+                    self.process.send_signal(signal.SIGINT)
                 self._changed.notify_all()
         with self._changed:
             self._changed.notify_all()
@@ -83,6 +87,18 @@ class NodeProcess:
                     )
                 self._changed.wait(min(remaining, 0.5))
             return list(self.lines)
+
+    def interrupt_when(self, seen: Callable[[str], bool]) -> None:
+        """Ctrl-C the process the moment it prints a line for which seen(line) is true.
+
+        Sent from the thread that reads the output, with no delay after the line: the
+        hardest moment for a program whose handling of Ctrl-C changes around that line.
+        """
+        with self._changed:
+            if any(seen(line) for line in self.lines):
+                self.process.send_signal(signal.SIGINT)
+            else:
+                self._interrupt_on = seen
 
     def interrupt(self, timeout: float = TIMEOUT) -> int:
         """Ctrl-C the process (SIGINT) and return its exit code."""
