@@ -41,6 +41,18 @@ EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
     ("pub_sub", "publisher"): "num_publisher",  # seed 003's publisher ends up sending Num
     ("pub_sub", "subscriber"): "num_subscriber",
 }
+# ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
+# and what does their job here.
+MISSING_TOOLS: dict[str, str] = {
+    "rqt": "call services with `rosservice call`, publish with `rostopic pub`",
+    "rqt_publisher": "publish with `rostopic pub TOPIC TYPE VALUES [-r RATE]`",
+    "rqt_service_caller": "call services with `rosservice call SERVICE ARGS`",
+    "rqt_bag": "record, inspect and replay with `rosbag record`, `rosbag info`, `rosbag play`",
+    "rqt_reconfigure": "change parameters with `rosparam set NODE/PARAM VALUE`",
+    "rqt_plot": "watch values with `rostopic echo TOPIC` (`rostopic hz` for the rate)",
+    "rqt_topic": "use `rostopic list`, `rostopic echo`, `rostopic hz`",
+    "rviz": "a ROS 2 installation has it as rviz2",
+}
 
 
 class UnknownExecutable(LookupError):
@@ -139,6 +151,10 @@ def command(package: str, executable: str) -> list[str]:
     if not known:
         if package == executable and executable in _tools():
             return list(_tools()[executable])
+        if package in MISSING_TOOLS:
+            raise UnknownExecutable(
+                f"{package} is a GUI tool this project does not have; {MISSING_TOOLS[package]}"
+            )
         raise UnknownExecutable(
             f"unknown package {package!r}; known packages: {known_package_names()}"
         )

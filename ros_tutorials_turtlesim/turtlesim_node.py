@@ -224,6 +224,11 @@ class TurtlesimNode(Node):
         path = self.get_parameter("snapshot_path").value
         wanted = self.get_parameter("snapshot_on_exit").value
         logger = get_logger(self.get_name())
+        # An action server holds the node: destroyed first, so that destroy_node() really
+        # ends it (and its /rosout publisher) rather than later, with the line below failing.
+        for entry in [*self.turtles.values(), *self._retired]:
+            if entry.action_server is not None:
+                entry.action_server.destroy()
         self.destroy_node()
         if wanted:
             try:

@@ -117,12 +117,13 @@ def rosrun(argv: Sequence[str] | None = None) -> int:
             known = packages.resolve_package(argv[0])
             names = sorted({name for pkg in known for name in packages.executables(pkg)})
             if not names:
-                raise ToolError(
-                    f"unknown package {argv[0]!r}; known packages: {packages.known_package_names()}"
-                )
+                # ROS 1's tools are packages of one executable: `rosrun rqt_graph rqt_graph`.
+                # command() raises the one-line error for a tool that is not here.
+                packages.command(argv[0], argv[0])
+                names = [argv[0]]
             raise ToolError(f"{USAGE}; {argv[0]} has: {', '.join(names)}")
         run(argv[0], argv[1], argv[2:])
-    except ToolError as error:
+    except (ToolError, packages.UnknownExecutable) as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
     return 0  # not reached: run() replaces this process

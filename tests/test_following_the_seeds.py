@@ -110,6 +110,20 @@ def test_rosrun_unknown_names_say_the_candidates_in_one_line():
     assert finished("rostool", "run", "nope", "x").returncode == 1
 
 
+def test_rosrun_of_a_ros1_gui_tool_not_here_says_what_to_use_instead():
+    # Seed 004 runs `rosrun rqt_publisher rqt_publisher` and `rosrun rqt_bag rqt_bag`.
+    for args, expected in [
+        (("rqt_publisher", "rqt_publisher"), "does not have; publish with `rostopic pub"),
+        (("rqt_bag", "rqt_bag"), "`rosbag record`, `rosbag info`, `rosbag play`"),
+        (("rqt_bag",), "rqt_bag is a GUI tool this project does not have"),
+        (("rqt_graph",), "rqt_graph has: rqt_graph"),  # a tool that is here, named once
+    ]:
+        result = finished("rosrun", *args)
+        assert result.returncode == 1, result
+        lines = result.stderr.strip().splitlines()
+        assert len(lines) == 1 and expected in lines[0], result.stderr
+
+
 def test_rosrun_runs_the_seeds_talker_and_listener_with_ros1_arguments(node_process):
     listener = node_process(script("rosrun"), "rospy_tutorials", "listener", "chatter:=other")
     talker = node_process(
