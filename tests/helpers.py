@@ -12,7 +12,7 @@ import subprocess
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import pytest
 from rclpy.executors import Executor
@@ -37,8 +37,11 @@ def spin_until(
 class NodeProcess:
     """A tutorial executable run as a real process, its output collected line by line."""
 
-    def __init__(self, *args: str, env: dict[str, str] | None = None) -> None:
-        self.args = [sys.executable, *args]
+    def __init__(
+        self, *args: str, env: dict[str, str] | None = None, prefix: Sequence[str] = ()
+    ) -> None:
+        # prefix: a command that runs Python for us, e.g. `ip netns exec NS` (two machines).
+        self.args = [*prefix, sys.executable, *args]
         self.lines: list[str] = []
         self._changed = threading.Condition()
         self._interrupt_on: Callable[[str], bool] | None = None

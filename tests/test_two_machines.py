@@ -17,7 +17,6 @@ import os
 import shutil
 import subprocess
 import sys
-import threading
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -82,19 +81,7 @@ class MachineProcess(NodeProcess):
     """A Python program run inside a network namespace (`ip netns exec NS python ...`)."""
 
     def __init__(self, namespace: str, *args: str, env: dict[str, str] | None = None) -> None:
-        self.args = ["ip", "netns", "exec", namespace, sys.executable, *args]
-        self.lines = []
-        self._changed = threading.Condition()
-        self.process = subprocess.Popen(
-            self.args,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-            env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})},
-            start_new_session=True,
-        )
-        self._reader = threading.Thread(target=self._read, daemon=True)
-        self._reader.start()
+        super().__init__(*args, env=env, prefix=("ip", "netns", "exec", namespace))
 
 
 @pytest.fixture
