@@ -26,9 +26,9 @@ import yaml
 
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool import interface, node, param, service, topic
-from rostool.cli import common_options, execute
+from rostool.cli import common_options, run_parsed
 from rostool.errors import ToolError
-from rostool.graph import DEFAULT_TIMEOUT, Graph, absolute_name
+from rostool.graph import Graph, absolute_name
 from rostool.messages import parse_yaml
 from rostool.typenames import load_type
 
@@ -342,12 +342,7 @@ def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
         args = commands[argv[0]].parse_intermixed_args(argv[1:])
     else:
         args = parser.parse_args(argv)  # help, or a usage error
-    return execute(
-        lambda graph: args.run(graph, args),
-        offline=getattr(args, "offline", False),
-        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
-        spin_time=getattr(args, "spin_time", None),
-    )
+    return run_parsed(args)
 
 
 def rostopic(argv: Sequence[str] | None = None) -> int:
