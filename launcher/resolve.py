@@ -1,7 +1,7 @@
 """Resolve a launch file: arguments, conditions, substitutions and scopes -> node declarations.
 
 Both formats are read here, each detected per file. What differs is the set of tags and
-attributes (tables below) and parameters:
+attributes (each handler's ``@tag`` lines: the one place a tag is defined) and parameters:
 - ROS 1 ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
   each node receives the parameters of its namespace and of the enclosing ones (the nearest
@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 import os
 import shlex
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -44,44 +45,47 @@ MAX_SECONDS = 86400.0
 MAX_DEPTH = 50
 
 CONDITIONS = {"if", "unless"}
-ROS1_TAGS = {
-    "node": {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
-             "required", "launch_prefix"},
-    "group": {"ns"},
-    "remap": {"from", "to"},
-    "param": {"name", "value", "type"},
-    "rosparam": {"command", "file", "param", "ns", "subst_value"},
-    "arg": {"name", "default", "value", "doc"},
-    "include": {"file", "ns", "pass_all_args"},
-    "env": {"name", "value"},
-}  # fmt: skip
-ROS1_SCOPE_TAGS = set(ROS1_TAGS)
-ROS1_NODE_TAGS = {"param", "rosparam", "remap", "env"}
 PROCESS_ATTRS = {"args", "output", "respawn", "respawn_delay", "respawn_max_retries",
                  "sigterm_timeout", "sigkill_timeout", "launch_prefix", "on_exit"}  # fmt: skip
-ROS2_TAGS = {
-    "node": {"pkg", "exec", "name", "namespace", "ros_args"} | PROCESS_ATTRS,
-    "executable": {"cmd", "name", "cwd"} | PROCESS_ATTRS,
-    "arg": {"name", "default", "description"},
-    "choice": {"value"},
-    "let": {"name", "value"},
-    "group": {"scoped"},
-    "push_ros_namespace": {"namespace"},
-    "include": {"file"},
-    "set_env": {"name", "value"},
-    "unset_env": {"name"},
-    "set_parameter": {"name", "value"},
-    "set_remap": {"from", "to"},
-    "log": {"message"},
-    "param": {"name", "value", "from"},
-    "remap": {"from", "to"},
-    "env": {"name", "value"},
-}
-ROS2_SCOPE_TAGS = {"arg", "let", "node", "executable", "group", "push_ros_namespace", "include",
-                   "set_env", "unset_env", "set_parameter", "set_remap", "log"}  # fmt: skip
-ROS2_NODE_TAGS = {"param", "remap", "env"}
-ROS2_ONLY = {"let", "executable", "push_ros_namespace", "set_env", "unset_env", "set_parameter",
-             "set_remap", "log"}  # fmt: skip
+SYNTAX = {"ros1": "ROS 1 (roslaunch)", "ros2": "ROS 2"}
+
+
+@dataclass(frozen=True)
+class Tag:
+    """One tag of one format: its handler, its attributes and the parents it may appear in."""
+
+    handler: Callable[[Resolver, Element, Scope], None]
+    attrs: frozenset[str]
+    under: frozenset[str]  # "launch" (the file's top level and <group>), "node", "executable"
+    marks: frozenset[str]  # attributes that show a file is in this format (type= on <node>)
+
+
+# Every tag of each format, filled by @tag on the Resolver's handlers. The allowed tags and
+# attributes and the format detection are all read from here: adding a tag is one handler.
+TAGS: dict[str, dict[str, Tag]] = {"ros1": {}, "ros2": {}}
+
+
+def tag(
+    fmt: str,
+    name: str,
+    attrs: Iterable[str],
+    under: Iterable[str] = ("launch",),
+    marks: Iterable[str] = (),
+) -> Callable:
+    """Register a Resolver method as the handler of <name> in ``fmt`` (ros2/launch's
+    @expose_action). A tag only one format has also tells the format of the file it is in."""
+
+    def register(handler: Callable) -> Callable:
+        TAGS[fmt][name] = Tag(handler, frozenset(attrs), frozenset(under), frozenset(marks))
+        return handler
+
+    return register
+
+
+def allowed_tags(fmt: str, parent: str) -> dict[str, frozenset[str]]:
+    """The tags ``fmt`` allows under ``parent`` ("launch", "node", "executable"), and their
+    attributes."""
+    return {name: known.attrs for name, known in TAGS[fmt].items() if parent in known.under}
 
 
 @dataclass
@@ -148,11 +152,12 @@ class Scope:
     namespace: str = "/"
     remaps: list[tuple[str, str]] = field(default_factory=list)
     params: list[tuple[str, Any]] = field(default_factory=list)
+    params_files: list[str] = field(default_factory=list)  # only inside a ROS 2 <node>
     env: dict[str, str | None] = field(default_factory=dict)
 
     def child(self, **changes: Any) -> Scope:
-        copies = {"args": dict(self.args), "remaps": list(self.remaps),
-                  "params": list(self.params), "env": dict(self.env)}  # fmt: skip
+        copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
+                  "params_files": list(self.params_files), "env": dict(self.env)}  # fmt: skip
         return replace(self, **{**copies, **changes})
 
     @property
@@ -173,20 +178,27 @@ def valid_name(name: str) -> bool:
     return bool(name) and (name[0].isalpha() or name[0] == "_") and name.replace("_", "a").isalnum()
 
 
+def _written_in(fmt: str, element: Element) -> bool:
+    """Whether ``element`` uses syntax only ``fmt`` has: a tag or a marking attribute."""
+    known = TAGS[fmt].get(element.tag)
+    if known is None:
+        return False
+    return element.tag not in TAGS["ros2" if fmt == "ros1" else "ros1"] or bool(
+        known.marks & element.attrs.keys()
+    )
+
+
 def detect_format(root: Element) -> str:
     """ "ros1" or "ros2", from the syntax used in the file (else from its name)."""
-    ros1 = ros2 = None
+    first: dict[str, Element | None] = {"ros1": None, "ros2": None}  # the first in its syntax
     stack = [root]
     while stack:
         element = stack.pop()
         stack.extend(element.children)
-        attrs = element.attrs
-        if element.tag in ROS2_ONLY or (element.tag == "node" and "exec" in attrs):
-            ros2 = ros2 or element
-        if element.tag == "rosparam" or (element.tag == "node" and "type" in attrs):
-            ros1 = ros1 or element
-        if element.tag == "group" and "ns" in attrs:
-            ros1 = ros1 or element
+        for fmt, found in first.items():
+            if found is None and _written_in(fmt, element):
+                first[fmt] = element
+    ros1, ros2 = first["ros1"], first["ros2"]
     if ros1 and ros2:
         raise LaunchError(
             f"{root.file}: mixes ROS 1 syntax (line {ros1.line}: <{ros1.tag}>) "
@@ -197,7 +209,7 @@ def detect_format(root: Element) -> str:
     return "ros1" if root.file.name.endswith(".launch") else "ros2"
 
 
-def _check(element: Element, allowed: set[str]) -> None:
+def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
     for name in element.attrs:
         if name not in allowed | CONDITIONS:
             known = ", ".join(sorted(allowed | CONDITIONS))
@@ -206,16 +218,14 @@ def _check(element: Element, allowed: set[str]) -> None:
         raise element.error("use either 'if' or 'unless', not both")
 
 
-def _check_tag(
-    element: Element, allowed: set[str], fmt: str, parent: str, attrs: set[str] | None = None
-) -> None:
+def _check_tag(element: Element, allowed: dict, fmt: str, parent: str) -> None:
+    """``element`` is one of the ``allowed`` tags (tag -> attributes) under ``parent``."""
     if element.tag not in allowed:
-        syntax = "ROS 1 (roslaunch)" if fmt == "ros1" else "ROS 2"
-        known = ", ".join(f"<{tag}>" for tag in sorted(allowed))
+        known = ", ".join(f"<{name}>" for name in sorted(allowed))
         raise element.error(
-            f"unknown tag <{element.tag}> in <{parent}> ({syntax} format); allowed: {known}"
+            f"unknown tag <{element.tag}> in <{parent}> ({SYNTAX[fmt]} format); allowed: {known}"
         )
-    _check(element, attrs or (ROS1_TAGS if fmt == "ros1" else ROS2_TAGS)[element.tag])
+    _check(element, allowed[element.tag])
 
 
 def _file_args(root: Element) -> list[Element]:
@@ -370,24 +380,26 @@ class Resolver:
         else:
             scope = parent.child(file=path, fmt=fmt, args={}, given=given)
         self.include_chain.append(path)
-        self.resolve_children(root, scope)
+        self.resolve_scope(root, scope)
         self.include_chain.pop()
 
-    def resolve_children(self, element: Element, scope: Scope) -> None:
-        allowed = ROS1_SCOPE_TAGS if scope.fmt == "ros1" else ROS2_SCOPE_TAGS
+    def resolve_scope(self, element: Element, scope: Scope) -> None:
+        """The children of <launch> or <group>, one level deeper (a recursion is refused)."""
         self.depth += 1
         try:
             if self.depth > MAX_DEPTH:
                 raise element.error(f"groups and includes nested more than {MAX_DEPTH} deep")
-            for child in element.children:
-                _check_tag(child, allowed, scope.fmt, element.tag)
-                if self.enabled(child, scope):
-                    handler = getattr(self, f"on_{scope.fmt}_{child.tag}", None) or getattr(
-                        self, f"on_{child.tag}"
-                    )
-                    handler(child, scope)
+            self.resolve_children(element, scope, "launch")
         finally:
             self.depth -= 1
+
+    def resolve_children(self, element: Element, scope: Scope, parent: str) -> None:
+        """Each enabled child of ``element``, by the handler its format registered for its tag."""
+        allowed = allowed_tags(scope.fmt, parent)
+        for child in element.children:
+            _check_tag(child, allowed, scope.fmt, element.tag)
+            if self.enabled(child, scope):
+                TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
     def finish(self) -> Launch:
         for node in self.ros1_nodes:
@@ -452,13 +464,15 @@ class Resolver:
             raise element.error(f"invalid namespace {value!r}")
         return full
 
-    # -- tags common to both formats ----------------------------------------------------------
+    # -- tags: arguments, scopes, includes ----------------------------------------------------
 
+    @tag("ros1", "arg", {"name", "default", "value", "doc"})
+    @tag("ros2", "arg", {"name", "default", "description"})
     def on_arg(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
         fixed = "value" in element.attrs  # ROS 1: a constant, not an argument
         for child in element.children:
-            _check_tag(child, {"choice"}, scope.fmt, "arg")
+            _check_tag(child, {"choice": {"value"}}, scope.fmt, "arg")
         if fixed and name in scope.given:
             raise element.error(f"argument {name!r} has a fixed value and cannot be set")
         if name in scope.given:
@@ -474,25 +488,26 @@ class Resolver:
             raise element.error(f"argument {name!r} is {value!r}; choose one of {choices}")
         scope.args[name] = value
 
-    def on_group(self, element: Element, scope: Scope) -> None:
-        if scope.fmt == "ros1":
-            ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
-            self.resolve_children(element, scope.child(namespace=ns))
-        elif self.flag(element, "scoped", scope) or "scoped" not in element.attrs:
-            self.resolve_children(element, scope.child())
-        else:
-            self.resolve_children(element, scope)
+    @tag("ros2", "let", {"name", "value"})
+    def on_let(self, element: Element, scope: Scope) -> None:
+        scope.args[self.text(element, "name", scope)] = self.text(element, "value", scope)
 
-    def on_remap(self, element: Element, scope: Scope) -> None:
-        scope.remaps.append((self.text(element, "from", scope), self.text(element, "to", scope)))
+    @tag("ros1", "group", {"ns"}, marks={"ns"})
+    def on_ros1_group(self, element: Element, scope: Scope) -> None:
+        ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
+        self.resolve_scope(element, scope.child(namespace=ns))
 
-    on_set_remap = on_remap
+    @tag("ros2", "group", {"scoped"})
+    def on_ros2_group(self, element: Element, scope: Scope) -> None:
+        scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
+        self.resolve_scope(element, scope.child() if scoped else scope)
 
-    def on_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
+    @tag("ros2", "push_ros_namespace", {"namespace"})
+    def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
+        scope.namespace = self.namespace(element, "namespace", scope)
 
-    on_set_env = on_env
-
+    @tag("ros1", "include", {"file", "ns", "pass_all_args"})
+    @tag("ros2", "include", {"file"})
     def on_include(self, element: Element, scope: Scope) -> None:
         path = Path(self.text(element, "file", scope))
         if not path.is_absolute():  # relative to the including file, not the current directory
@@ -500,7 +515,7 @@ class Resolver:
         pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
         given = dict(scope.args) if pass_all else {}
         for child in element.children:
-            _check_tag(child, {"arg"}, scope.fmt, "include", {"name", "value"})
+            _check_tag(child, {"arg": {"name", "value"}}, scope.fmt, "include")
             if self.enabled(child, scope):
                 given[self.text(child, "name", scope)] = self.text(child, "value", scope)
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
@@ -508,44 +523,57 @@ class Resolver:
             raise element.error(f"included file {path} does not exist")
         self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element)
 
-    # -- ROS 1 --------------------------------------------------------------------------------
+    @tag("ros2", "log", {"message"})
+    def on_log(self, element: Element, scope: Scope) -> None:
+        self.messages.append(self.text(element, "message", scope))
 
-    def on_ros1_node(self, element: Element, scope: Scope) -> None:
-        node = self._node(element, scope, "type", "ns")
-        node.required = self.flag(element, "required", scope)
-        if node.required and node.respawn:
-            raise element.error("a node cannot be both respawn and required")
-        node_scope = scope.child(namespace=node.namespace)
-        private = f"{node.namespace.rstrip('/')}/{node.name}"
-        for child in element.children:
-            _check_tag(child, ROS1_NODE_TAGS, "ros1", "node")
-            if not self.enabled(child, node_scope):
-                continue
-            if child.tag in ("param", "rosparam"):
-                self._ros1_param(child, node_scope, private)
-            else:
-                getattr(self, f"on_{child.tag}")(child, node_scope)
-        node.remaps, node.env = node_scope.remaps, node_scope.env
-        self.ros1_nodes.append(node)
-        self.nodes.append(node)
+    # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 
+    @tag("ros1", "remap", {"from", "to"}, under={"launch", "node"})
+    @tag("ros2", "set_remap", {"from", "to"})
+    @tag("ros2", "remap", {"from", "to"}, under={"node"})
+    def on_remap(self, element: Element, scope: Scope) -> None:
+        scope.remaps.append((self.text(element, "from", scope), self.text(element, "to", scope)))
+
+    @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
+    @tag("ros2", "set_env", {"name", "value"})
+    @tag("ros2", "env", {"name", "value"}, under={"node", "executable"})
+    def on_env(self, element: Element, scope: Scope) -> None:
+        scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
+
+    @tag("ros2", "unset_env", {"name"})
+    def on_unset_env(self, element: Element, scope: Scope) -> None:
+        scope.env[self.env_name(element, scope)] = None
+
+    @tag("ros2", "set_parameter", {"name", "value"})
+    @tag("ros2", "param", {"name", "value", "from"}, under={"node"})
+    def on_ros2_param(self, element: Element, scope: Scope) -> None:
+        if "from" in element.attrs:  # a params file, checked now: the child would fail on it later
+            path = Path(self.text(element, "from", scope))
+            path = path if path.is_absolute() else scope.file.parent / path
+            _check_params_file(element, path)
+            scope.params_files.append(str(path))
+            return
+        value = _typed_value(self.text(element, "value", scope), None, element)
+        name = self.text(element, "name", scope)
+        _check_params(element, None, name, value)
+        scope.params.append((name, value))
+
+    # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
+    # <node>: the node's private namespace).
+
+    @tag("ros1", "param", {"name", "value", "type"}, under={"launch", "node"})
     def on_ros1_param(self, element: Element, scope: Scope) -> None:
-        self._ros1_param(element, scope, scope.namespace)
-
-    on_rosparam = on_ros1_param
-
-    def _ros1_param(self, element: Element, scope: Scope, namespace: str) -> None:
-        if element.tag == "rosparam":
-            return self._rosparam(element, scope, namespace)
         name = self.text(element, "name", scope)
         if name.startswith("~"):
             name = name[1:]  # private: inside <node> the namespace is already the node's
         value = _typed_value(self.text(element, "value", scope), element.attrs.get("type"), element)
         _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
-        for key, item in _flatten(join_namespace(namespace, name), value):
+        for key, item in _flatten(join_namespace(scope.namespace, name), value):
             self.param_server[key] = item
 
-    def _rosparam(self, element: Element, scope: Scope, namespace: str) -> None:
+    @tag("ros1", "rosparam", {"command", "file", "param", "ns", "subst_value"}, {"launch", "node"})
+    def on_rosparam(self, element: Element, scope: Scope) -> None:
         command = self.text(element, "command", scope, "load")
         if command != "load":
             raise element.error(f"<rosparam command={command!r}> is not supported; only 'load'")
@@ -561,6 +589,7 @@ class Resolver:
             text = substitute(text, scope, element)
         value = _load_yaml(text, element)
         _check_params(element, value if isinstance(value, dict) else None, "", value)
+        namespace = scope.namespace
         if "ns" in element.attrs:
             namespace = join_namespace(namespace, self.text(element, "ns", scope))
         if "param" in element.attrs:
@@ -587,99 +616,92 @@ class Resolver:
                 params[key[len(private) :].replace("/", ".")] = value
         return list(params.items())
 
-    # -- ROS 2 --------------------------------------------------------------------------------
+    # -- tags: processes ----------------------------------------------------------------------
 
-    def on_ros2_node(self, element: Element, scope: Scope) -> None:
-        node = self._node(element, scope, "exec", "namespace")
-        node.ros_args = self.words(element, "ros_args", scope)
-        self._ros2_process(node, element, scope, ROS2_NODE_TAGS)
+    @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
+                          "required", "launch_prefix"}, marks={"type"})  # fmt: skip
+    @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args"} | PROCESS_ATTRS,
+         marks={"exec"})  # fmt: skip
+    @tag("ros2", "executable", {"cmd", "name", "cwd"} | PROCESS_ATTRS)
+    def on_process(self, element: Element, scope: Scope) -> None:
+        """<node> (both formats) and <executable>: the one place a NodeDecl is filled.
 
-    def on_executable(self, element: Element, scope: Scope) -> None:
-        cmd = self.words(element, "cmd", scope)
-        if not cmd:
-            raise element.error("<executable> needs a non-empty 'cmd'")
-        node = NodeDecl(element.where, cmd=cmd, namespace=scope.namespace)
-        node.name = self.text(element, "name", scope, "") or None
-        node.cwd = self.text(element, "cwd", scope, "") or None
-        self._process_options(node, element, scope)
-        self._ros2_process(node, element, scope, {"env"})
-
-    def _ros2_process(self, node: NodeDecl, element: Element, scope: Scope, tags: set) -> None:
+        Each attribute is read the same way for every tag: one the tag does not allow was
+        refused already (its @tag attributes), so here it reads as its default.
+        """
+        ros1 = scope.fmt == "ros1"
+        package = executable = cmd = name = None
+        if element.tag == "executable":
+            cmd = self.words(element, "cmd", scope)
+            if not cmd:
+                raise element.error("<executable> needs a non-empty 'cmd'")
+            name = self.text(element, "name", scope, "") or None
+        else:
+            package = self.text(element, "pkg", scope)
+            executable = self.text(element, "type" if ros1 else "exec", scope)
+            if ros1 or "name" in element.attrs:  # a ROS 1 node must be named
+                name = self.text(element, "name", scope)
+                if not valid_name(name):
+                    raise element.error(f"invalid node name {name!r}")
+        ns_attr = "ns" if ros1 else "namespace"
+        namespace = scope.namespace
+        if ns_attr in element.attrs:
+            namespace = self.namespace(element, ns_attr, scope)
+        cwd = self.text(element, "cwd", scope, "") or None
+        args = self.words(element, "args", scope)
+        output = self.text(element, "output", scope, "log")
+        outputs = ("screen", "log") if ros1 else ("screen", "log", "both")
+        if output not in outputs:
+            raise element.error(f"output={output!r}; use one of {', '.join(outputs)}")
+        respawn = self.flag(element, "respawn", scope)
+        respawn_delay = self.number(element, "respawn_delay", scope) or 0.0
+        retries = self.number(element, "respawn_max_retries", scope, int)
+        launch_prefix = self.words(element, "launch_prefix", scope)
+        ros_args = self.words(element, "ros_args", scope)
         on_exit = self.text(element, "on_exit", scope, "")
         if on_exit not in ("", "shutdown"):
             raise element.error(f"on_exit={on_exit!r} is not supported; use 'shutdown'")
-        node.required = on_exit == "shutdown"
-        if node.required and node.respawn:
-            raise element.error("a process cannot both respawn and shut the launch down on exit")
-        for name in ("sigterm_timeout", "sigkill_timeout"):
-            setattr(node, name, self.number(element, name, scope))
-        node.remaps, node.params, node.env = list(scope.remaps), list(scope.params), dict(scope.env)
-        for child in element.children:
-            _check_tag(child, tags, "ros2", element.tag)
-            if not self.enabled(child, scope):
-                continue
-            if child.tag == "remap":
-                node.remaps.append((self.text(child, "from", scope), self.text(child, "to", scope)))
-            elif child.tag == "env":
-                node.env[self.env_name(child, scope)] = self.text(child, "value", scope)
-            elif "from" in child.attrs:
-                path = Path(self.text(child, "from", scope))
-                path = path if path.is_absolute() else scope.file.parent / path
-                _check_params_file(child, path)
-                node.params_files.append(str(path))
-            else:
-                node.params.append(self._ros2_param(child, scope))
+        required = self.flag(element, "required", scope) or on_exit == "shutdown"
+        if required and respawn:
+            raise element.error(
+                "a node cannot be both respawn and required"
+                if ros1
+                else "a process cannot both respawn and shut the launch down on exit"
+            )
+        sigterm_timeout = self.number(element, "sigterm_timeout", scope)
+        sigkill_timeout = self.number(element, "sigkill_timeout", scope)
+        # The children (<param>, <remap>, <env>) apply to a scope of the node's own, as anywhere
+        # else. In ROS 1 its namespace is the node's private one, where its <param>s go, and its
+        # parameters come from the parameter server only (finish()), not from a ROS 2 includer.
+        private = f"{namespace.rstrip('/')}/{name}"
+        node_scope = scope.child(namespace=private, params=[]) if ros1 else scope.child()
+        self.resolve_children(element, node_scope, element.tag)
+        node = NodeDecl(
+            element.where,
+            package=package,
+            executable=executable,
+            cmd=cmd,
+            name=name,
+            namespace=namespace,
+            args=args,
+            ros_args=ros_args,
+            remaps=node_scope.remaps,
+            params=node_scope.params,
+            params_files=node_scope.params_files,
+            env=node_scope.env,
+            output=output,
+            respawn=respawn,
+            respawn_delay=respawn_delay,
+            respawn_max_retries=DEFAULT_RESPAWN_MAX_RETRIES if retries is None else retries,
+            required=required,
+            sigterm_timeout=sigterm_timeout,
+            sigkill_timeout=sigkill_timeout,
+            launch_prefix=launch_prefix,
+            cwd=cwd,
+        )
         self.nodes.append(node)
-
-    def _ros2_param(self, element: Element, scope: Scope) -> tuple[str, Any]:
-        value = _typed_value(self.text(element, "value", scope), None, element)
-        name = self.text(element, "name", scope)
-        _check_params(element, None, name, value)
-        return name, value
-
-    def on_set_parameter(self, element: Element, scope: Scope) -> None:
-        scope.params.append(self._ros2_param(element, scope))
-
-    def on_let(self, element: Element, scope: Scope) -> None:
-        scope.args[self.text(element, "name", scope)] = self.text(element, "value", scope)
-
-    def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
-        scope.namespace = self.namespace(element, "namespace", scope)
-
-    def on_unset_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = None
-
-    def on_log(self, element: Element, scope: Scope) -> None:
-        self.messages.append(self.text(element, "message", scope))
-
-    # -- nodes --------------------------------------------------------------------------------
-
-    def _node(self, element: Element, scope: Scope, exec_attr: str, ns_attr: str) -> NodeDecl:
-        node = NodeDecl(element.where)
-        node.package = self.text(element, "pkg", scope)
-        node.executable = self.text(element, exec_attr, scope)
-        if scope.fmt == "ros1" or "name" in element.attrs:
-            node.name = self.text(element, "name", scope)
-            if not valid_name(node.name):
-                raise element.error(f"invalid node name {node.name!r}")
-        if ns_attr in element.attrs:
-            node.namespace = self.namespace(element, ns_attr, scope)
-        else:
-            node.namespace = scope.namespace
-        self._process_options(node, element, scope)
-        return node
-
-    def _process_options(self, node: NodeDecl, element: Element, scope: Scope) -> None:
-        node.args = self.words(element, "args", scope)
-        node.output = self.text(element, "output", scope, "log")
-        outputs = ("screen", "log") if scope.fmt == "ros1" else ("screen", "log", "both")
-        if node.output not in outputs:
-            raise element.error(f"output={node.output!r}; use one of {', '.join(outputs)}")
-        node.respawn = self.flag(element, "respawn", scope)
-        node.respawn_delay = self.number(element, "respawn_delay", scope) or 0.0
-        retries = self.number(element, "respawn_max_retries", scope, int)
-        node.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries is None else retries
-        node.launch_prefix = self.words(element, "launch_prefix", scope)
+        if ros1:
+            self.ros1_nodes.append(node)
 
 
 def resolve(path: Path, args: dict[str, str], options: Options | None = None) -> Launch:

@@ -11,17 +11,12 @@ from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
 from rclpy.action.graph import get_action_names_and_types
 
-from rostool.action_goal import (
-    CtrlC,
-    Interrupted,
-    ServerLost,
-    cancel_goal,
-    spin_until,
-)
+from rostool.action_goal import CtrlC, cancel_goal
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name
+from rostool.graph import Graph, absolute_name, print_names
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
 from rostool.typenames import load_type
+from rostool.wait import Interrupted, ServerLost, spin_until
 
 STATUS_NAMES = {
     GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
@@ -39,9 +34,7 @@ def action_types(graph: Graph) -> dict[str, list[str]]:
 
 
 def list_actions(graph: Graph, show_types: bool = False) -> None:
-    graph.settle()
-    for name, types in sorted(action_types(graph).items()):
-        print(f"{name} [{', '.join(types)}]" if show_types else name)
+    print_names(graph, lambda: action_types(graph), show_types)
 
 
 def print_type(graph: Graph, action: str) -> None:

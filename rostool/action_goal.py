@@ -1,11 +1,8 @@
 """Waiting on an action goal without hanging, and canceling it on Ctrl-C.
 
 Used by ``rostool action send_goal`` (the action lesson's client shows the same steps in its
-own lines). A goal may run for long, so the waits here:
-
-- spin in short slices, so that a Ctrl-C noted by ``CtrlC`` is seen at once (``Interrupted``);
-- check every SERVER_CHECK_PERIOD that the action server is still in the graph: a server that
-  crashed or was stopped never answers, and waiting for it would last forever (``ServerLost``).
+own lines). A goal may run for long, so its waits (``wait.spin_until``) stop at once on a
+Ctrl-C noted by ``CtrlC`` (``Interrupted``) and when the action server goes away (``ServerLost``).
 
 After Ctrl-C, ``cancel_goal`` asks the server to cancel the goal and waits a bounded time for
 the answer. That needs ROS still running, so the program must not let rclpy shut ROS down on
@@ -18,9 +15,7 @@ SIGINT: it initialises with ``signal_handler_options`` NO (or SIGTERM) and insta
 
 from __future__ import annotations
 
-import math
 import time
-from collections.abc import Callable
 from types import FrameType
 from typing import Any, Protocol
 
@@ -28,19 +23,9 @@ from rclpy.action import ActionClient
 from rclpy.executors import Executor
 from rclpy.task import Future
 
+from rostool.wait import ServerLost, spin_until
+
 CANCEL_TIMEOUT = 5.0
-# Waits spin in slices this long, so that a Ctrl-C is noticed at once ...
-SPIN_SLICE = 0.1
-# ... and check this often that the action server is still there (it may crash or be stopped).
-SERVER_CHECK_PERIOD = 1.0
-
-
-class Interrupted(Exception):
-    """The user pressed Ctrl-C."""
-
-
-class ServerLost(Exception):
-    """The action server went away while we waited for it to answer."""
 
 
 class Log(Protocol):
@@ -67,35 +52,6 @@ class CtrlC:
 
     def is_pressed(self) -> bool:
         return self.pressed
-
-
-def spin_until(
-    executor: Executor,
-    done: Callable[[], bool],
-    timeout: float = math.inf,
-    *,
-    client: ActionClient | None = None,
-    interrupted: Callable[[], bool] | None = None,
-) -> bool:
-    """Spin until done() (True) or timeout seconds pass (False).
-
-    Raises Interrupted once interrupted() is true, and ServerLost if a client is given and
-    its action server goes away.
-    """
-    deadline = time.monotonic() + timeout
-    next_check = time.monotonic() + SERVER_CHECK_PERIOD
-    while not done():
-        if interrupted is not None and interrupted():
-            raise Interrupted
-        now = time.monotonic()
-        if now >= deadline:
-            return False
-        if client is not None and now >= next_check:
-            if not client.server_is_ready():
-                raise ServerLost
-            next_check = now + SERVER_CHECK_PERIOD
-        executor.spin_once(timeout_sec=min(SPIN_SLICE, deadline - now))
-    return True
 
 
 def cancel_goal(

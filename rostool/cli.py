@@ -35,9 +35,9 @@ from rostool import (
     service,
     topic,
 )
-from rostool.action_goal import Interrupted
 from rostool.errors import ToolError
 from rostool.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
+from rostool.wait import Interrupted
 
 
 def common_options() -> argparse.ArgumentParser:
@@ -144,7 +144,11 @@ def _execute(
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    return run_parsed(build_parser().parse_args(argv))
+
+
+def run_parsed(args: argparse.Namespace) -> int:
+    """Run the command a parser chose (rostool's, or a ROS 1 tool's in ros1.py)."""
     return execute(
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),

@@ -43,6 +43,7 @@ from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_common.node_main import init
 from rostool.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
 from rostool.errors import ToolError
+from rostool.wait import spin_until
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
 MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete (load: 7 s seen)
@@ -120,6 +121,20 @@ class Snapshot:
     actions: dict[str, ServiceInfo]
 
 
+def print_names(
+    graph: Graph,
+    names_and_types: Callable[[], dict[str, list[str]]],
+    show_types: bool = False,
+    of_type: str | None = None,
+) -> None:
+    """`list` and `find` of topics, services and actions: once the graph is complete, each
+    name (with its types if show_types), or only the names that have the type of_type."""
+    graph.settle()
+    for name, types in sorted(names_and_types().items()):
+        if of_type is None or of_type in types:
+            print(f"{name} [{', '.join(types)}]" if show_types else name)
+
+
 class Graph:
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
@@ -178,14 +193,10 @@ class Graph:
     def wait_for(self, condition: Callable[[], T], what: str, timeout: float | None = None) -> T:
         """Spin until condition() gives something truthy and return it; ToolError on timeout."""
         timeout = self.timeout if timeout is None else timeout
-        deadline = time.monotonic() + timeout
-        while True:
-            result = condition()
-            if result:
-                return result
-            if time.monotonic() > deadline:
-                raise ToolError(f"{what} (waited {timeout:g} s)")
-            self.spin_once()
+        result = spin_until(self.executor, condition, timeout, period=POLL_PERIOD)
+        if not result:
+            raise ToolError(f"{what} (waited {timeout:g} s)")
+        return result
 
     def settle(self) -> None:
         """Wait until the graph holds everything that was running when this command started.
@@ -198,9 +209,8 @@ class Graph:
         ``spin_time`` given, wait exactly that long instead.
         """
         start = time.monotonic()
-        if self.spin_time is not None:
-            while time.monotonic() - start < self.spin_time:
-                self.spin_once()
+        if self.spin_time is not None:  # spin exactly that long: the condition is never true
+            spin_until(self.executor, lambda: False, self.spin_time, period=POLL_PERIOD)
             return
         # Participant discovery itself is not visible through ROS; what bounds it is the
         # running participants' announcement period. Five of them: on a loaded 2-core
@@ -228,23 +238,21 @@ class Graph:
                     file=sys.stderr,
                 )
                 break
-        while True:
+
+        def complete() -> bool:
             # One look costs a query per DDS topic (0.1 to 0.3 s with 20 nodes on a loaded
             # machine), so look only once the participants have had time to announce.
             self.discovery.take()
-            missing = self.missing()
-            if not missing:
-                self.incomplete = []
-                return
-            if time.monotonic() - start >= MAX_SETTLE_TIME:
-                self.incomplete = missing
-                print(
-                    f"warning: after {MAX_SETTLE_TIME:g} s discovery is still incomplete "
-                    f"({'; '.join(missing[:3])}); the list may miss something",
-                    file=sys.stderr,
-                )
-                return
-            self.spin_once(0.05)
+            self.incomplete = self.missing()
+            return not self.incomplete
+
+        remaining = max(0.0, MAX_SETTLE_TIME - (time.monotonic() - start))
+        if not spin_until(self.executor, complete, remaining, period=0.05):
+            print(
+                f"warning: after {MAX_SETTLE_TIME:g} s discovery is still incomplete "
+                f"({'; '.join(self.incomplete[:3])}); the list may miss something",
+                file=sys.stderr,
+            )
 
     def participants(self) -> set[bytes]:
         """The participants (ROS 2 processes) seen: each has a ros_discovery_info writer."""

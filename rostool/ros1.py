@@ -26,9 +26,9 @@ import yaml
 
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool import interface, node, param, service, topic
-from rostool.cli import common_options, execute
+from rostool.cli import common_options, run_parsed
 from rostool.errors import ToolError
-from rostool.graph import DEFAULT_TIMEOUT, Graph, absolute_name
+from rostool.graph import Graph, absolute_name
 from rostool.messages import parse_yaml
 from rostool.typenames import load_type
 
@@ -143,7 +143,8 @@ def rosparam_load(graph: Graph, path: str) -> None:
         param.load_values(graph, node_name, param.params_for_node(data, path, node_name))
 
 
-# The tools. Each is a parser whose commands call the rostool functions.
+# The tools. Each is a parser whose commands call the rostool functions, built as the rostool
+# verbs build theirs (topic.register, ...): one sub-parser per command, its `run` a default.
 
 
 def _parser(tool: str, description: str) -> tuple[argparse.ArgumentParser, Any, Any]:
@@ -153,18 +154,12 @@ def _parser(tool: str, description: str) -> tuple[argparse.ArgumentParser, Any, 
     return parser, sub, common_options()
 
 
-def _add(sub: Any, common: Any, name: str, run: Callable, help: str, offline: bool = False) -> Any:
-    p = sub.add_parser(name, parents=[] if offline else [common], help=help)
-    p.set_defaults(run=run, offline=offline)
-    return p
-
-
 def _no_meaning(tool: str, sub: Any) -> None:
     for (owner, command), reason in NO_ROS2_MEANING.items():
         if owner == tool:
             p = sub.add_parser(command, help="(no ROS 2 counterpart)")
             p.add_argument("rest", nargs="*")
-            p.set_defaults(run=_refuse(f"{tool} {command}", reason), offline=True)
+            p.set_defaults(offline=True, run=_refuse(f"{tool} {command}", reason))
 
 
 def _refuse(command: str, reason: str) -> Callable:
@@ -176,27 +171,41 @@ def _refuse(command: str, reason: str) -> Callable:
 
 def rostopic_parser() -> argparse.ArgumentParser:
     parser, sub, common = _parser("rostopic", "ROS 1's rostopic, on ROS 2 (see: rostool topic)")
-    _add(sub, common, "list", lambda g, a: topic.list_topics(g, a.verbose), "list topics")
-    sub.choices["list"].add_argument("-v", "--verbose", action="store_true", help="with types")
-    p = _add(sub, common, "echo", lambda g, a: topic.echo(g, a.topic, count=a.n), "print messages")
+
+    p = sub.add_parser("list", parents=[common], help="list topics")
+    p.add_argument("-v", "--verbose", action="store_true", help="with types")
+    p.set_defaults(run=lambda graph, a: topic.list_topics(graph, a.verbose))
+
+    p = sub.add_parser("echo", parents=[common], help="print messages")
     p.add_argument("topic")
     p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
-    p = _add(sub, common, "pub", lambda g, a: _pub(g, a), "publish a message")
+    p.set_defaults(run=lambda graph, a: topic.echo(graph, a.topic, count=a.n))
+
+    p = sub.add_parser("pub", parents=[common], help="publish a message")
     p.add_argument("topic")
     p.add_argument("type")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
     group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
     group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
     group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
+    p.set_defaults(run=_pub)
+
     for name, bandwidth in (("hz", False), ("bw", True)):
-        p = _add(sub, common, name, lambda g, a, b=bandwidth: topic.hz(g, a.topic, 10000, b), "")
+        p = sub.add_parser(name, parents=[common], help="")
         p.add_argument("topic")
-    p = _add(sub, common, "info", lambda g, a: topic.info(g, a.topic, True), "publishers etc.")
+        p.set_defaults(run=lambda graph, a, b=bandwidth: topic.hz(graph, a.topic, 10000, b))
+
+    p = sub.add_parser("info", parents=[common], help="publishers etc.")
     p.add_argument("topic")
-    p = _add(sub, common, "type", lambda g, a: topic.print_type(g, a.topic), "message type")
+    p.set_defaults(run=lambda graph, a: topic.info(graph, a.topic, True))
+
+    p = sub.add_parser("type", parents=[common], help="message type")
     p.add_argument("topic")
-    p = _add(sub, common, "find", lambda g, a: topic.find(g, a.type), "topics of a type")
+    p.set_defaults(run=lambda graph, a: topic.print_type(graph, a.topic))
+
+    p = sub.add_parser("find", parents=[common], help="topics of a type")
     p.add_argument("type")
+    p.set_defaults(run=lambda graph, a: topic.find(graph, a.type))
     return parser
 
 
@@ -212,18 +221,30 @@ def _pub(graph: Graph, args: argparse.Namespace) -> None:
 
 def rosservice_parser() -> argparse.ArgumentParser:
     parser, sub, common = _parser("rosservice", "ROS 1's rosservice, on ROS 2 (rostool service)")
-    _add(sub, common, "list", lambda g, a: service.list_services(g), "list services")
-    p = _add(sub, common, "type", lambda g, a: service.print_type(g, a.service), "service type")
+
+    p = sub.add_parser("list", parents=[common], help="list services")
+    p.set_defaults(run=lambda graph, a: service.list_services(graph))
+
+    p = sub.add_parser("type", parents=[common], help="service type")
     p.add_argument("service")
-    p = _add(sub, common, "call", lambda g, a: _call(g, a), "call a service")
+    p.set_defaults(run=lambda graph, a: service.print_type(graph, a.service))
+
+    p = sub.add_parser("call", parents=[common], help="call a service")
     p.add_argument("service")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
-    p = _add(sub, common, "args", lambda g, a: _service_args(g, a.service), "request fields")
+    p.set_defaults(run=_call)
+
+    p = sub.add_parser("args", parents=[common], help="request fields")
     p.add_argument("service")
-    p = _add(sub, common, "info", lambda g, a: _service_info(g, a.service), "node, type, args")
+    p.set_defaults(run=lambda graph, a: _service_args(graph, a.service))
+
+    p = sub.add_parser("info", parents=[common], help="node, type, args")
     p.add_argument("service")
-    p = _add(sub, common, "find", lambda g, a: service.find(g, a.type), "services of a type")
+    p.set_defaults(run=lambda graph, a: _service_info(graph, a.service))
+
+    p = sub.add_parser("find", parents=[common], help="services of a type")
     p.add_argument("type")
+    p.set_defaults(run=lambda graph, a: service.find(graph, a.type))
     _no_meaning("rosservice", sub)
     return parser
 
@@ -252,66 +273,63 @@ def _service_info(graph: Graph, name: str) -> None:
 
 def rosparam_parser() -> argparse.ArgumentParser:
     parser, sub, common = _parser("rosparam", "ROS 1's rosparam, on ROS 2 (rostool param)")
-    _add(sub, common, "list", lambda g, a: rosparam_list(g), "list /node/parameter names")
-    p = _add(sub, common, "get", lambda g, a: rosparam_get(g, a.name), "print a value")
-    p.add_argument("name", help="/node/parameter, or /parameter if one node declares it")
-    p = _add(sub, common, "set", lambda g, a: rosparam_set(g, a.name, a.value), "set a value")
-    p.add_argument("name", help="/node/parameter, or /parameter if one node declares it")
+    name_help = "/node/parameter, or /parameter if one node declares it"
+
+    p = sub.add_parser("list", parents=[common], help="list /node/parameter names")
+    p.set_defaults(run=lambda graph, a: rosparam_list(graph))
+
+    p = sub.add_parser("get", parents=[common], help="print a value")
+    p.add_argument("name", help=name_help)
+    p.set_defaults(run=lambda graph, a: rosparam_get(graph, a.name))
+
+    p = sub.add_parser("set", parents=[common], help="set a value")
+    p.add_argument("name", help=name_help)
     p.add_argument("value", help="a YAML value: 2, 2.5, true, text")
-    p = _add(sub, common, "dump", lambda g, a: rosparam_dump(g, a.file), "all parameters")
+    p.set_defaults(run=lambda graph, a: rosparam_set(graph, a.name, a.value))
+
+    p = sub.add_parser("dump", parents=[common], help="all parameters")
     p.add_argument("file", nargs="?", help="write here instead of printing")
-    p = _add(sub, common, "load", lambda g, a: rosparam_load(g, a.file), "set from a dump")
+    p.set_defaults(run=lambda graph, a: rosparam_dump(graph, a.file))
+
+    p = sub.add_parser("load", parents=[common], help="set from a dump")
     p.add_argument("file")
+    p.set_defaults(run=lambda graph, a: rosparam_load(graph, a.file))
     _no_meaning("rosparam", sub)
     return parser
 
 
 def rosnode_parser() -> argparse.ArgumentParser:
     parser, sub, common = _parser("rosnode", "ROS 1's rosnode, on ROS 2 (rostool node)")
-    _add(sub, common, "list", lambda g, a: node.list_nodes(g), "list nodes")
-    p = _add(sub, common, "info", lambda g, a: node.info(g, a.node), "what a node offers")
+
+    p = sub.add_parser("list", parents=[common], help="list nodes")
+    p.set_defaults(run=lambda graph, a: node.list_nodes(graph))
+
+    p = sub.add_parser("info", parents=[common], help="what a node offers")
     p.add_argument("node")
+    p.set_defaults(run=lambda graph, a: node.info(graph, a.node))
     _no_meaning("rosnode", sub)
     return parser
 
 
 def _interface_parser(tool: str, kind: str) -> argparse.ArgumentParser:
     what = interface.KIND_NAMES[kind]
-    parser, sub, common = _parser(tool, f"ROS 1's {tool}, on ROS 2 (rostool interface)")
-    show = _add(
-        sub,
-        common,
-        "show",
-        lambda g, a: _show(_type_or_stdin(a.type, show), kind),
-        f"a {what}",
-        offline=True,
-    )
+    parser, sub, _common = _parser(tool, f"ROS 1's {tool}, on ROS 2 (rostool interface)")
+
+    show = sub.add_parser("show", help=f"a {what}")
     show.add_argument("type", nargs="?", help="pkg/Name, Name, or - to read it from stdin")
-    _add(
-        sub,
-        common,
-        "list",
-        lambda g, a: print(*interface.list_types((kind,)), sep="\n"),
-        f"all {what} types",
-        offline=True,
-    )
-    p = _add(
-        sub,
-        common,
-        "package",
-        lambda g, a: print(*interface.list_types((kind,), a.package), sep="\n"),
-        f"the {what} types of a package",
-        offline=True,
-    )
+    show.set_defaults(offline=True, run=lambda _, a: _show(_type_or_stdin(a.type, show), kind))
+
+    p = sub.add_parser("list", help=f"all {what} types")
+    p.set_defaults(offline=True, run=lambda _, a: print(*interface.list_types((kind,)), sep="\n"))
+
+    p = sub.add_parser("package", help=f"the {what} types of a package")
     p.add_argument("package")
-    _add(
-        sub,
-        common,
-        "packages",
-        lambda g, a: print(*interface.packages((kind,)), sep="\n"),
-        f"packages with {what} types",
-        offline=True,
+    p.set_defaults(
+        offline=True, run=lambda _, a: print(*interface.list_types((kind,), a.package), sep="\n")
     )
+
+    p = sub.add_parser("packages", help=f"packages with {what} types")
+    p.set_defaults(offline=True, run=lambda _, a: print(*interface.packages((kind,)), sep="\n"))
     _no_meaning(tool, sub)
     return parser
 
@@ -343,12 +361,7 @@ def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
         args = commands[argv[0]].parse_intermixed_args(argv[1:])
     else:
         args = parser.parse_args(argv)  # help, or a usage error
-    return execute(
-        lambda graph: args.run(graph, args),
-        offline=getattr(args, "offline", False),
-        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
-        spin_time=getattr(args, "spin_time", None),
-    )
+    return run_parsed(args)
 
 
 def rostopic(argv: Sequence[str] | None = None) -> int:

@@ -6,15 +6,13 @@ import argparse
 from typing import Any
 
 from rostool.errors import ToolError
-from rostool.graph import Graph, ServiceInfo, absolute_name
+from rostool.graph import Graph, ServiceInfo, absolute_name, print_names
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
 from rostool.typenames import full_type_name, load_type
 
 
 def list_services(graph: Graph, show_types: bool = False) -> None:
-    graph.settle()
-    for name, types in sorted(graph.service_types().items()):
-        print(f"{name} [{', '.join(types)}]" if show_types else name)
+    print_names(graph, graph.service_types, show_types)
 
 
 def print_type(graph: Graph, service: str) -> None:
@@ -22,11 +20,8 @@ def print_type(graph: Graph, service: str) -> None:
 
 
 def find(graph: Graph, type_name: str) -> None:
-    wanted = full_type_name(load_type(type_name, ("srv",)))
-    graph.settle()
-    for name, types in sorted(graph.service_types().items()):
-        if wanted in types:
-            print(name)
+    wanted = full_type_name(load_type(type_name, ("srv",)))  # an unknown type: an error first
+    print_names(graph, graph.service_types, of_type=wanted)
 
 
 def servers(graph: Graph, service: str) -> list[str]:

@@ -20,7 +20,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile
 
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name, until_stopped
+from rostool.graph import Graph, absolute_name, print_names, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
 from rostool.qos import AdaptiveSubscription
 from rostool.qos import compatible_qos as compatible_qos  # moved to qos.py; kept importable
@@ -30,9 +30,7 @@ DEFAULT_PUB_RATE = 1.0  # Hz, as `ros2 topic pub`
 
 
 def list_topics(graph: Graph, show_types: bool = False) -> None:
-    graph.settle()
-    for topic, types in sorted(graph.topic_types().items()):
-        print(f"{topic} [{', '.join(types)}]" if show_types else topic)
+    print_names(graph, graph.topic_types, show_types)
 
 
 def print_type(graph: Graph, topic: str) -> None:
@@ -40,11 +38,8 @@ def print_type(graph: Graph, topic: str) -> None:
 
 
 def find(graph: Graph, type_name: str) -> None:
-    wanted = full_type_name(load_type(type_name, ("msg",)))
-    graph.settle()
-    for topic, types in sorted(graph.topic_types().items()):
-        if wanted in types:
-            print(topic)
+    wanted = full_type_name(load_type(type_name, ("msg",)))  # an unknown type: an error first
+    print_names(graph, graph.topic_types, of_type=wanted)
 
 
 def info(graph: Graph, topic: str, verbose: bool = False) -> None:

@@ -294,6 +294,15 @@ def test_unknown_tags_and_attributes_name_the_place_and_the_allowed_set(tmp_path
     assert "unknown tag <group> in <node>" in error(tmp_path, ros1(node1(body="<group/>")))
 
 
+def test_ros1_arg_choices_are_checked_not_a_traceback(tmp_path):
+    # <choice> inside <arg> once raised a KeyError in the ROS 1 format; both formats take it.
+    xml = ros1('<arg name="who" default="pub"><choice value="pub"/><choice value="b"/></arg>')
+    assert plan(tmp_path, xml) == []
+    assert "argument 'who' is 'x'; choose one of ['pub', 'b']" in error(tmp_path, xml, who="x")
+    message = error(tmp_path, ros1('<arg name="who" default="a"><choice colour="red"/></arg>'))
+    assert "unknown attribute 'colour' on <choice>; allowed: if, unless, value" in message
+
+
 def test_node_errors_before_anything_starts(tmp_path):
     assert "a second node named /pub (the first is at" in error(tmp_path, ros1(node1() + node1()))
     both = ros1(node1(extra='respawn="true" required="true"'))

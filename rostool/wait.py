@@ -1,0 +1,66 @@
+"""The one wait loop of the tools: spin until something is true, a bounded time.
+
+``Graph.wait_for`` (a name to appear, a service to answer), ``Graph.settle`` (discovery to
+complete) and ``action send_goal`` (a goal's answer) all wait here. A goal may run for long,
+so this loop can also:
+
+- stop at once when ``interrupted()`` says Ctrl-C was pressed (``Interrupted``);
+- check every SERVER_CHECK_PERIOD that an action server is still in the graph: a server that
+  crashed or was stopped never answers, and waiting for it would last forever (``ServerLost``).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from typing import TypeVar
+
+from rclpy.action import ActionClient
+from rclpy.executors import Executor
+
+# Waits spin in slices this long at most, so that a Ctrl-C is noticed at once ...
+SPIN_SLICE = 0.1
+# ... and check this often that the action server is still there (it may crash or be stopped).
+SERVER_CHECK_PERIOD = 1.0
+
+T = TypeVar("T")
+
+
+class Interrupted(Exception):
+    """The user pressed Ctrl-C."""
+
+
+class ServerLost(Exception):
+    """The action server went away while we waited for it to answer."""
+
+
+def spin_until(
+    executor: Executor,
+    condition: Callable[[], T],
+    timeout: float = math.inf,
+    *,
+    client: ActionClient | None = None,
+    interrupted: Callable[[], bool] | None = None,
+    period: float = SPIN_SLICE,
+) -> T | None:
+    """Spin until condition() gives something true, and return it; None after timeout seconds.
+
+    Raises Interrupted once interrupted() is true, and ServerLost if a client is given and
+    its action server goes away. ``period``: the longest single spin (how often condition()
+    is asked when nothing arrives).
+    """
+    deadline = time.monotonic() + timeout
+    next_check = time.monotonic() + SERVER_CHECK_PERIOD
+    while not (result := condition()):
+        if interrupted is not None and interrupted():
+            raise Interrupted
+        now = time.monotonic()
+        if now >= deadline:
+            return None
+        if client is not None and now >= next_check:
+            if not client.server_is_ready():
+                raise ServerLost
+            next_check = now + SERVER_CHECK_PERIOD
+        executor.spin_once(timeout_sec=min(period, deadline - now))
+    return result
