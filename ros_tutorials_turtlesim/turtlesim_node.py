@@ -39,6 +39,7 @@ from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rclpy.signals import SignalHandlerOptions
 from rclpy.task import Future
 from std_srvs.srv import Empty, Trigger
 from turtlesim.action import RotateAbsolute
@@ -529,7 +530,10 @@ class TurtlesimNode(Node):
 
 
 def main(argv: list[str] | None = None) -> int:
-    init(argv)
+    # Ctrl-C and SIGTERM are handled here, not by rclpy (whose handler shuts ROS down at once,
+    # racing close()): the node is destroyed and the PNG written while ROS is still up.
+    init(argv, signal_handler_options=SignalHandlerOptions.NO)
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
     executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as turtle1 is up
     node = None
     # kill -USR1 PID: a PNG now (set first: SIGUSR1's default would end the process)
