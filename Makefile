@@ -1,7 +1,7 @@
 # The README's commands. Each target does the set-up it needs, once:
 #   make run    set up if needed, then run the main demo
 #   make test   set up if needed, then ruff and pytest
-#   make setup  only the set-up (venv, install, interface generation)
+#   make setup  only the set-up (venv, install, interface generation, ament index)
 #   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
 #   make interfaces  regenerate the interface packages after a .msg/.srv/.action changed
 #   make test-load  the test suite with every core kept busy (RUNS=3: three runs in a row)
@@ -10,12 +10,15 @@ VENV := .venv
 PY := $(VENV)/bin/python
 INSTALLED := $(VENV)/.installed
 INTERFACES := $(VENV)/.interfaces
+PACKAGES := $(VENV)/.packages
+# A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
+PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config)
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test test-load lint bench clean interfaces
 
-setup: $(INTERFACES)
+setup: $(INTERFACES) $(PACKAGES)
 
 $(INSTALLED): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -25,6 +28,11 @@ $(INSTALLED): pyproject.toml
 
 $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 	$(PY) tools/build_interfaces.py
+	touch $@
+
+# The packages in this environment's ament index (README: "Packages and the ament index").
+$(PACKAGES): $(INTERFACES) $(PACKAGE_SOURCES) tools/register_packages.py
+	$(PY) tools/register_packages.py
 	touch $@
 
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.

@@ -94,8 +94,8 @@ def find_launch_file(names: list[str]) -> Path:
         if not found:
             known = ", ".join(packages.package_dirs())
             raise LaunchError(f"unknown package {package!r}; known packages: {known}")
-        for pkg in found:
-            path = packages.package_dirs()[pkg] / "launch" / name
+        for pkg in found:  # share/PKG/launch/NAME, as `ros2 launch PKG NAME` finds it
+            path = packages.share_directory(pkg) / "launch" / name
             if path.is_file():
                 return path
         have = ", ".join(file.name for pkg in found for file in packages.launch_files(pkg))

@@ -1,7 +1,14 @@
 """The tutorial packages as the launcher sees them: where they are, what they can run.
 
-A package is an importable ``ros_tutorials_*`` package. Its executables are found, never
-listed by hand, so a lesson merged later is picked up with no change here:
+Packages are found the ament way (launcher/ament.py): a package is installed in a prefix of
+AMENT_PREFIX_PATH when the ament index there lists it, and its files are in <prefix>/share/<pkg>/.
+`make setup` registers this project's packages (folders with a package.xml) in this
+environment's index, share/<pkg>/ linking to their package.xml, launch/ and config/
+(tools/register_packages.py). ``share_directory()`` and ``prefix()`` answer `$(find-pkg-share)`
+and `$(find-pkg-prefix)`; ``package_folder()`` answers ROS 1's `rospack find` and `$(find)`.
+
+A tutorial package is one of those whose Python package can be imported. Its executables are
+found, never listed by hand, so a lesson merged later is picked up with no change here:
 - each module of the package that defines a top-level ``main()`` (``publisher``), and
 - each console script whose entry point lives in the package (``topic_publisher``).
 Both run as ``python -m <module>``; this is the one place that decides that: ``command()``
@@ -20,6 +27,8 @@ import pkgutil
 import sys
 from functools import cache
 from pathlib import Path
+
+from launcher import ament
 
 PACKAGE_PREFIX = "ros_tutorials_"
 DISTRIBUTION = "ros-tutorials"
@@ -59,19 +68,20 @@ class UnknownExecutable(LookupError):
     """No such package or executable; str() is one line naming the candidates."""
 
 
+class UnknownPackage(LookupError):
+    """No package of that name in the ament index; str() is one line."""
+
+
 @cache
 def package_dirs() -> dict[str, Path]:
-    """Every importable tutorial package and its directory."""
+    """This project's packages in the ament index, and the folder of each one's Python code."""
     found = {}
-    # sys.path, and the folder this project's packages sit in: an editable install reaches
-    # them through an import hook that sys.path does not show (from any other directory).
-    here = str(Path(__file__).resolve().parent.parent)
-    for module in [*pkgutil.iter_modules(), *pkgutil.iter_modules([here])]:
-        if module.ispkg and module.name.startswith(PACKAGE_PREFIX) and module.name not in found:
-            spec = importlib.util.find_spec(module.name)
+    for name in ament.packages():
+        if name.startswith(PACKAGE_PREFIX):
+            spec = importlib.util.find_spec(name)
             if spec and spec.submodule_search_locations:
-                found[module.name] = Path(next(iter(spec.submodule_search_locations)))
-    return dict(sorted(found.items()))
+                found[name] = Path(next(iter(spec.submodule_search_locations)))
+    return found
 
 
 def _has_main(source_file: Path) -> bool:
@@ -169,9 +179,51 @@ def command(package: str, executable: str) -> list[str]:
     return list(known[name])
 
 
+def ament_package(name: str) -> str:
+    """The package of the ament index a name stands for: itself, or for a seed's name that is
+    not a package here, the one package of this project it stands for (pub_sub -> topic).
+
+    `turtlesim` is a package here (its interfaces keep their real name), so its paths are the
+    interface package's; its executables and launch files are ros_tutorials_turtlesim's.
+    """
+    if name in ament.packages():
+        return name
+    targets = resolve_package(name)
+    if len(targets) == 1:
+        return targets[0]
+    if targets:
+        raise UnknownPackage(f"{name} (a seed's package) stands for {', '.join(targets)}; name one")
+    raise UnknownPackage(
+        f"unknown package {name!r}; known packages: {known_package_names()} "
+        "(`rospack list` shows every package of the ament index)"
+    )
+
+
+def share_directory(name: str) -> Path:
+    """<prefix>/share/<package>: `$(find-pkg-share PKG)`, `ros2 pkg prefix --share PKG`."""
+    return ament.share_directory(ament_package(name))
+
+
+def prefix(name: str) -> Path:
+    """The install prefix of a package: `$(find-pkg-prefix PKG)`, `ros2 pkg prefix PKG`."""
+    return ament.package_prefix(ament_package(name))
+
+
+def package_folder(name: str) -> Path:
+    """The package's own folder, what ROS 1's `rospack find` and `$(find PKG)` answered.
+
+    For a package of this workspace that is its source folder, where the learner edits:
+    share/PKG/package.xml is a link to it, as a symlink install (`colcon build
+    --symlink-install`) makes. For an installed package (std_msgs) it is share/PKG.
+    """
+    share = share_directory(name)
+    manifest = share / "package.xml"
+    return manifest.resolve().parent if manifest.is_symlink() else share
+
+
 def launch_files(package: str) -> list[Path]:
-    """The launch files a package ships in its ``launch/`` folder."""
-    folder = package_dirs()[package] / "launch"
+    """The launch files a package installs in share/PKG/launch/."""
+    folder = ament.share_directory(package) / "launch"
     if not folder.is_dir():
         return []
     return sorted(path for path in folder.iterdir() if path.name.endswith((".launch", ".xml")))

@@ -14,6 +14,7 @@ import os
 import shlex
 import subprocess
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
 
@@ -140,20 +141,23 @@ def _optenv(words: list[str], _context: Context, _element: Element) -> str:
     return os.environ.get(words[0], " ".join(words[1:]))
 
 
-def package_dir(package: str, element: Element) -> Path:
-    found = packages.package_dirs()
-    named = packages.resolve_package(package)  # a seed's name that stands for one package too
-    if len(named) != 1:
-        raise element.error(f"unknown package {package!r}; known: {', '.join(found)}")
-    return found[named[0]]
+def _package_path(locate: Callable[[str], Path], words: list[str], element: Element) -> str:
+    try:
+        return str(locate(words[0]))
+    except LookupError as error:
+        raise element.error(str(error)) from None
 
 
 def _find(words: list[str], _context: Context, element: Element) -> str:
-    return str(package_dir(words[0], element))
+    return _package_path(packages.package_folder, words, element)  # ROS 1: rospack find
+
+
+def _find_share(words: list[str], _context: Context, element: Element) -> str:
+    return _package_path(packages.share_directory, words, element)
 
 
 def _find_prefix(words: list[str], _context: Context, element: Element) -> str:
-    return str(package_dir(words[0], element).parent)
+    return _package_path(packages.prefix, words, element)
 
 
 def _dirname(_words: list[str], context: Context, _element: Element) -> str:
@@ -252,7 +256,7 @@ ROS1 = {
 ROS2 = {
     "var": (_arg, range(1, 2)),
     "env": (_env, range(1, 3)),
-    "find-pkg-share": (_find, range(1, 2)),
+    "find-pkg-share": (_find_share, range(1, 2)),
     "find-pkg-prefix": (_find_prefix, range(1, 2)),
     "dirname": (_dirname, range(0, 1)),
     "anon": (_anon, range(1, 2)),

@@ -37,6 +37,7 @@ from pathlib import Path
 from typing import IO
 
 from launcher import LaunchError
+from launcher.ament import apply_ament_defaults
 from launcher.plan import ProcessSpec
 from ros_tutorials_common.dds import apply_dds_defaults
 
@@ -225,6 +226,7 @@ class Supervisor:
         env["PYTHONUNBUFFERED"] = "1"  # output appears as it is written, not at exit
         env["ROS_LOG_DIR"] = str(self.log_dir)  # the nodes' own log files go here too
         apply_dds_defaults(env)
+        apply_ament_defaults(env)  # a node that looks up a package finds what the launcher found
         child.process = subprocess.Popen(
             spec.command,
             stdin=subprocess.DEVNULL,

@@ -1,18 +1,17 @@
 """Interface type names: 'pkg/msg/Name' (ROS 2), 'pkg/Name' (ROS 1), and where they live.
 
-Types are found the way ROS 2 finds them: the ament resource index lists, per package,
-the interface files it installed (share/ament_index/resource_index/rosidl_interfaces/PKG),
-the definitions are in share/PKG/{msg,srv,action}/, and the Python classes are imported
-from PKG.msg, PKG.srv, PKG.action.
+Types are found the way ROS 2 finds them, through ament_index_python (launcher/ament.py):
+the ament resource index lists, per package, the interface files it installed (the resource
+rosidl_interfaces/PKG), the definitions are in the package's share/PKG/{msg,srv,action}/, and
+the Python classes are imported from PKG.msg, PKG.srv, PKG.action.
 """
 
 from __future__ import annotations
 
 import importlib
-import os
-import sys
 from pathlib import Path
 
+from launcher import ament
 from launcher.packages import PACKAGE_ALIASES
 from rostool.errors import ToolError
 
@@ -24,25 +23,15 @@ KINDS = ("msg", "srv", "action")
 KIND_NAMES = {"msg": "message", "srv": "service", "action": "action"}
 
 
-def prefixes() -> list[Path]:
-    """Install prefixes to search: AMENT_PREFIX_PATH if set, and this environment's prefix."""
-    paths = [Path(p) for p in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
-    return [*paths, Path(sys.prefix)]
-
-
 def interface_index() -> dict[str, list[str]]:
     """{package: ['msg/Num', 'srv/AddTwoInts', ...]} for every package in the index."""
     index: dict[str, list[str]] = {}
-    for prefix in prefixes():
-        folder = prefix / "share" / "ament_index" / "resource_index" / "rosidl_interfaces"
-        if not folder.is_dir():
-            continue
-        for entry in sorted(folder.iterdir()):
-            names = index.setdefault(entry.name, [])
-            for line in entry.read_text().splitlines():
-                stem, _, extension = line.strip().rpartition(".")
-                if extension in KINDS and stem not in names:
-                    names.append(stem)
+    for package in ament.resources("rosidl_interfaces"):
+        names = index[package] = []
+        for line in ament.resource("rosidl_interfaces", package).splitlines():
+            stem, _, extension = line.strip().rpartition(".")
+            if extension in KINDS and stem not in names:
+                names.append(stem)
     return index
 
 
@@ -100,8 +89,10 @@ def full_type_name(cls: type) -> str:
 
 
 def definition_path(package: str, kind: str, base: str) -> Path:
-    for prefix in prefixes():
-        path = prefix / "share" / package / kind / f"{base}.{kind}"
-        if path.is_file():
-            return path
-    raise ToolError(f"no definition file for {package}/{kind}/{base}")
+    try:
+        path = ament.share_directory(package) / kind / f"{base}.{kind}"
+    except LookupError:
+        path = None
+    if path is None or not path.is_file():
+        raise ToolError(f"no definition file for {package}/{kind}/{base}")
+    return path
