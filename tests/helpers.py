@@ -10,14 +10,37 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 import pytest
 from rclpy.executors import Executor
 
 TIMEOUT = 30.0
+BIN = Path(sys.executable).parent
+
+
+def script(name: str) -> str:
+    """A console script of this project, as the learner types it (run by this interpreter)."""
+    return str(BIN / name)
+
+
+def finished(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+    """Run a console script to its end, from a folder other than the project's."""
+    try:
+        return subprocess.run(
+            [sys.executable, script(args[0]), *args[1:]],
+            capture_output=True,
+            text=True,
+            timeout=TIMEOUT,
+            cwd=tempfile.gettempdir(),
+            env=env,
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
 
 
 def spin_until(

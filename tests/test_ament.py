@@ -8,11 +8,10 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT
+from helpers import TIMEOUT, finished
 
 from launcher import LaunchError, ament, packages
 from launcher.plan import make_plan
@@ -29,18 +28,7 @@ def run_tool(args: list[str], ament_prefix_path: str | None) -> subprocess.Compl
     env.pop(ament.PREFIX_PATH, None)
     if ament_prefix_path is not None:
         env[ament.PREFIX_PATH] = ament_prefix_path
-    command = [sys.executable, str(Path(sys.executable).parent / args[0]), *args[1:]]
-    try:
-        return subprocess.run(
-            command,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=TIMEOUT,
-            cwd=tempfile.gettempdir(),
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
+    return finished(*args, env=env)
 
 
 def test_this_environment_is_the_default_prefix_and_comes_after_the_users():

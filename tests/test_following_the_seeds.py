@@ -5,38 +5,14 @@ nodes (AandB, Num, UserRecord) as real processes checked by their log lines.
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
-import tempfile
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT
+from helpers import finished, script
 
 from launcher import packages
 from rostool.errors import ToolError
 from rostool.run import translate_arguments
-
-BIN = Path(sys.executable).parent
-
-
-def script(name: str) -> str:
-    """A console script of this project, as the learner types it (run by this interpreter)."""
-    return str(BIN / name)
-
-
-def finished(*args: str) -> subprocess.CompletedProcess:
-    """Run a console script to its end, from a folder other than the project's."""
-    try:
-        return subprocess.run(
-            [sys.executable, script(args[0]), *args[1:]],
-            capture_output=True,
-            text=True,
-            timeout=TIMEOUT,
-            cwd=tempfile.gettempdir(),
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
 
 
 def count(lines: list[str], text: str) -> int:
