@@ -152,3 +152,17 @@ def test_register_packages_writes_the_index_and_removes_what_it_registered_befor
     assert not gone.exists() and (tmp_path / "share" / "other" / "package.xml").is_file()
     launch = tmp_path / "share" / "ros_tutorials_topic" / "launch"
     assert launch.is_symlink() and (launch / "union.launch").is_file()
+
+
+def test_the_launcher_passes_the_prefix_path_on_to_its_processes(tmp_path, node_process):
+    show = tmp_path / "show.py"
+    show.write_text("import os\nprint('AMENT_PREFIX_PATH=' + os.environ['AMENT_PREFIX_PATH'])\n")
+    launch = tmp_path / "show.launch.xml"
+    launch.write_text(
+        f'<launch><executable cmd="{sys.executable} {show}" name="show" output="screen"/></launch>'
+    )
+    launcher = node_process("-m", "launcher", str(launch), env={"AMENT_PREFIX_PATH": str(tmp_path)})
+    expected = f"AMENT_PREFIX_PATH={tmp_path}{os.pathsep}{sys.prefix}"  # the user's, then here
+    launcher.wait_for_output(
+        lambda lines: any(line.endswith(expected) for line in lines), what=f"'{expected}'"
+    )
