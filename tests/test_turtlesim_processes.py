@@ -213,6 +213,7 @@ class Terminal:
             stdout=self.terminal,
             stderr=self.terminal,
             preexec_fn=own_terminal,
+            env={**os.environ, "PYTHONFAULTHANDLER": "1"},  # a crash says where
         )
         self.output = b""
         self.hung_up = threading.Event()
@@ -326,7 +327,7 @@ def test_teleop_key_restores_the_terminal_on_ctrl_c(teleop):
     teleop.wait_for("'Q' to quit.")
     assert not teleop.line_mode()
     teleop.type("\x03")  # Ctrl-C through the terminal
-    assert teleop.wait() == 0
+    assert teleop.wait() == 0, teleop.output.decode(errors="replace")
     assert teleop.line_mode(), "the terminal was not restored"
     assert b"Traceback" not in teleop.output
 
