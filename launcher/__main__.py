@@ -1,6 +1,7 @@
 """The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
 
-# ruff: noqa: E402 - the imports follow the SIGINT handler: a Ctrl-C during them must be quiet
+# ruff: noqa: E402 - the imports follow the SIGINT handler (a Ctrl-C during them must be
+# quiet) and the guardian's fork (it should be cheap, before the launcher's own imports)
 
 from __future__ import annotations
 
@@ -16,13 +17,16 @@ def _interrupted_before_start(signum: int, _frame: object) -> None:
 
 if __name__ == "__main__":
     signal.signal(signal.SIGINT, _interrupted_before_start)
+    from launcher import guardian
+
+    guardian.guard()  # this process stands guard; the launcher goes on in a child
 
 import argparse
 import sys
 import traceback
 from pathlib import Path
 
-from launcher import LaunchError, packages
+from launcher import LaunchError, guardian, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds
@@ -155,6 +159,8 @@ def format_args(infos: list[ArgInfo]) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
+    if argv is None:  # the program itself (roslaunch); python -m launcher has already forked
+        guardian.guard()
     options = build_parser().parse_intermixed_args(argv)
     try:
         names, args = split_words(options.words)
