@@ -18,7 +18,7 @@ import uuid
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT, NodeProcess
+from helpers import TIMEOUT
 
 SPAWNER = """
 import signal, subprocess, sys, time
@@ -140,7 +140,7 @@ def test_ctrl_c_in_a_terminal_reaches_the_launcher_once(launch):
 def test_exit_code_and_output_pass_through_the_guardian(node_process, tmp_path):
     path = tmp_path / "fail.launch.xml"
     path.write_text(
-        f'<launch><executable cmd="{sys.executable} -c \'print(7); raise SystemExit(3)\'" '
+        f"<launch><executable cmd=\"{sys.executable} -c 'print(7); raise SystemExit(3)'\" "
         'name="fail" output="screen"/></launch>\n'
     )
     launcher = node_process("-m", "launcher", str(path))
