@@ -1,7 +1,6 @@
 """The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
 
-# ruff: noqa: E402 - the imports follow the SIGINT handler (a Ctrl-C during them must be
-# quiet) and the guardian's fork (it should be cheap, before the launcher's own imports)
+# ruff: noqa: E402 - the imports follow the SIGINT handler: a Ctrl-C during them must be quiet
 
 from __future__ import annotations
 
@@ -17,9 +16,6 @@ def _interrupted_before_start(signum: int, _frame: object) -> None:
 
 if __name__ == "__main__":
     signal.signal(signal.SIGINT, _interrupted_before_start)
-    from launcher import guardian
-
-    guardian.guard()  # this process stands guard; the launcher goes on in a child
 
 import argparse
 import sys
@@ -159,8 +155,6 @@ def format_args(infos: list[ArgInfo]) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    if argv is None:  # the program itself (roslaunch); python -m launcher has already forked
-        guardian.guard()
     options = build_parser().parse_intermixed_args(argv)
     try:
         names, args = split_words(options.words)
@@ -190,6 +184,8 @@ def main(argv: list[str] | None = None) -> int:
     except LaunchError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
+    if argv is None:  # the program itself: from here on this process is the launcher's
+        guardian.guard()  # guardian, and the launcher goes on in a child
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)
     return Supervisor(specs, log_dir, options.debug).run()

@@ -1,8 +1,9 @@
 """The launcher's guardian: the process the user started stands over the launcher.
 
-``python -m launcher`` (and ``roslaunch``) fork before anything else. The child goes on to be
-the launcher; the original process, the PID the shell, a test or a service manager sees,
-becomes its guardian and does nothing but this:
+``python -m launcher`` (and ``roslaunch``) fork once the launch is planned and its log folder
+made, just before the first process starts (``--print``, ``--show-args`` and errors never
+fork). The child goes on to be the launcher; the original process, the PID the shell, a test
+or a service manager sees, becomes its guardian and does nothing but this:
 
 - it is a child subreaper (Linux ``PR_SET_CHILD_SUBREAPER``): whatever loses its parent below
   it and has no closer subreaper comes to it, not to init. The launcher is one too while it
@@ -18,13 +19,13 @@ becomes its guardian and does nothing but this:
   (after a normal end there is none), reaps them, and ends as the launcher did: with its exit
   code, or killed by the same signal.
 
-Not covered: SIGKILL to the guardian and the launcher at the same moment (``kill -9`` of both,
-the OOM killer, a cgroup kill). The launcher's children still die (PDEATHSIG) and the
+Not covered: SIGKILL to the guardian and the launcher at the same moment (``kill -9`` naming
+both, ``pkill -9 -f launcher``). The launcher's children still die (PDEATHSIG) and the
 launcher's group keeper kills what they left in their process groups, but a grandchild that
 called setsid while its parent was alive is then no one's to stop.
 
-Only the standard library modules that Python has loaded anyway (and ctypes) are used, so
-the fork is cheap: it happens before the launcher imports anything of its own.
+The fork costs about a millisecond; the two processes share the interpreter's memory until
+one of them writes to it, and the guardian writes almost nothing.
 """
 
 from __future__ import annotations
