@@ -24,14 +24,15 @@ both, ``pkill -9 -f launcher``). The launcher's children still die (PDEATHSIG) a
 launcher's group keeper kills what they left in their process groups, but a grandchild that
 called setsid while its parent was alive is then no one's to stop.
 
-The fork costs about a millisecond; the two processes share the interpreter's memory until
-one of them writes to it, and the guardian writes almost nothing.
+The fork costs about a millisecond of CPU; the two processes share the interpreter's memory
+until one of them writes to it, and the guardian writes almost nothing.
 """
 
 from __future__ import annotations
 
 import contextlib
 import ctypes
+import gc
 import os
 import signal
 import sys
@@ -73,6 +74,10 @@ def guard() -> None:
     # Blocked from before the fork: no signal is lost or handled twice in between.
     inherited_mask = signal.pthread_sigmask(signal.SIG_BLOCK, WAITED_FOR)
     inherited_sigchld = signal.signal(signal.SIGCHLD, signal.SIG_DFL)  # SIG_IGN would auto-reap
+    # The two processes share the interpreter's memory until one writes to a page. Frozen,
+    # the objects made so far are never walked by the launcher's garbage collector, whose
+    # first full pass would otherwise copy most of those pages (about 7 ms of CPU, measured).
+    gc.freeze()
     try:
         pid = os.fork()
     except OSError:  # no fork possible: run the launcher unguarded, as before

@@ -72,7 +72,8 @@ def launch(node_process, tmp_path):
     path = tmp_path / f"{marker}.launch.xml"
     path.write_text(
         f'<launch><executable cmd="{sys.executable} {spawner} {marker}" name="spawner" '
-        'output="screen"/></launch>\n'
+        # A long sigterm_timeout: SIGTERM after SIGINT comes only from a second SIGINT (hurry).
+        'output="screen" sigterm_timeout="120"/></launch>\n'
     )
     launcher = node_process("-m", "launcher", str(path))
     try:
