@@ -78,8 +78,11 @@ def launch(node_process, tmp_path):
     launcher = node_process("-m", "launcher", str(path))
     try:
         lines = launcher.wait_for_output(
-            lambda lines: any(line.startswith("[spawner] grandchild ") for line in lines),
-            what="the spawner's grandchild",
+            lambda lines: (
+                any(line.startswith("[spawner] grandchild ") for line in lines)
+                and any("started spawner (pid" in line for line in lines)
+            ),
+            what="the spawner and its grandchild",
         )
         grandchild = int(next(line for line in lines if "] grandchild " in line).split()[-1])
         node = int(next(line for line in lines if "started spawner (pid" in line).split()[-1][:-1])
