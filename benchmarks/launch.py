@@ -35,6 +35,26 @@ def descendants(pid: int) -> set[int]:
     return found
 
 
+def launcher_pid(started: int) -> int:
+    """The launcher itself: the one child of the process started, which is its guardian."""
+    children = [pid for pid in descendants(started) if _parent(pid) == started]
+    if len(children) != 1:
+        raise RuntimeError(f"expected the launcher as the one child of {started}: {children}")
+    return children[0]
+
+
+def _parent(pid: int) -> int:
+    with open(f"/proc/{pid}/stat") as stat:
+        return int(stat.read().rsplit(")", 1)[1].split()[1])
+
+
+def private_mib(pid: int) -> float:
+    """Memory of a process's own (not shared with its parent or children), in MiB."""
+    with open(f"/proc/{pid}/smaps_rollup") as rollup:
+        fields = dict(line.split(":", 1) for line in rollup if line.startswith("Private_"))
+    return sum(int(value.split()[0]) for value in fields.values()) / 1024
+
+
 def alive(pid: int) -> bool:
     try:
         with open(f"/proc/{pid}/stat") as stat:
@@ -74,7 +94,8 @@ def _kill_leftovers(proc: subprocess.Popen) -> None:
 def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
     """Start, wait until both subscribers heard their group, Ctrl-C, wait until all are gone.
 
-    Returns (seconds to ready, seconds from Ctrl-C to every process gone, launcher RSS MiB).
+    Returns (seconds to ready, seconds from Ctrl-C to every process gone, launcher RSS MiB,
+    its guardian's private memory MiB); for the shell script, its RSS and private memory.
     """
     seen: set[str] = set()
 
@@ -88,8 +109,9 @@ def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
         if not wait_for_lines(proc, both_ready, timeout=120):
             raise RuntimeError(f"{args} never got both groups talking")
         ready = time.monotonic() - began
-        rss = peak_rss_mib(proc.pid)
-        return ready, _ctrl_c_until_all_gone(proc), rss
+        inner = launcher_pid(proc.pid) if "launcher" in args else proc.pid
+        rss, guardian_private = peak_rss_mib(inner), private_mib(proc.pid)
+        return ready, _ctrl_c_until_all_gone(proc), rss, guardian_private
     finally:
         _kill_leftovers(proc)
 
@@ -97,7 +119,7 @@ def _ready_then_stop(args: list[str]) -> tuple[float, float, float]:
 def launch_and_shutdown(rounds: int = 10) -> list[Row]:
     launcher = python("-m", "launcher", "union.launch")
     shell = ["sh", str(HERE / "union.sh")]
-    results: dict[str, list[tuple[float, float, float]]] = {"launcher": [], "shell": []}
+    results: dict[str, list[tuple[float, float, float, float]]] = {"launcher": [], "shell": []}
     stuck = {"launcher": 0, "shell": 0}
     for _ in range(rounds):  # interleaved, so machine load hits both alike
         for kind, args in (("launcher", launcher), ("shell", shell)):
@@ -110,6 +132,7 @@ def launch_and_shutdown(rounds: int = 10) -> list[Row]:
     down = {k: [r[1] for r in v] for k, v in results.items()}
     ratio = p50(ready["launcher"]) / p50(ready["shell"])
     rss = max(r[2] for r in results["launcher"])
+    guardian_private = max(r[3] for r in results["launcher"])
     return [
         Row(
             f"union.launch to both groups talking, p50/p99 of {rounds}",
@@ -129,6 +152,10 @@ def launch_and_shutdown(rounds: int = 10) -> list[Row]:
             p99(down["launcher"]) <= 1.0,
         ),
         Row("peak RSS, the launcher process (union.launch)", f"{rss:.0f} MiB"),
+        Row(
+            "memory of the launcher's guardian process not shared with the launcher",
+            f"{guardian_private:.1f} MiB",
+        ),
     ]
 
 

@@ -22,7 +22,7 @@ import sys
 import traceback
 from pathlib import Path
 
-from launcher import LaunchError, packages
+from launcher import LaunchError, guardian, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds
@@ -184,6 +184,8 @@ def main(argv: list[str] | None = None) -> int:
     except LaunchError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
+    if argv is None:  # the program itself: from here on this process is the launcher's
+        guardian.guard()  # guardian, and the launcher goes on in a child
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)
     return Supervisor(specs, log_dir, options.debug).run()

@@ -1,15 +1,19 @@
 """Supervise: start the planned processes, show their output, respawn them, shut them down.
 
 How nothing is left behind:
+- the launcher runs under its guardian (launcher/guardian.py), the process the user started:
+  it passes signals on, is a child subreaper above the launcher, and when the launcher has
+  ended, however, it kills whatever is still below it. If the guardian is killed, the
+  launcher gets SIGTERM (``PR_SET_PDEATHSIG``) and kills everything at once (``abandoned``);
 - each child runs in its own process group (``start_new_session``), so a signal to the group
-  reaches the grandchildren too, and a Ctrl-C in the terminal reaches only the launcher, which
-  then stops the children in order: SIGINT, after ``sigterm_timeout`` SIGTERM, after
-  ``sigkill_timeout`` SIGKILL;
+  reaches the grandchildren too; Ctrl-C or SIGTERM makes the launcher stop the children in
+  order: SIGINT, after ``sigterm_timeout`` SIGTERM, after ``sigkill_timeout`` SIGKILL;
 - each child asks the kernel to SIGKILL it when the launcher dies (``PR_SET_PDEATHSIG``), even
   if the launcher is SIGKILLed and can do nothing. The kernel ties this to the *thread* that
   forked, so every child is started from the main thread;
-- a tiny guardian process, forked before anything else, kills the process groups the launcher
-  leaves behind if it dies, which covers the grandchildren PDEATHSIG does not reach;
+- a tiny group keeper process, forked before the first child, kills the process groups the
+  launcher leaves behind if it dies, which covers the grandchildren PDEATHSIG does not reach
+  even when the guardian dies at the same moment;
 - when a child exits, whatever it left in its process group is killed before it is reaped;
 - the launcher is a child subreaper (``PR_SET_CHILD_SUBREAPER``): a grandchild that left its
   process group (``setsid``) is adopted by the launcher, not by init, when its parent dies,
@@ -36,7 +40,7 @@ import time
 from pathlib import Path
 from typing import IO
 
-from launcher import LaunchError
+from launcher import LaunchError, guardian
 from launcher.ament import apply_ament_defaults
 from launcher.plan import ProcessSpec
 from ros_tutorials_common.dds import apply_dds_defaults
@@ -91,8 +95,8 @@ def _describe(code: int) -> str:
     return f"died with exit code {code}"
 
 
-class Guardian:
-    """A helper process that kills what the launcher leaves behind if the launcher dies.
+class GroupKeeper:
+    """A helper process that kills the process groups the launcher leaves if it dies.
 
     The launcher tells it which process groups are alive through a pipe. When the pipe
     closes (the launcher exited, crashed or was SIGKILLed), it kills the groups still listed.
@@ -123,7 +127,7 @@ class Guardian:
             os._exit(0)
 
     def _tell(self, message: str) -> None:
-        with contextlib.suppress(OSError):  # the guardian is gone; PDEATHSIG still protects
+        with contextlib.suppress(OSError):  # the keeper is gone; PDEATHSIG still protects
             os.write(self._write_end, message.encode())
 
     def watch(self, pgid: int) -> None:
@@ -161,6 +165,7 @@ class Supervisor:
         self.output_lock = threading.Lock()
         self.stop_signal: int | None = None
         self.hurry = False  # another signal arrived while shutting down
+        self.abandoned = False  # the guardian was killed: kill everything, at once
         self.ending = False  # a required process exited
         self.failed = False
 
@@ -179,7 +184,7 @@ class Supervisor:
         # Orphaned descendants (a grandchild that called setsid) come to us, not to init.
         _libc.prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
         self.adopted: set[int] = set()
-        self.guardian = Guardian()
+        self.keeper = GroupKeeper()
         try:
             self.say(f"logging to {self.log_dir}")
             try:
@@ -194,7 +199,7 @@ class Supervisor:
             self.shutdown()
             self.stop_adopted()
         finally:
-            self.guardian.close()
+            self.keeper.close()
             for sig, handler in previous.items():
                 signal.signal(sig, handler)
         if self.stop_signal is not None:
@@ -202,6 +207,8 @@ class Supervisor:
         return 1 if self.failed else 0
 
     def _on_signal(self, signum: int, _frame: object) -> None:
+        if guardian.abandoned():  # its death sent this SIGTERM: end as abruptly as it did
+            self.abandoned = self.hurry = True
         if self.stop_signal is None:
             self.stop_signal = signum
         else:
@@ -212,6 +219,7 @@ class Supervisor:
         # when other threads hold locks at fork time (the output readers run meanwhile); this
         # one only makes a prctl call resolved before the fork, and takes no Python-level lock.
         _libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        _libc.signal(signal.SIGTTOU, 0)  # SIG_DFL again: the guardian made the launcher ignore it
         if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
             os.kill(os.getpid(), signal.SIGKILL)
 
@@ -237,7 +245,7 @@ class Supervisor:
             start_new_session=True,
             preexec_fn=self._die_with_launcher,
         )
-        self.guardian.watch(child.process.pid)
+        self.keeper.watch(child.process.pid)
         child.started_at, child.restart_at = time.monotonic(), None
         # As roslaunch: stderr (where ROS 2 logging writes) always reaches the screen,
         # stdout only with output="screen"; the log file gets both.
@@ -309,7 +317,7 @@ class Supervisor:
     def _find_adopted(self) -> set[int]:
         """Processes the kernel gave us as subreaper: our children that we did not start."""
         ours = {c.process.pid for c in self.children if c.process is not None}
-        ours.add(self.guardian.pid)
+        ours.add(self.keeper.pid)
         me, found = os.getpid(), set()
         for entry in os.scandir("/proc"):
             if not entry.name.isdigit() or int(entry.name) in ours:
@@ -331,13 +339,13 @@ class Supervisor:
                 done = pid
             if done:
                 self.adopted.discard(pid)
-                self.guardian.forget(pid)
+                self.keeper.forget(pid)
 
     def note_adopted(self) -> None:
-        """Record newly adopted processes (the guardian kills them if we die); reap exited ones."""
+        """Record newly adopted processes (the keeper kills them if we die); reap exited ones."""
         for pid in self._find_adopted() - self.adopted:
             self.adopted.add(pid)
-            self.guardian.watch(pid)  # a setsid process leads its own group: killpg reaches it
+            self.keeper.watch(pid)  # a setsid process leads its own group: killpg reaches it
         self._reap_adopted()
 
     def stop_adopted(self) -> None:
@@ -350,7 +358,7 @@ class Supervisor:
             if not told:
                 self.say(f"stopping {len(self.adopted)} process(es) that left their group")
                 told = True
-            if time.monotonic() >= deadline or self.hurry:
+            if time.monotonic() >= deadline or self.hurry or self.abandoned:
                 sig = signal.SIGKILL
             if time.monotonic() >= deadline + ADOPTED_STOP_SECONDS:  # unkillable (state D)
                 self.say(f"still running after SIGKILL: pid(s) {sorted(self.adopted)}")
@@ -365,7 +373,7 @@ class Supervisor:
         pid = child.process.pid
         _kill_group(pid, signal.SIGKILL)  # what it left running in its group
         code = child.process.wait()
-        self.guardian.forget(pid)
+        self.keeper.forget(pid)
         for reader in child.readers:
             reader.join(timeout=2.0)  # print its last lines before saying it exited
         child.process = None
@@ -441,7 +449,9 @@ class Supervisor:
         """Send the next signal of SIGINT -> SIGTERM -> SIGKILL to the child's group."""
         assert child.process is not None
         spec, now = child.spec, time.monotonic()
-        if child.stage == 0:
+        if self.abandoned:
+            child.stage, child.deadline = signal.SIGKILL, float("inf")
+        elif child.stage == 0:
             child.stage, child.deadline = signal.SIGINT, now + spec.sigterm_timeout
         elif child.stage == signal.SIGINT:
             self.say(f"{spec.label} still running after SIGINT: sending SIGTERM")
