@@ -21,7 +21,7 @@ from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 
 SIDE = 2.0  # m
 FORWARD, STOP_FORWARD, TURN, STOP_TURN = "forward", "stop_forward", "turn", "stop_turn"

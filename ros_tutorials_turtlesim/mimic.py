@@ -23,7 +23,7 @@ from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.msg import Pose
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 
 
 class Mimic(Node):

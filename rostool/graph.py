@@ -40,7 +40,7 @@ from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from rclpy.signals import SignalHandlerOptions
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 from rostool.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
 from rostool.errors import ToolError
 from rostool.wait import spin_until

@@ -14,11 +14,11 @@ from typing import Any
 import yaml
 from rclpy.duration import Duration
 from rclpy.executors import ExternalShutdownException
-from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile
 
 from ros_tutorials_common.cli import positive_int, positive_rate
+from ros_tutorials_common.ros import RCLError
 from rostool.errors import ToolError
 from rostool.graph import Graph, absolute_name, print_names, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
@@ -187,7 +187,7 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
 def _publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
     try:
         publisher.publish(msg)
-    except _rclpy.RCLError:
+    except RCLError:
         # SIGTERM shut ROS down between two spins (at -r 1e9 the loop never spins): that is
         # the end of the command, as it is when a spin notices it, not an error.
         if not graph.node.context.ok():

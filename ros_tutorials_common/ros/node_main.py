@@ -6,10 +6,10 @@ A lesson's main() reads::
     rclpy.init(args=ros_args(args))
 
 ``ros_args`` applies this project's DDS defaults (they must be set before rclpy.init, see
-dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends the program with one
-clear line and exit status 1 instead of a traceback from rclpy.init. ``user_args`` is the
-command line without the ROS arguments, for argparse. ``init`` does both steps at once for
-the tools (rostool, benchmarks), where rclpy.init is not the lesson.
+ros_tutorials_common/dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends
+the program with one clear line and exit status 1 instead of a traceback from rclpy.init.
+``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
+steps at once for the tools (rostool, benchmarks), where rclpy.init is not the lesson.
 """
 
 from __future__ import annotations
@@ -18,11 +18,18 @@ import sys
 from collections.abc import Sequence
 
 import rclpy
+
+# The project's one import of a private rclpy module, for RCLError: the error rcl raises
+# (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports it nowhere public
+# (not in rclpy.exceptions; rclpy's own modules import it from here too), so the rest of the
+# project takes it from ros_tutorials_common.ros.
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.signals import SignalHandlerOptions
 from rclpy.utilities import remove_ros_args
 
 from ros_tutorials_common.dds import apply_dds_defaults
+
+RCLError = _rclpy.RCLError
 
 
 def user_args(argv: Sequence[str] | None = None) -> list[str]:
@@ -31,7 +38,7 @@ def user_args(argv: Sequence[str] | None = None) -> list[str]:
     argv = sys.argv if argv is None else argv
     try:
         return remove_ros_args(args=list(argv))[1:]
-    except _rclpy.RCLError as error:
+    except RCLError as error:
         reason = str(error).split(", at ")[0]  # rcl appends its source file and line
         raise SystemExit(f"error: invalid ROS arguments: {reason}") from None
 
