@@ -20,7 +20,7 @@ from rclpy.qos import DurabilityPolicy, QoSProfile
 from ros_tutorials_common.cli import positive_int, positive_rate
 from ros_tutorials_common.ros import RCLError
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name, print_names, until_stopped
+from rostool.graph import Graph, absolute_name, add_list_and_type, print_names, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
 from rostool.qos import AdaptiveSubscription
 from rostool.qos import compatible_qos as compatible_qos  # moved to qos.py; kept importable
@@ -268,9 +268,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     parser = verbs.add_parser("topic", help="topics: list, echo, pub, hz, bw, info, type, find")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the topics in the graph")
-    p.add_argument("-t", "--show-types", action="store_true", help="show each topic's type")
-    p.set_defaults(run=lambda graph, a: list_topics(graph, a.show_types))
+    add_list_and_type(sub, common, "topic", list_topics, print_type)
 
     p = sub.add_parser("echo", parents=[common], help="print the messages on a topic")
     p.add_argument("topic")
@@ -304,10 +302,6 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("topic")
     p.add_argument("-v", "--verbose", action="store_true", help="list the endpoints")
     p.set_defaults(run=lambda graph, a: info(graph, a.topic, a.verbose))
-
-    p = sub.add_parser("type", parents=[common], help="print the message type of a topic")
-    p.add_argument("topic")
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.topic))
 
     p = sub.add_parser("find", parents=[common], help="list the topics of a message type")
     p.add_argument("type")

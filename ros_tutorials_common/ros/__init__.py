@@ -8,6 +8,6 @@ A lesson's main() reads::
     rclpy.init(args=ros_args(args))
 """
 
-from ros_tutorials_common.ros.node_main import RCLError, init, ros_args, user_args
+from ros_tutorials_common.ros.node_main import RCLError, init, ros_args, run_node, user_args
 
-__all__ = ["RCLError", "init", "ros_args", "user_args"]
+__all__ = ["RCLError", "init", "ros_args", "run_node", "user_args"]

@@ -15,20 +15,21 @@ steps at once for the tools (rostool, benchmarks), where rclpy.init is not the l
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import rclpy
-
-# The project's one import of a private rclpy module, for RCLError: the error rcl raises
-# (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports it nowhere public
-# (not in rclpy.exceptions; rclpy's own modules import it from here too), so the rest of the
-# project takes it from ros_tutorials_common.ros.
-from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
+from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 from rclpy.utilities import remove_ros_args
 
 from ros_tutorials_common.dds import apply_dds_defaults
 
+# The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
+# it nowhere public (not in rclpy.exceptions; rclpy's own modules take it from the private
+# rclpy.impl.implementation_singleton too), so this is the project's one import of a private
+# rclpy module: everything else takes RCLError from ros_tutorials_common.ros.
 RCLError = _rclpy.RCLError
 
 
@@ -58,3 +59,21 @@ def init(
 ) -> None:
     """rclpy.init with the DDS defaults and checked ROS arguments (for the tools)."""
     rclpy.init(args=ros_args(argv), signal_handler_options=signal_handler_options)
+
+
+def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -> int:
+    """A program that is one node (turtlesim's mimic, draw_square): ``init``, make the node,
+    spin it until Ctrl-C or shutdown, destroy it, shut ROS down; the exit status, 0."""
+    init(argv)
+    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
+    node = None
+    try:
+        node = make_node()
+        rclpy.spin(node, executor)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return 0
