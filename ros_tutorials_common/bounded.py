@@ -9,7 +9,8 @@ instead of eating the machine's memory:
 - a YAML document: at most MAX_YAML_ALIASES aliases (``*name``), at most MAX_YAML_NODES
   values once every alias is expanded, nesting at most MAX_YAML_DEPTH deep;
 - a parameter value: what a ROS parameter can hold (bool, int64, float, string, a flat list
-  of one of those), under string keys.
+  of one of those), under string keys; a params file: node names mapping to
+  ``ros__parameters`` (read_params_file).
 
 Nothing here imports rclpy: the launcher uses it and stays light.
 """
@@ -152,6 +153,31 @@ def load_yaml(text: str, source: str = "YAML") -> Any:
 def load_yaml_file(path: str | os.PathLike) -> Any:
     """A YAML file, read and parsed within the limits."""
     return load_yaml(read_text(path), str(path))
+
+
+def read_params_file(path: str | os.PathLike) -> tuple[str, dict[str, Any]]:
+    """A ROS 2 params file (``node: {ros__parameters: {...}}``), read within the limits and
+    checked before anything uses it: its text (exactly what was checked) and its mapping.
+
+    A node name that is not text, an entry without a ``ros__parameters`` mapping, or a value
+    no ROS parameter can hold is an InputError naming the file.
+    """
+    text = read_text(path)
+    try:
+        data = load_yaml(text, str(path))
+    except yaml.YAMLError as error:
+        raise InputError(f"{path} is not valid YAML: {' '.join(str(error).split())}") from None
+    if not isinstance(data, dict):
+        raise InputError(f"{path} is not a params file (expected 'node: ros__parameters: ...')")
+    for key, entry in data.items():
+        if not isinstance(key, str):
+            raise InputError(f"{path}: node name {key!r} is not a string")
+        if not isinstance(entry, dict) or not isinstance(entry.get("ros__parameters"), dict):
+            raise InputError(f"{path}: '{key}' has no 'ros__parameters:' mapping")
+        problem = parameters_problem(entry["ros__parameters"])
+        if problem:
+            raise InputError(f"{path}: {problem}")
+    return text, data
 
 
 def parameter_problem(name: str, value: Any) -> str | None:

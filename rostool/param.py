@@ -33,13 +33,7 @@ from rclpy.parameter import Parameter, parameter_dict_from_yaml_file, parameter_
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from ros_tutorials_common.bounded import (
-    InputError,
-    load_yaml,
-    parameter_problem,
-    parameters_problem,
-    read_text,
-)
+from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 from rostool.errors import ToolError
 from rostool.graph import Graph
 from rostool.messages import parse_yaml
@@ -176,23 +170,9 @@ class ParamsFile:
     def __init__(self, path: str) -> None:
         self.path = path
         try:
-            self.text = read_text(path)  # at most 1 MiB of UTF-8
-            data = load_yaml(self.text, path)  # bounded aliases and depth
+            self.text, self.data = read_params_file(path)  # within the limits, and checked
         except InputError as error:
             raise ToolError(str(error)) from None
-        except yaml.YAMLError as error:
-            raise ToolError(f"{path} is not valid YAML: {str(error).splitlines()[0]}") from None
-        if not isinstance(data, dict):
-            raise ToolError(
-                f"{path} is not a parameters file (expected 'node: ros__parameters: ...')"
-            )
-        for key, entry in data.items():
-            problem = parameters_problem({key: entry})  # int64, dates, keys that are not text
-            if problem:
-                raise ToolError(f"{path}: {problem}")
-            if not isinstance(entry, dict) or not isinstance(entry.get("ros__parameters"), dict):
-                raise ToolError(f"{path}: '{key}' has no 'ros__parameters:' mapping")
-        self.data: dict[str, Any] = data
 
     def node_names(self) -> list[str]:
         """The full names of the nodes the file names (not the '/**' entry)."""

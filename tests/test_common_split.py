@@ -11,6 +11,7 @@ import json
 import pkgutil
 import subprocess
 import sys
+from pathlib import Path
 
 import ros_tutorials_common
 
@@ -52,3 +53,18 @@ def test_the_plain_part_and_the_launcher_import_no_rclpy():
 def test_the_ros_part_is_where_rclpy_is():
     # The probe does see rclpy when it is imported: the check above can fail.
     assert "rclpy" in rclpy_modules_after_importing("ros_tutorials_common.ros")
+
+
+def test_one_place_imports_a_private_rclpy_module():
+    root = Path(ros_tutorials_common.__file__).resolve().parents[1]
+    sources = [
+        path
+        for folder in root.iterdir()
+        if folder.is_dir() and folder.name not in {".venv", "build", "tests"}
+        for path in folder.rglob("*.py")
+    ]
+    assert len(sources) > 50
+    private = sorted(
+        str(path.relative_to(root)) for path in sources if "rclpy.impl" in path.read_text()
+    )
+    assert private == ["ros_tutorials_common/ros/node_main.py"]
