@@ -9,8 +9,9 @@ In ROS 2 every parameter belongs to a node, which answers on the services
 node's reason.
 
 A params file gives a node what an rclpy node started with ``--params-file`` takes from it:
-the ``/**`` entry (every node), then the node's own entry, named by its full name with or
-without the leading slash (``/ns/node`` or ``ns/node``), which wins where both set a name.
+every entry whose name matches the node's full name (``/ns/node`` or ``ns/node``; ``/*`` for
+one part of a name, ``/**`` for any number, so ``/**`` is every node), in the file's order,
+a later entry winning where two set the same parameter.
 Before rclpy sees the file it is read within this project's limits (1 MiB, bounded YAML
 aliases, see ros_tutorials_common.bounded) and checked (int64, dates, key types); rclpy then
 parses a private copy of exactly the text that was checked. Like ``ros2 param load``, rclpy
@@ -20,6 +21,7 @@ types each value from its text, so a quoted ``'5'`` is loaded as the integer 5.
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 import tempfile
 import weakref
@@ -53,7 +55,6 @@ TYPE_NAMES = {
 # ... and how `ros2 param describe` does.
 DESCRIBED_TYPES = {code: name.lower() for code, name in TYPE_NAMES.items()}
 DESCRIBED_TYPES[ParameterType.PARAMETER_NOT_SET] = "not set"
-WILDCARD = "/**"  # a params file's entry for every node
 
 # One AsyncParameterClient per (tool run, node): its six service clients live as long as the
 # tool's node (rclpy has no call to destroy them earlier).
@@ -64,6 +65,16 @@ _clients: weakref.WeakKeyDictionary[Graph, dict[str, AsyncParameterClient]] = (
 
 def _node_name(name: str) -> str:
     return "/" + name.strip("/")
+
+
+def name_matches(key: str, node: str) -> bool:
+    """Whether a params file's entry is for ``node`` (a full name), as rcl matches them: a
+    leading '/' is implied, '/*' stands for one name part, '/**' for any number of parts."""
+    pattern = "".join(
+        "(/[^/]+)*" if part == "**" else "/[^/]+" if part == "*" else "/" + re.escape(part)
+        for part in key.strip("/").split("/")
+    )
+    return re.fullmatch(pattern, node) is not None
 
 
 def _ask(graph: Graph, node: str, call: Callable[[AsyncParameterClient], Future]) -> Any:
@@ -175,15 +186,15 @@ class ParamsFile:
             raise ToolError(str(error)) from None
 
     def node_names(self) -> list[str]:
-        """The full names of the nodes the file names (not the '/**' entry)."""
-        return [_node_name(key) for key in self.data if key != WILDCARD]
+        """The full names of the nodes the file names (not the patterns such as '/**')."""
+        return [_node_name(key) for key in self.data if "*" not in key]
 
     def params_for(self, node: str) -> list[ParameterMsg]:
-        """What the file gives ``node`` (a full name): '/**', then its own entry (by rclpy)."""
-        own = [key for key in self.data if key != WILDCARD and _node_name(key) == node]
-        keys = ([WILDCARD] if WILDCARD in self.data else []) + own
+        """What the file gives ``node`` (a full name): every entry whose name matches it, in
+        the file's order, a later one winning where two set a name (by rclpy)."""
+        keys = [key for key in self.data if name_matches(key, node)]
         if not keys:
-            raise ToolError(f"{self.path} has no parameters for {node} (nor for {WILDCARD})")
+            raise ToolError(f"{self.path} has no entry that matches {node}")
         # rclpy opens the file itself: give it a private copy of the text checked above (a
         # named pipe or a file changed meanwhile would be read again, without the limits).
         with tempfile.NamedTemporaryFile("w", suffix=".yaml", encoding="utf-8") as copy:

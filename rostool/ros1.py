@@ -134,12 +134,14 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
 
 
 def rosparam_load(graph: Graph, path: str) -> None:
-    """ROS 1 loaded a file into the one parameter server; here each node it names gets its
-    own entry (after the '/**' one, see rostool.param)."""
+    """ROS 1 loaded a file into the one parameter server; here each node it names gets the
+    entries that match it (its own, and patterns such as '/**', see rostool.param)."""
     params_file = param.ParamsFile(path)  # read and checked once, before touching any node
     nodes = list(dict.fromkeys(params_file.node_names()))  # '/ns/node' and 'ns/node' are one
     if not nodes:
-        raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
+        raise ToolError(
+            f"{path} names no node, only patterns such as '/**'; use: rostool param load NODE FILE"
+        )
     batches = [(node_name, params_file.params_for(node_name)) for node_name in nodes]
     for node_name, params in batches:
         param.load_params(graph, node_name, params)

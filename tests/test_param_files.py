@@ -1,18 +1,23 @@
 """Params files as ROS 2 reads them (`rostool param load`, `rosparam load`), against real nodes.
 
 Two parameter-lesson servers run: /service_server and /ns/service_server. A params file gives
-a node its '/**' entry, then its own entry (``/ns/node`` or ``ns/node``), which wins; an entry
-for another node, even one with the same base name, gives it nothing.
+a node every entry that matches its full name (``/ns/node`` or ``ns/node``, ``/**`` any node,
+``/*`` one name part), in the file's order; an entry for another node, even one with the same
+base name, gives it nothing. The last test checks this against what rclpy itself gives a node
+started with ``--params-file``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import pytest
 from helpers import spin_until
 from rclpy.node import Node
+from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
+from rclpy.task import Future
 from test_rostool import _ready, fails, ok
 
 SERVERS = ("/service_server", "/ns/service_server")
@@ -25,21 +30,37 @@ def two_servers(node_process):
     _ready(node_process("-m", "ros_tutorials_parameter.server", "--ros-args", "-r", "__ns:=/ns"))
 
 
+class Probe:
+    """Reads and sets calculation_method in this process (quicker than a tool process)."""
+
+    def __init__(self, context, executor) -> None:
+        self.executor = executor
+        self.node = Node("param_files_probe", context=context, start_parameter_services=False)
+        executor.add_node(self.node)
+        self.clients: dict[str, AsyncParameterClient] = {}
+
+    def _call(self, server: str, request: Callable[[AsyncParameterClient], Future]) -> Any:
+        if server not in self.clients:
+            self.clients[server] = AsyncParameterClient(self.node, server)
+        client = self.clients[server]
+        spin_until(self.executor, client.services_are_ready, what=f"{server}'s parameters")
+        future = request(client)
+        spin_until(self.executor, future.done, what=f"{server}'s answer")
+        return future.result()
+
+    def get(self, server: str) -> int:
+        response = self._call(server, lambda c: c.get_parameters(["calculation_method"]))
+        return response.values[0].integer_value
+
+    def set(self, server: str, value: int) -> None:
+        parameter = Parameter("calculation_method", value=value)
+        response = self._call(server, lambda c: c.set_parameters([parameter]))
+        assert response.results[0].successful, response.results[0].reason
+
+
 @pytest.fixture
-def method(context, executor) -> Callable[[str], int]:
-    """A node's calculation_method, read in this process (quicker than a tool process)."""
-    node = Node("param_files_probe", context=context, start_parameter_services=False)
-    executor.add_node(node)
-    clients: dict[str, AsyncParameterClient] = {}
-
-    def read(server: str) -> int:
-        client = clients.setdefault(server, AsyncParameterClient(node, server))
-        spin_until(executor, client.services_are_ready, what=f"{server}'s parameter services")
-        future = client.get_parameters(["calculation_method"])
-        spin_until(executor, future.done, what=f"{server}'s answer")
-        return future.result().values[0].integer_value
-
-    return read
+def probe(context, executor) -> Probe:
+    return Probe(context, executor)
 
 
 def params_file(tmp_path, name: str, entries: dict[str, int]) -> str:
@@ -53,51 +74,49 @@ def params_file(tmp_path, name: str, entries: dict[str, int]) -> str:
     return str(path)
 
 
-def test_a_wildcard_file_sets_any_node(two_servers, method, tmp_path):
+def test_a_wildcard_file_sets_any_node(two_servers, probe, tmp_path):
     anyone = params_file(tmp_path, "any.yaml", {"/**": 3})
     for node in SERVERS:
         out = ok("rostool", "param", "load", node, anyone)
         assert out.strip() == "Set parameter calculation_method successful"
-        assert method(node) == 3
+        assert probe.get(node) == 3
     # ROS 1's rosparam load needs nodes named in the file: '/**' alone names none.
-    assert "is for any node ('/**')" in fails("rosparam", "load", anyone)
+    assert "names no node, only patterns such as '/**'" in fails("rosparam", "load", anyone)
 
 
-def test_a_namespaced_entry_is_for_that_node_only_and_wins_over_the_wildcard(
-    two_servers, method, tmp_path
-):
+def test_a_namespaced_entry_is_for_that_node_only(two_servers, probe, tmp_path):
     only_ns = params_file(tmp_path, "ns.yaml", {"/ns/service_server": 4})
     line = fails("rostool", "param", "load", "/service_server", only_ns)
-    assert line == f"error: {only_ns} has no parameters for /service_server (nor for /**)"
-    assert method("/service_server") == 1  # untouched: the entry is /ns's
+    assert line == f"error: {only_ns} has no entry that matches /service_server"
+    assert probe.get("/service_server") == 1  # untouched: the entry is /ns's
     ok("rostool", "param", "load", "/ns/service_server", only_ns)
-    assert method("/ns/service_server") == 4
+    assert probe.get("/ns/service_server") == 4
 
-    # Both forms of a full name (with and without the leading slash), after '/**'.
+    # Both forms of a full name (with and without the leading slash), after '/**': they win.
     mixed = params_file(
         tmp_path, "mixed.yaml", {"/**": 3, "ns/service_server": 2, "/service_server": 4}
     )
     ok("rostool", "param", "load", "/ns/service_server", mixed)
-    assert method("/ns/service_server") == 2
+    assert probe.get("/ns/service_server") == 2
     ok("rostool", "param", "load", "/service_server", mixed)
-    assert method("/service_server") == 4
+    assert probe.get("/service_server") == 4
 
-    # rosparam load: every node the file names gets '/**' and then its own entry.
+    # rosparam load: every node the file names gets the entries that match it.
     back = params_file(tmp_path, "back.yaml", {"/**": 3, "/service_server": 1})
     ok("rosparam", "load", back)
-    assert method("/service_server") == 1
-    assert method("/ns/service_server") == 2  # not named in the file: untouched
+    assert probe.get("/service_server") == 1
+    assert probe.get("/ns/service_server") == 2  # not named in the file: untouched
 
 
 def test_an_entry_without_ros__parameters_is_refused_before_any_node_is_touched(
-    node_process, method, tmp_path
+    node_process, probe, tmp_path
 ):
     _ready(node_process("-m", "ros_tutorials_parameter.server"))
     path = tmp_path / "flat.yaml"
     path.write_text("/**:\n  ros__parameters:\n    calculation_method: 3\n/ns/service_server: 4\n")
     line = fails("rostool", "param", "load", "/service_server", str(path))
     assert "'/ns/service_server' has no 'ros__parameters:' mapping" in line
-    assert method("/service_server") == 1
+    assert probe.get("/service_server") == 1
 
 
 def test_describe_shows_the_declared_range(node_process):
@@ -114,3 +133,20 @@ def test_describe_shows_the_declared_range(node_process):
     ]
     line = fails("rostool", "param", "describe", "/ns/service_server", "nope")
     assert line == "error: node '/ns/service_server' has no parameter 'nope'"
+
+
+def test_load_gives_a_node_what_it_takes_from_the_file_at_start(node_process, probe, tmp_path):
+    """rcl's patterns ('/*' one part, '/**' any number), in the file's order, the later entry
+    winning: the same as rclpy gives a node started with --params-file FILE."""
+    path = params_file(
+        tmp_path, "patterns.yaml", {"/ns/service_server": 4, "/**/service_server": 3, "/*": 2}
+    )
+    server = ("-m", "ros_tutorials_parameter.server", "--ros-args", "--params-file", path)
+    _ready(node_process(*server))
+    _ready(node_process(*server, "-r", "__ns:=/ns"))
+    at_start = {node: probe.get(node) for node in SERVERS}
+    assert at_start == {"/service_server": 2, "/ns/service_server": 3}
+    for node in SERVERS:
+        probe.set(node, 1)
+        ok("rostool", "param", "load", node, path)
+        assert probe.get(node) == at_start[node], node
