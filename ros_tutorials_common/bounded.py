@@ -155,12 +155,14 @@ def load_yaml_file(path: str | os.PathLike) -> Any:
     return load_yaml(read_text(path), str(path))
 
 
-def read_params_file(path: str | os.PathLike) -> tuple[str, dict[str, Any]]:
-    """A ROS 2 params file (``node: {ros__parameters: {...}}``), read within the limits and
-    checked before anything uses it: its text (exactly what was checked) and its mapping.
+def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
+    """A ROS 2 params file, read within the limits and checked before anything uses it:
+    {node name: {"ros__parameters": {...}}}, one entry per node name in the file's order.
 
-    A node name that is not text, an entry without a ``ros__parameters`` mapping, or a value
-    no ROS parameter can hold is an InputError naming the file.
+    As in rcl, a node name may also be written as nested keys (``ns: {node: {ros__parameters:
+    ...}}`` is ``ns/node``). A node name that is not text, an entry without a
+    ``ros__parameters`` mapping, or a value no ROS parameter can hold is an InputError naming
+    the file.
     """
     text = read_text(path)
     try:
@@ -169,15 +171,28 @@ def read_params_file(path: str | os.PathLike) -> tuple[str, dict[str, Any]]:
         raise InputError(f"{path} is not valid YAML: {' '.join(str(error).split())}") from None
     if not isinstance(data, dict):
         raise InputError(f"{path} is not a params file (expected 'node: ros__parameters: ...')")
-    for key, entry in data.items():
+    entries: dict[str, dict[str, Any]] = {}
+    _params_entries(data, "", str(path), entries)
+    return entries
+
+
+def _params_entries(data: dict, prefix: str, source: str, entries: dict) -> None:
+    for key, value in data.items():
         if not isinstance(key, str):
-            raise InputError(f"{path}: node name {key!r} is not a string")
-        if not isinstance(entry, dict) or not isinstance(entry.get("ros__parameters"), dict):
-            raise InputError(f"{path}: '{key}' has no 'ros__parameters:' mapping")
-        problem = parameters_problem(entry["ros__parameters"])
+            raise InputError(f"{source}: node name {key!r} is not a string")
+        name = f"{prefix}/{key.strip('/')}" if prefix else key
+        if not isinstance(value, dict) or not value:
+            raise InputError(f"{source}: '{name}' has no 'ros__parameters:' mapping")
+        params = value.get("ros__parameters", {})
+        if not isinstance(params, dict):
+            raise InputError(f"{source}: '{name}' has no 'ros__parameters:' mapping")
+        problem = parameters_problem(params)
         if problem:
-            raise InputError(f"{path}: {problem}")
-    return text, data
+            raise InputError(f"{source}: {problem}")
+        if "ros__parameters" in value:
+            entries.setdefault(name, {"ros__parameters": {}})["ros__parameters"].update(params)
+        namespaces = {k: v for k, v in value.items() if k != "ros__parameters"}
+        _params_entries(namespaces, name, source, entries)
 
 
 def parameter_problem(name: str, value: Any) -> str | None:

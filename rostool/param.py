@@ -14,7 +14,7 @@ one part of a name, ``/**`` for any number, so ``/**`` is every node), in the fi
 a later entry winning where two set the same parameter.
 Before rclpy sees the file it is read within this project's limits (1 MiB, bounded YAML
 aliases, see ros_tutorials_common.bounded) and checked (int64, dates, key types); rclpy then
-parses a private copy of exactly the text that was checked. Like ``ros2 param load``, rclpy
+parses a private copy of what was checked. Like ``ros2 param load``, rclpy
 types each value from its text, so a quoted ``'5'`` is loaded as the integer 5.
 """
 
@@ -181,7 +181,7 @@ class ParamsFile:
     def __init__(self, path: str) -> None:
         self.path = path
         try:
-            self.text, self.data = read_params_file(path)  # within the limits, and checked
+            self.data = read_params_file(path)  # within the limits, and checked
         except InputError as error:
             raise ToolError(str(error)) from None
 
@@ -195,10 +195,11 @@ class ParamsFile:
         keys = [key for key in self.data if name_matches(key, node)]
         if not keys:
             raise ToolError(f"{self.path} has no entry that matches {node}")
-        # rclpy opens the file itself: give it a private copy of the text checked above (a
-        # named pipe or a file changed meanwhile would be read again, without the limits).
+        # rclpy opens the file itself: give it a private copy of what was checked (a named
+        # pipe or a file changed meanwhile would be read again, without the limits), each
+        # node under its full name (rclpy does not read names written as nested keys).
         with tempfile.NamedTemporaryFile("w", suffix=".yaml", encoding="utf-8") as copy:
-            copy.write(self.text)
+            yaml.safe_dump(self.data, copy, sort_keys=False)  # the order decides
             copy.flush()
             try:  # later keys win: the node's own entry overrides the wildcard's
                 params = parameter_dict_from_yaml_file(copy.name, target_nodes=keys)

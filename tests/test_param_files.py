@@ -136,17 +136,21 @@ def test_describe_shows_the_declared_range(node_process):
 
 
 def test_load_gives_a_node_what_it_takes_from_the_file_at_start(node_process, probe, tmp_path):
-    """rcl's patterns ('/*' one part, '/**' any number), in the file's order, the later entry
-    winning: the same as rclpy gives a node started with --params-file FILE."""
-    path = params_file(
-        tmp_path, "patterns.yaml", {"/ns/service_server": 4, "/**/service_server": 3, "/*": 2}
+    """rcl's names ('/*' one part, '/**' any number, nested keys for namespaces), in the
+    file's order, the later entry winning: the same as rclpy gives a node started with
+    --params-file FILE."""
+    path = tmp_path / "patterns.yaml"
+    path.write_text(
+        "ns:\n  service_server:\n    ros__parameters:\n      calculation_method: 4\n"
+        + "/**/service_server:\n  ros__parameters:\n    calculation_method: 3\n"
+        + "/*:\n  ros__parameters:\n    calculation_method: 2\n"
     )
-    server = ("-m", "ros_tutorials_parameter.server", "--ros-args", "--params-file", path)
+    server = ("-m", "ros_tutorials_parameter.server", "--ros-args", "--params-file", str(path))
     _ready(node_process(*server))
     _ready(node_process(*server, "-r", "__ns:=/ns"))
     at_start = {node: probe.get(node) for node in SERVERS}
     assert at_start == {"/service_server": 2, "/ns/service_server": 3}
     for node in SERVERS:
         probe.set(node, 1)
-        ok("rostool", "param", "load", node, path)
+        ok("rostool", "param", "load", node, str(path))
         assert probe.get(node) == at_start[node], node
