@@ -21,7 +21,7 @@ from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.msg import MsgTutorial
 from sensor_msgs.msg import Image
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 
 TUTORIAL_TOPIC, IMAGE_TOPIC = "/bench_tutorial", "/bench_image"
 TUTORIAL_HZ, IMAGE_HZ = 1000.0, 30.0

@@ -21,7 +21,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common.node_main import init, user_args
+from ros_tutorials_common.ros import init, user_args
 
 SERVICE = "ros_tutorial_srv"
 

@@ -22,7 +22,7 @@ from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common.node_main import init, user_args
+from ros_tutorials_common.ros import init, user_args
 from ros_tutorials_topic.publisher import QUEUE_SIZE, TopicPublisher
 from ros_tutorials_topic.subscriber import TopicSubscriber
 

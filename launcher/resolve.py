@@ -33,6 +33,7 @@ from ros_tutorials_common.bounded import (
     load_yaml,
     parameter_problem,
     parameters_problem,
+    read_params_file,
     read_text,
 )
 
@@ -305,19 +306,9 @@ def _check_params(element: Element, mapping: dict | None, name: str, value: Any)
 def _check_params_file(element: Element, path: Path) -> None:
     """A ROS 2 params file, checked before anything starts: the child would fail on it later."""
     try:
-        data = load_yaml(read_text(path), str(path))
+        read_params_file(path)
     except InputError as error:
         raise element.error(str(error)) from None
-    except yaml.YAMLError as error:
-        raise element.error(f"{path} is not valid YAML: {' '.join(str(error).split())}") from None
-    if not isinstance(data, dict):
-        raise element.error(f"{path} is not a params file (expected 'node: ros__parameters:')")
-    for key, entry in data.items():
-        if not isinstance(key, str):
-            raise element.error(f"{path}: node name {key!r} is not a string")
-        problem = parameters_problem(entry, "")
-        if problem:
-            raise element.error(f"{path}: {problem}")
 
 
 def _flatten(prefix: str, value: Any) -> list[tuple[str, Any]]:

@@ -21,7 +21,7 @@ from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.action import Fibonacci
 
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
-from ros_tutorials_common.node_main import ros_args, user_args
+from ros_tutorials_common.ros import ros_args, user_args
 
 ACTION_NAME = "ros_tutorial_action"
 STATES = {GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED", GoalStatus.STATUS_CANCELED: "CANCELED"}

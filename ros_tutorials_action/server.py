@@ -25,7 +25,7 @@ from rclpy.qos import QoSProfile
 from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.action import Fibonacci
 
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 ACTION_NAME = "ros_tutorial_action"
 INT32_MAX = 2**31 - 1

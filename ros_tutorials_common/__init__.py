@@ -1,12 +1,15 @@
 """What the tutorial nodes and tools share that is not a lesson (each lesson shows its own
-steps: rclpy.init, the node, spin, shutdown, in its own file).
+steps: rclpy.init, the node, spin, shutdown, in its own file), in two parts:
+
+Here, modules that never import rclpy (the launcher uses them and stays light; a test
+checks that importing any of them loads no rclpy):
 
 - ``dds``: the one place that sets this project's DDS defaults
-- ``node_main``: the command line before rclpy.init (``ros_args``: DDS defaults and checked
-  ROS arguments; ``user_args``: the program's own arguments; ``init`` for the tools)
 - ``cli``: argument types and exit codes shared by the command-line programs
 - ``int64``: keeping the servers' results inside int64
+- ``bounded``: reading files, pipes and YAML from users within limits
 
-Nothing is imported here, so a light user (the launcher needs only ``dds``) does not pay for
-loading rclpy.
+``ros_tutorials_common.ros``: what needs rclpy, the command line before ``rclpy.init``
+(``ros_args``: DDS defaults and checked ROS arguments; ``user_args``: the program's own
+arguments; ``init`` for the tools).
 """

@@ -9,7 +9,8 @@ instead of eating the machine's memory:
 - a YAML document: at most MAX_YAML_ALIASES aliases (``*name``), at most MAX_YAML_NODES
   values once every alias is expanded, nesting at most MAX_YAML_DEPTH deep;
 - a parameter value: what a ROS parameter can hold (bool, int64, float, string, a flat list
-  of one of those), under string keys.
+  of one of those), under string keys; a params file: node names mapping to
+  ``ros__parameters`` (read_params_file).
 
 Nothing here imports rclpy: the launcher uses it and stays light.
 """
@@ -152,6 +153,46 @@ def load_yaml(text: str, source: str = "YAML") -> Any:
 def load_yaml_file(path: str | os.PathLike) -> Any:
     """A YAML file, read and parsed within the limits."""
     return load_yaml(read_text(path), str(path))
+
+
+def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
+    """A ROS 2 params file, read within the limits and checked before anything uses it:
+    {node name: {"ros__parameters": {...}}}, one entry per node name in the file's order.
+
+    As in rcl, a node name may also be written as nested keys (``ns: {node: {ros__parameters:
+    ...}}`` is ``ns/node``). A node name that is not text, an entry without a
+    ``ros__parameters`` mapping, or a value no ROS parameter can hold is an InputError naming
+    the file.
+    """
+    text = read_text(path)
+    try:
+        data = load_yaml(text, str(path))
+    except yaml.YAMLError as error:
+        raise InputError(f"{path} is not valid YAML: {' '.join(str(error).split())}") from None
+    if not isinstance(data, dict):
+        raise InputError(f"{path} is not a params file (expected 'node: ros__parameters: ...')")
+    entries: dict[str, dict[str, Any]] = {}
+    _params_entries(data, "", str(path), entries)
+    return entries
+
+
+def _params_entries(data: dict, prefix: str, source: str, entries: dict) -> None:
+    for key, value in data.items():
+        if not isinstance(key, str):
+            raise InputError(f"{source}: node name {key!r} is not a string")
+        name = f"{prefix}/{key.strip('/')}" if prefix else key
+        if not isinstance(value, dict) or not value:
+            raise InputError(f"{source}: '{name}' has no 'ros__parameters:' mapping")
+        params = value.get("ros__parameters", {})
+        if not isinstance(params, dict):
+            raise InputError(f"{source}: '{name}' has no 'ros__parameters:' mapping")
+        problem = parameters_problem(params)
+        if problem:
+            raise InputError(f"{source}: {problem}")
+        if "ros__parameters" in value:
+            entries.setdefault(name, {"ros__parameters": {}})["ros__parameters"].update(params)
+        namespaces = {k: v for k, v in value.items() if k != "ros__parameters"}
+        _params_entries(namespaces, name, source, entries)
 
 
 def parameter_problem(name: str, value: Any) -> str | None:

@@ -7,13 +7,19 @@ Python integers never overflow, but a ROS ``int64`` field refuses anything outsi
 
 from __future__ import annotations
 
-from rclpy.impl.rcutils_logger import RcutilsLogger
+from typing import Protocol
 
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
 
 
-def int64_or_zero(value: int, expression: str, logger: RcutilsLogger) -> int:
+class Logger(Protocol):
+    """What int64_or_zero needs of a logger (a node's get_logger() is one); no rclpy here."""
+
+    def warning(self, message: str) -> object: ...
+
+
+def int64_or_zero(value: int, expression: str, logger: Logger) -> int:
     """value if it fits in an int64; otherwise 0 and a warning naming the expression.
 
     The tutorial services have no error field, so an unrepresentable result is answered

@@ -23,7 +23,7 @@ from rclpy.parameter import Parameter
 from ros_tutorials_interfaces.srv import SrvTutorial
 
 from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 PLUS, MINUS, MULTIPLICATION, DIVISION = 1, 2, 3, 4
 

@@ -11,7 +11,7 @@ from rclpy.node import Node
 from ros_tutorials_interfaces.srv import AddTwoInts
 
 from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 
 class AddTwoIntsServer(Node):

@@ -19,7 +19,7 @@ from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.srv import SrvTutorial
 
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, signed_int
-from ros_tutorials_common.node_main import ros_args, user_args
+from ros_tutorials_common.ros import ros_args, user_args
 
 
 def parse_args(args: list[str]) -> argparse.Namespace:

@@ -12,7 +12,7 @@ from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
 from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 
 class ServiceServer(Node):

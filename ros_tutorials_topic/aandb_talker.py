@@ -13,7 +13,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import AandB
 
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 
 class AandBTalker(Node):

@@ -10,7 +10,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common.node_main import ros_args
+from ros_tutorials_common.ros import ros_args
 
 
 class Talker(Node):

@@ -13,15 +13,13 @@ from __future__ import annotations
 import math
 import sys
 
-import rclpy
 from geometry_msgs.msg import Twist
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import run_node
 
 SIDE = 2.0  # m
 FORWARD, STOP_FORWARD, TURN, STOP_TURN = "forward", "stop_forward", "turn", "stop_turn"
@@ -114,19 +112,7 @@ class DrawSquare(Node):
 
 
 def main(argv: list[str] | None = None) -> int:
-    init(argv)  # rclpy.init with this project's DDS defaults
-    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
-    node = None
-    try:
-        node = DrawSquare()
-        rclpy.spin(node, executor)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
+    return run_node(DrawSquare, argv)  # rclpy.init with the DDS defaults, spin until Ctrl-C
 
 
 if __name__ == "__main__":

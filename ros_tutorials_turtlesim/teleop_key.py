@@ -32,7 +32,7 @@ from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.action import RotateAbsolute
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 
 HELP = """Reading from keyboard
 ---------------------------

@@ -46,7 +46,7 @@ from turtlesim.action import RotateAbsolute
 from turtlesim.msg import Color, Pose
 from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 
-from ros_tutorials_common.node_main import init
+from ros_tutorials_common.ros import init
 from ros_tutorials_turtlesim import canvas
 from ros_tutorials_turtlesim.simulation import (
     ROTATION_SPEED,

@@ -13,7 +13,7 @@ from rclpy.action.graph import get_action_names_and_types
 
 from rostool.action_goal import CtrlC, cancel_goal
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name, print_names
+from rostool.graph import Graph, absolute_name, add_list_and_type, print_names
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
 from rostool.typenames import load_type
 from rostool.wait import Interrupted, ServerLost, spin_until
@@ -130,13 +130,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     parser = verbs.add_parser("action", help="actions: list, type, send_goal")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the actions in the graph")
-    p.add_argument("-t", "--show-types", action="store_true", help="show each action's type")
-    p.set_defaults(run=lambda graph, a: list_actions(graph, a.show_types))
-
-    p = sub.add_parser("type", parents=[common], help="print the type of an action")
-    p.add_argument("action")
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.action))
+    add_list_and_type(sub, common, "action", list_actions, print_type)
 
     p = sub.add_parser("send_goal", parents=[common], help="send a goal given as YAML")
     p.add_argument("action")

@@ -1,33 +1,46 @@
 """`rostool param ...`: a node's parameters through its parameter services (like `ros2 param`).
 
 In ROS 2 every parameter belongs to a node, which answers on the services
-``<node>/list_parameters``, ``<node>/get_parameters`` and ``<node>/set_parameters``.
-The node checks a new value itself (its type, its declared range, its own callback), so a
-refused value comes back with the node's reason.
+``<node>/list_parameters``, ``<node>/get_parameters``, ``<node>/set_parameters``,
+``<node>/describe_parameters``, ... The calls go through rclpy's own
+``AsyncParameterClient``, and params files are read by rclpy's
+``parameter_dict_from_yaml_file``, as ``ros2 param`` does. The node checks a new value itself
+(its type, its declared range, its own callback), so a refused value comes back with the
+node's reason.
+
+A params file gives a node what an rclpy node started with ``--params-file`` takes from it:
+every entry whose name matches the node's full name (``/ns/node`` or ``ns/node``; ``/*`` for
+one part of a name, ``/**`` for any number, so ``/**`` is every node), in the file's order,
+a later entry winning where two set the same parameter.
+Before rclpy sees the file it is read within this project's limits (1 MiB, bounded YAML
+aliases, see ros_tutorials_common.bounded) and checked (int64, dates, key types); rclpy then
+parses a private copy of what was checked. Like ``ros2 param load``, rclpy
+types each value from its text, so a quoted ``'5'`` is loaded as the integer 5.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 import sys
+import tempfile
+import weakref
+from collections.abc import Callable
 from typing import Any
 
 import yaml
+from rcl_interfaces.msg import Parameter as ParameterMsg
 from rcl_interfaces.msg import ParameterType
-from rcl_interfaces.srv import GetParameters, ListParameters, SetParameters
-from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter import Parameter, parameter_dict_from_yaml_file, parameter_value_to_python
+from rclpy.parameter_client import AsyncParameterClient
+from rclpy.task import Future
 
-from ros_tutorials_common.bounded import (
-    InputError,
-    load_yaml_file,
-    parameter_problem,
-    parameters_problem,
-)
+from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 from rostool.errors import ToolError
 from rostool.graph import Graph
 from rostool.messages import parse_yaml
 
-# How `ros2 param get` names the value types.
+# How `ros2 param get` names the value types ...
 TYPE_NAMES = {
     ParameterType.PARAMETER_BOOL: "Boolean",
     ParameterType.PARAMETER_INTEGER: "Integer",
@@ -39,32 +52,55 @@ TYPE_NAMES = {
     ParameterType.PARAMETER_DOUBLE_ARRAY: "Double array",
     ParameterType.PARAMETER_STRING_ARRAY: "String array",
 }
+# ... and how `ros2 param describe` does.
+DESCRIBED_TYPES = {code: name.lower() for code, name in TYPE_NAMES.items()}
+DESCRIBED_TYPES[ParameterType.PARAMETER_NOT_SET] = "not set"
+
+# One AsyncParameterClient per (tool run, node): its six service clients live as long as the
+# tool's node (rclpy has no call to destroy them earlier).
+_clients: weakref.WeakKeyDictionary[Graph, dict[str, AsyncParameterClient]] = (
+    weakref.WeakKeyDictionary()
+)
 
 
 def _node_name(name: str) -> str:
     return "/" + name.strip("/")
 
 
-def _call(graph: Graph, node: str, srv_type: type, service: str, request: Any) -> Any:
-    graph.wait_for_node(node)
-    client = graph.node.create_client(srv_type, f"{node}/{service}")
-    try:
-        return graph.call(client, request, f"node '{node}' does not answer")
-    finally:
-        graph.node.destroy_client(client)
+def name_matches(key: str, node: str) -> bool:
+    """Whether a params file's entry is for ``node`` (a full name), as rcl matches them: a
+    leading '/' is implied, '/*' stands for one name part, '/**' for any number of parts."""
+    pattern = "".join(
+        "(/[^/]+)*" if part == "**" else "/[^/]+" if part == "*" else "/" + re.escape(part)
+        for part in key.strip("/").split("/")
+    )
+    return re.fullmatch(pattern, node) is not None
+
+
+def _ask(graph: Graph, node: str, call: Callable[[AsyncParameterClient], Future]) -> Any:
+    """Wait for the node and its parameter services, make one call, wait for its answer."""
+    node = graph.wait_for_node(node)  # "unknown node '/x'" if it never appears
+    clients = _clients.setdefault(graph, {})
+    if node not in clients:
+        clients[node] = AsyncParameterClient(graph.node, node)
+    client = clients[node]
+    graph.wait_for(
+        client.services_are_ready, f"node '{node}' does not answer: no parameter services"
+    )
+    future = call(client)
+    graph.wait_for(future.done, f"node '{node}' does not answer")
+    return future.result()
 
 
 def names(graph: Graph, node: str) -> list[str]:
-    node = _node_name(node)
-    response = _call(graph, node, ListParameters, "list_parameters", ListParameters.Request())
+    response = _ask(graph, node, lambda client: client.list_parameters())
     return sorted(response.result.names)
 
 
 def get_values(graph: Graph, node: str, params: list[str]) -> dict[str, Any]:
-    """{name: python value} of a node's parameters; an unknown name is a ToolError."""
+    """{name: (type, python value)} of a node's parameters; an unknown name is a ToolError."""
     node = _node_name(node)
-    request = GetParameters.Request(names=params)
-    response = _call(graph, node, GetParameters, "get_parameters", request)
+    response = _ask(graph, node, lambda client: client.get_parameters(params))
     if len(response.values) != len(params):  # rclpy answers nothing for unknown names
         missing = set(params) - set(names(graph, node))
         raise ToolError(f"node '{node}' has no parameter '{', '.join(sorted(missing))}'")
@@ -74,6 +110,12 @@ def get_values(graph: Graph, node: str, params: list[str]) -> dict[str, Any]:
             raise ToolError(f"node '{node}' has no parameter '{name}'")
         values[name] = (value.type, parameter_value_to_python(value))
     return values
+
+
+def describe(graph: Graph, node: str, params: list[str]) -> list[Any]:
+    """The ParameterDescriptors of a node's parameters; an unknown name is a ToolError."""
+    get_values(graph, node, params)  # rclpy describes an unknown name as "not set": refuse it
+    return list(_ask(graph, node, lambda client: client.describe_parameters(params)).descriptors)
 
 
 def set_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
@@ -86,7 +128,6 @@ def set_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
 
 def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str, str]:
     """Set parameters on a node, each on its own; return {name: reason} of those refused."""
-    node = _node_name(node)
     for name, value in values.items():
         problem = parameter_problem(name, value)  # e.g. an integer rclpy cannot hold (int64)
         if problem:
@@ -95,32 +136,35 @@ def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str,
         params = [Parameter(name, value=value).to_parameter_msg() for name, value in values.items()]
     except (TypeError, ValueError) as error:
         raise ToolError(f"cannot use that value as a parameter: {error}") from None
-    request = SetParameters.Request(parameters=params)
-    response = _call(graph, node, SetParameters, "set_parameters", request)
+    return _set(graph, node, params)
+
+
+def _set(graph: Graph, node: str, params: list[ParameterMsg]) -> dict[str, str]:
+    response = _ask(graph, node, lambda client: client.set_parameters(params))
     return {
-        name: result.reason
-        for name, result in zip(values, response.results, strict=True)
+        param.name: result.reason
+        for param, result in zip(params, response.results, strict=True)
         if not result.successful
     }
 
 
 def load_file(graph: Graph, node: str, path: str) -> None:
-    """Set what a params file gives a node (see load_values)."""
-    load_values(graph, node, params_for_node(read_params_file(path), path, _node_name(node)))
+    """Set what a params file gives a node (see the module's docstring)."""
+    load_params(graph, node, ParamsFile(path).params_for(_node_name(node)))
 
 
-def load_values(graph: Graph, node: str, values: dict[str, Any]) -> None:
+def load_params(graph: Graph, node: str, params: list[ParameterMsg]) -> None:
     """Set parameters from a params file; like ros2, report refused ones and go on.
 
     A dump holds read-only parameters too (start_type_description_service), which no node
     accepts at run time; loading that dump back should still set everything else.
     """
-    refused = try_set_values(graph, node, values)
-    for name in values:
-        if name in refused:
-            print(f"Set parameter {name} failed: {refused[name]}", file=sys.stderr)
+    refused = _set(graph, node, params)
+    for param in params:
+        if param.name in refused:
+            print(f"Set parameter {param.name} failed: {refused[param.name]}", file=sys.stderr)
         else:
-            print(f"Set parameter {name} successful")
+            print(f"Set parameter {param.name} successful")
 
 
 def dump_data(graph: Graph, node: str) -> dict[str, Any]:
@@ -131,44 +175,40 @@ def dump_data(graph: Graph, node: str) -> dict[str, Any]:
     return {node: {"ros__parameters": params}}
 
 
-def read_params_file(path: str) -> dict[Any, Any]:
-    """The mapping a params file holds; a missing, unreadable or malformed file is a ToolError."""
-    try:
-        data = load_yaml_file(path)  # at most 1 MiB, UTF-8, bounded aliases
-    except InputError as error:
-        raise ToolError(str(error)) from None
-    except yaml.YAMLError as error:
-        raise ToolError(f"{path} is not valid YAML: {str(error).splitlines()[0]}") from None
-    if not isinstance(data, dict):
-        raise ToolError(f"{path} is not a parameters file (expected 'node: ros__parameters: ...')")
-    for key, entry in data.items():  # checked before any node is touched
-        problem = parameters_problem({key: entry})
-        if problem:
-            raise ToolError(f"{path}: {problem}")
-    return data
+class ParamsFile:
+    """A params file, read within the limits and checked, before any node is touched."""
 
+    def __init__(self, path: str) -> None:
+        self.path = path
+        try:
+            self.data = read_params_file(path)  # within the limits, and checked
+        except InputError as error:
+            raise ToolError(str(error)) from None
 
-def params_for_node(data: dict[Any, Any], path: str, node: str) -> dict[str, Any]:
-    """The parameters a params file gives a node: its entry, '/**' entries, or the only one."""
-    found: dict[str, Any] = {}
-    for key, entry in data.items():
-        key = str(key)
-        if key in ("/**", node, node.lstrip("/")) and isinstance(entry, dict):
-            found.update(_flatten(entry.get("ros__parameters") or {}))
-    if not found:
-        raise ToolError(f"{path} has no parameters for {node} (nor for /**)")
-    return found
+    def node_names(self) -> list[str]:
+        """The full names of the nodes the file names (not the patterns such as '/**')."""
+        return [_node_name(key) for key in self.data if "*" not in key]
 
-
-def _flatten(params: dict[str, Any], prefix: str = "") -> dict[str, Any]:
-    """Nested YAML mappings are dotted parameter names: {a: {b: 1}} -> {'a.b': 1}."""
-    flat = {}
-    for name, value in params.items():
-        if isinstance(value, dict):
-            flat.update(_flatten(value, f"{prefix}{name}."))
-        else:
-            flat[f"{prefix}{name}"] = value
-    return flat
+    def params_for(self, node: str) -> list[ParameterMsg]:
+        """What the file gives ``node`` (a full name): every entry whose name matches it, in
+        the file's order, a later one winning where two set a name (by rclpy)."""
+        keys = [key for key in self.data if name_matches(key, node)]
+        if not keys:
+            raise ToolError(f"{self.path} has no entry that matches {node}")
+        # rclpy opens the file itself: give it a private copy of what was checked (a named
+        # pipe or a file changed meanwhile would be read again, without the limits), each
+        # node under its full name (rclpy does not read names written as nested keys).
+        with tempfile.NamedTemporaryFile("w", suffix=".yaml", encoding="utf-8") as copy:
+            yaml.safe_dump(self.data, copy, sort_keys=False)  # the order decides
+            copy.flush()
+            try:  # later keys win: the node's own entry overrides the wildcard's
+                params = parameter_dict_from_yaml_file(copy.name, target_nodes=keys)
+            except (RuntimeError, TypeError, ValueError, AssertionError, yaml.YAMLError) as error:
+                reason = " ".join(str(error).split()) or type(error).__name__
+                raise ToolError(
+                    f"{self.path}: rclpy cannot read the parameters: {reason}"
+                ) from None
+        return list(params.values())
 
 
 # The commands as `ros2 param` prints them.
@@ -198,6 +238,27 @@ def get_command(graph: Graph, node: str, name: str) -> None:
     print(f"{TYPE_NAMES.get(param_type, 'Unknown')} value is: {value}")
 
 
+def describe_command(graph: Graph, node: str, params: list[str]) -> None:
+    descriptors = describe(graph, node, params)
+    graph.finish()
+    for descriptor in descriptors:
+        print(f"Parameter name: {descriptor.name}")
+        print(f"  Type: {DESCRIBED_TYPES.get(descriptor.type, 'unknown')}")
+        if descriptor.description:
+            print(f"  Description: {descriptor.description}")
+        print("  Constraints:")
+        if descriptor.read_only:
+            print("    Read only: true")
+        ranges = [*descriptor.floating_point_range, *descriptor.integer_range]
+        if ranges:
+            print(f"    Min value: {ranges[0].from_value}")
+            print(f"    Max value: {ranges[0].to_value}")
+            if ranges[0].step:
+                print(f"    Step: {ranges[0].step}")
+        if descriptor.additional_constraints:
+            print(f"    Additional constraints: {descriptor.additional_constraints}")
+
+
 def set_command(graph: Graph, node: str, name: str, value: str) -> None:
     # Read as YAML like ros2 does: 2 is an integer, 2.0 a double, true a boolean, hi a string.
     set_values(graph, node, {name: parse_yaml(value)})
@@ -210,7 +271,7 @@ def dump_command(graph: Graph, node: str) -> None:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("param", help="parameters: list, get, set, dump, load")
+    parser = verbs.add_parser("param", help="parameters: list, get, set, describe, dump, load")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     p = sub.add_parser("list", parents=[common], help="list the parameters of one or all nodes")
@@ -221,6 +282,11 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("node")
     p.add_argument("name")
     p.set_defaults(run=lambda graph, a: get_command(graph, a.node, a.name))
+
+    p = sub.add_parser("describe", parents=[common], help="print parameters' types and ranges")
+    p.add_argument("node")
+    p.add_argument("names", nargs="+")
+    p.set_defaults(run=lambda graph, a: describe_command(graph, a.node, a.names))
 
     p = sub.add_parser("set", parents=[common], help="set a parameter (value as YAML)")
     p.add_argument("node")

@@ -134,13 +134,17 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
 
 
 def rosparam_load(graph: Graph, path: str) -> None:
-    data = param.read_params_file(path)  # read and checked once, before touching any node
-    if any(not str(key).startswith("/") for key in data):
-        raise ToolError(f"{path}: expected '/node_name: ros__parameters: ...' entries")
-    if "/**" in data:
-        raise ToolError(f"{path} is for any node ('/**'); use: rostool param load NODE FILE")
-    for node_name in data:
-        param.load_values(graph, node_name, param.params_for_node(data, path, node_name))
+    """ROS 1 loaded a file into the one parameter server; here each node it names gets the
+    entries that match it (its own, and patterns such as '/**', see rostool.param)."""
+    params_file = param.ParamsFile(path)  # read and checked once, before touching any node
+    nodes = list(dict.fromkeys(params_file.node_names()))  # '/ns/node' and 'ns/node' are one
+    if not nodes:
+        raise ToolError(
+            f"{path} names no node, only patterns such as '/**'; use: rostool param load NODE FILE"
+        )
+    batches = [(node_name, params_file.params_for(node_name)) for node_name in nodes]
+    for node_name, params in batches:
+        param.load_params(graph, node_name, params)
 
 
 # The tools. Each is a parser whose commands call the rostool functions, built as the rostool

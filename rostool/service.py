@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from rostool.errors import ToolError
-from rostool.graph import Graph, ServiceInfo, absolute_name, print_names
+from rostool.graph import Graph, ServiceInfo, absolute_name, add_list_and_type, print_names
 from rostool.messages import fill_message, message_to_yaml, parse_yaml
 from rostool.typenames import full_type_name, load_type
 
@@ -63,13 +63,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     parser = verbs.add_parser("service", help="services: list, type, call, find")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the services in the graph")
-    p.add_argument("-t", "--show-types", action="store_true", help="show each service's type")
-    p.set_defaults(run=lambda graph, a: list_services(graph, a.show_types))
-
-    p = sub.add_parser("type", parents=[common], help="print the type of a service")
-    p.add_argument("service")
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.service))
+    add_list_and_type(sub, common, "service", list_services, print_type)
 
     p = sub.add_parser("call", parents=[common], help="call a service with a request as YAML")
     p.add_argument("service")

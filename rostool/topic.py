@@ -14,13 +14,13 @@ from typing import Any
 import yaml
 from rclpy.duration import Duration
 from rclpy.executors import ExternalShutdownException
-from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile
 
 from ros_tutorials_common.cli import positive_int, positive_rate
+from ros_tutorials_common.ros import RCLError
 from rostool.errors import ToolError
-from rostool.graph import Graph, absolute_name, print_names, until_stopped
+from rostool.graph import Graph, absolute_name, add_list_and_type, print_names, until_stopped
 from rostool.messages import fill_message, message_to_data, message_to_yaml, parse_yaml
 from rostool.qos import AdaptiveSubscription
 from rostool.qos import compatible_qos as compatible_qos  # moved to qos.py; kept importable
@@ -187,7 +187,7 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
 def _publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
     try:
         publisher.publish(msg)
-    except _rclpy.RCLError:
+    except RCLError:
         # SIGTERM shut ROS down between two spins (at -r 1e9 the loop never spins): that is
         # the end of the command, as it is when a spin notices it, not an error.
         if not graph.node.context.ok():
@@ -268,9 +268,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     parser = verbs.add_parser("topic", help="topics: list, echo, pub, hz, bw, info, type, find")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the topics in the graph")
-    p.add_argument("-t", "--show-types", action="store_true", help="show each topic's type")
-    p.set_defaults(run=lambda graph, a: list_topics(graph, a.show_types))
+    add_list_and_type(sub, common, "topic", list_topics, print_type)
 
     p = sub.add_parser("echo", parents=[common], help="print the messages on a topic")
     p.add_argument("topic")
@@ -304,10 +302,6 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument("topic")
     p.add_argument("-v", "--verbose", action="store_true", help="list the endpoints")
     p.set_defaults(run=lambda graph, a: info(graph, a.topic, a.verbose))
-
-    p = sub.add_parser("type", parents=[common], help="print the message type of a topic")
-    p.add_argument("topic")
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.topic))
 
     p = sub.add_parser("find", parents=[common], help="list the topics of a message type")
     p.add_argument("type")

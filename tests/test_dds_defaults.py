@@ -28,7 +28,7 @@ def test_defaults_fill_in_only_what_the_user_has_not_set():
 def test_a_node_applies_the_defaults_before_rclpy_init():
     code = (
         "import os, rclpy\n"
-        "from ros_tutorials_common.node_main import init\n"
+        "from ros_tutorials_common.ros import init\n"
         "init(['probe'])\n"
         "print(os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'], rclpy.ok())\n"
         "rclpy.shutdown()\n"

@@ -6,23 +6,31 @@ A lesson's main() reads::
     rclpy.init(args=ros_args(args))
 
 ``ros_args`` applies this project's DDS defaults (they must be set before rclpy.init, see
-dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends the program with one
-clear line and exit status 1 instead of a traceback from rclpy.init. ``user_args`` is the
-command line without the ROS arguments, for argparse. ``init`` does both steps at once for
-the tools (rostool, benchmarks), where rclpy.init is not the lesson.
+ros_tutorials_common/dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends
+the program with one clear line and exit status 1 instead of a traceback from rclpy.init.
+``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
+steps at once for the tools (rostool, benchmarks), where rclpy.init is not the lesson.
 """
 
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import rclpy
-from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
+from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 from rclpy.utilities import remove_ros_args
 
 from ros_tutorials_common.dds import apply_dds_defaults
+
+# The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
+# it nowhere public (not in rclpy.exceptions; rclpy's own modules take it from the private
+# rclpy.impl.implementation_singleton too), so this is the project's one import of a private
+# rclpy module: everything else takes RCLError from ros_tutorials_common.ros.
+RCLError = _rclpy.RCLError
 
 
 def user_args(argv: Sequence[str] | None = None) -> list[str]:
@@ -31,7 +39,7 @@ def user_args(argv: Sequence[str] | None = None) -> list[str]:
     argv = sys.argv if argv is None else argv
     try:
         return remove_ros_args(args=list(argv))[1:]
-    except _rclpy.RCLError as error:
+    except RCLError as error:
         reason = str(error).split(", at ")[0]  # rcl appends its source file and line
         raise SystemExit(f"error: invalid ROS arguments: {reason}") from None
 
@@ -51,3 +59,21 @@ def init(
 ) -> None:
     """rclpy.init with the DDS defaults and checked ROS arguments (for the tools)."""
     rclpy.init(args=ros_args(argv), signal_handler_options=signal_handler_options)
+
+
+def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -> int:
+    """A program that is one node (turtlesim's mimic, draw_square): ``init``, make the node,
+    spin it until Ctrl-C or shutdown, destroy it, shut ROS down; the exit status, 0."""
+    init(argv)
+    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
+    node = None
+    try:
+        node = make_node()
+        rclpy.spin(node, executor)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return 0
