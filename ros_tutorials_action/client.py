@@ -15,14 +15,16 @@ from ros_tutorials_interfaces.action import Fibonacci
 
 from ros_tutorials_common import action_client_steps as steps
 
+ACTION_NAME = "ros_tutorial_action"
+
 
 def main(args=None) -> int:
     options = steps.parse_args(args)  # ORDER (default 20), --timeout, --result-timeout
     # Ctrl-C raises KeyboardInterrupt, and ROS stays up, so that the goal can still be canceled.
     rclpy.init(args=steps.ros_args(args), signal_handler_options=SignalHandlerOptions.NO)
     node = Node("action_client", enable_logger_service=True)  # create the node
-    client = ActionClient(node, Fibonacci, "ros_tutorial_action")  # and the action client
-    waits = steps.GoalWaits(node, client, "ros_tutorial_action")  # waits with a time limit
+    client = ActionClient(node, Fibonacci, ACTION_NAME)  # and the action client
+    waits = steps.GoalWaits(node, client, ACTION_NAME)  # waits with a time limit; cancel
     log = node.get_logger()
 
     def on_feedback(msg: Fibonacci.Impl.FeedbackMessage) -> None:  # the feedback callback
@@ -35,12 +37,14 @@ def main(args=None) -> int:
 
     try:
         log.info("Waiting for action server to start.")
-        if not waits.server(options.timeout):  # client.wait_for_server, at most --timeout s
+        if not client.wait_for_server(timeout_sec=options.timeout):  # wait for the server
+            log.error(f"Action server {ACTION_NAME} not available after {options.timeout:g} s")
             return 1
         log.info("Action server started, sending goal.")
         goal = Fibonacci.Goal(order=options.order)  # send the goal, with the feedback callback
-        goal_handle = waits.answer(client.send_goal_async(goal, on_feedback), options.timeout)
-        if not waits.accepted(goal_handle, goal):  # no answer in time, or rejected: said why
+        goal_future = client.send_goal_async(goal, feedback_callback=on_feedback)
+        goal_handle = waits.accepted(goal_future, goal, options.timeout)  # None: said why not
+        if goal_handle is None:
             return 1
         result_future = goal_handle.get_result_async()  # ask for the result, and wait for it
         if waits.done(result_future, options.result_timeout):

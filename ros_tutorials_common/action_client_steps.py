@@ -9,7 +9,7 @@ file shows the book's steps (``wait_for_server``, ``send_goal_async`` with a fee
 
     waits = GoalWaits(node, client, "ros_tutorial_action")
     goal_future = client.send_goal_async(goal, feedback_callback=...)
-    goal_handle = waits.answer(goal_future, options.timeout)   # None: said why
+    goal_handle = waits.accepted(goal_future, goal, options.timeout)   # None: said why not
     result_future = goal_handle.get_result_async()
     if waits.done(result_future, options.result_timeout): ...
 """
@@ -20,6 +20,7 @@ import argparse
 import contextlib
 import time
 from collections.abc import Callable, Sequence
+from typing import Any
 
 import rclpy
 from action_msgs.msg import GoalStatus
@@ -45,7 +46,13 @@ def parse_args(args: Sequence[str] | None = None) -> argparse.Namespace:
     """The client's command line (sys.argv unless args, without the ROS arguments): ORDER
     (int32, default 20 as in the book), --timeout and --result-timeout. Anything else prints
     the usage and ends the program with exit status 2."""
-    parser = argparse.ArgumentParser(prog="action_client", description="Send one Fibonacci goal.")
+    parser = argparse.ArgumentParser(
+        prog="action_client",
+        description="Send one Fibonacci goal, log its feedback, result and final state.",
+        epilog="exit status: 0 succeeded; 1 no server within --timeout, rejected, aborted, "
+        "canceled, server gone, or no result within --result-timeout (the goal is then "
+        "canceled); 2 usage error; 130 Ctrl-C, after canceling the goal",
+    )
     parser.add_argument("order", metavar="ORDER", nargs="?", type=signed_int(32), default=20,
                         help="how many terms to add to the seeds 0, 1 (default 20)")  # fmt: skip
     parser.add_argument("--timeout", metavar="SECONDS", type=positive_seconds, default=10.0,
@@ -69,13 +76,6 @@ class GoalWaits:
         self.node, self.client, self.name = node, client, name
         self.goal_future: Future | None = None
 
-    def server(self, timeout: float) -> bool:
-        """client.wait_for_server, at most ``timeout`` seconds; False (and one line) if none."""
-        if self.client.wait_for_server(timeout_sec=timeout):
-            return True
-        self.node.get_logger().error(f"Action server {self.name} not available after {timeout:g} s")
-        return False
-
     def done(self, future: Future, timeout: float) -> bool:
         """Spin until the future is done (True), or ``timeout`` s pass, or the server goes."""
         end = time.monotonic() + timeout
@@ -83,24 +83,20 @@ class GoalWaits:
             rclpy.spin_once(self.node, timeout_sec=SPIN_SLICE)
         return future.done()
 
-    def answer(self, goal_future: Future, timeout: float) -> ClientGoalHandle | None:
-        """The server's answer to the goal (accepted or not); None (and one line) if it did
-        not answer within ``timeout`` seconds. From now on, ``cancel`` can cancel the goal."""
+    def accepted(self, goal_future: Future, goal: Any, timeout: float) -> ClientGoalHandle | None:
+        """The goal's handle once the server accepted it; None (and one line) if the server
+        rejected it or did not answer within ``timeout`` seconds. From now on, ``cancel``
+        cancels the goal."""
         self.goal_future = goal_future
-        if self.done(goal_future, timeout):
-            return goal_future.result()
-        self.node.get_logger().error(f"No answer from action server {self.name} to the goal")
-        return None
-
-    def accepted(self, goal_handle: ClientGoalHandle | None, goal: object) -> bool:
-        """Whether the server accepted the goal; one line if it rejected it (a goal_handle of
-        None: no answer, already said)."""
-        if goal_handle is not None and not goal_handle.accepted:
-            order = getattr(goal, "order", "?")
+        if not self.done(goal_future, timeout):
+            self.node.get_logger().error(f"No answer from action server {self.name} to the goal")
+            return None
+        if not goal_future.result().accepted:
             self.node.get_logger().error(
-                f"Goal of order {order} rejected (the server's log says why)"
+                f"Goal of order {goal.order} rejected (the server's log says why)"
             )
-        return goal_handle is not None and goal_handle.accepted
+            return None
+        return goal_future.result()
 
     def server_gone(self) -> bool:
         """True (and one line) if the action server went away: the goal cannot finish."""

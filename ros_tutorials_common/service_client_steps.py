@@ -41,7 +41,10 @@ def parse_args(
     operands, named ``first`` and ``second`` (lower case in the result), and ``--timeout``.
     Anything else prints the usage and ends the program with exit status 2."""
     parser = argparse.ArgumentParser(
-        prog=prog, description=f"Call the service once with {first} and {second}."
+        prog=prog,
+        description=f"Call the service once with {first} and {second}, and log the answer.",
+        epilog="exit status: 0 answered; 1 no server, or no answer, within --timeout seconds; "
+        "2 usage error; 130 Ctrl-C",
     )
     for name, which in ((first, "first"), (second, "second")):
         parser.add_argument(

@@ -1,11 +1,7 @@
-"""AddTwoInts client (the classic rospy/roscpp tutorial of seeds 001-004).
-
-Asks ``add_two_ints`` for X + Y once and logs "Sum: ...".
+"""AddTwoInts client (the classic rospy/roscpp tutorial of seeds 001-004): asks
+``add_two_ints`` for X + Y once and logs "Sum: ...".
 
     add_two_ints_client 1 2   (or: python -m ros_tutorials_service.add_two_ints_client 1 2)
-
-Exit status: 0 answered; 1 no server, or no answer, within --timeout seconds (default 5);
-2 usage error (not two int64 integers); 130 Ctrl-C.
 """
 
 import sys

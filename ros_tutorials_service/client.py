@@ -1,12 +1,7 @@
-"""Service client (book: ros_tutorials_service/service_client).
+"""Service client (book: ros_tutorials_service/service_client): sends the two numbers of its
+command line to ``ros_tutorial_srv`` once, logs the request and the result, and exits.
 
-Sends the two numbers of its command line to ``ros_tutorial_srv`` once, logs the request and
-the result, and exits.
-
-    service_client 2 3     (or: python -m ros_tutorials_service.client 2 3)
-
-Exit status: 0 answered; 1 no server, or no answer, within --timeout seconds (default 5);
-2 usage error (not two int64 integers); 130 Ctrl-C.
+    service_client 2 3     (or: python -m ros_tutorials_service.client 2 3; --help)
 """
 
 import sys
