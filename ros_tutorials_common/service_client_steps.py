@@ -63,9 +63,10 @@ def wait_for_service(node: Node, client: Client, timeout: float) -> bool:
     if client.wait_for_service(timeout_sec=min(1.0, timeout)):
         return True
     log = node.get_logger()
-    log.info(f"waiting for service {client.srv_name} (up to {timeout:g} s)...")
-    if client.wait_for_service(timeout_sec=max(0.0, timeout - 1.0)):
-        return True
+    if timeout > 1.0:
+        log.info(f"waiting for service {client.srv_name} (up to {timeout:g} s)...")
+        if client.wait_for_service(timeout_sec=timeout - 1.0):
+            return True
     log.error(f"Failed to call service {client.srv_name}: no server within {timeout:g} s")
     return False
 
