@@ -11,5 +11,7 @@ checks that importing any of them loads no rclpy):
 
 ``ros_tutorials_common.ros``: what needs rclpy, the command line before ``rclpy.init``
 (``ros_args``: DDS defaults and checked ROS arguments; ``user_args``: the program's own
-arguments; ``init`` for the tools).
+arguments; ``init`` for the tools), and what the lesson clients and the action server do
+besides the book's steps (``service_client_steps``, ``action_client_steps``,
+``action_server_steps``).
 """

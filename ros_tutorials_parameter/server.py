@@ -1,11 +1,9 @@
 """Service server with a parameter (book: ros_tutorials_parameter/service_server_with_parameter).
 
 Serves SrvTutorial on ``ros_tutorial_srv`` like the service lesson's server, but the operator
-is chosen by the parameter ``calculation_method``: 1 plus (default), 2 minus,
-3 multiplication, 4 division. Change it at start or while the server runs; the next request
-uses the new operator:
+is the parameter ``calculation_method``: 1 plus (default), 2 minus, 3 multiplication,
+4 division. Set it at start or while the server runs; the next request uses it:
 
-    python -m ros_tutorials_parameter.server     (or: service_server_with_parameter)
     service_server_with_parameter --ros-args -p calculation_method:=3
     service_server_with_parameter --ros-args \
         --params-file ros_tutorials_parameter/config/parameters.yaml
@@ -48,14 +46,11 @@ class ServiceServerWithParameter(Node):
         super().__init__("service_server", enable_logger_service=True, **node_kwargs)
         # The descriptor documents the parameter (ros2 param describe shows it) and makes
         # rclpy refuse other types and values outside 1..4, at start and at run time.
-        self.declare_parameter(
-            "calculation_method",
-            PLUS,
-            ParameterDescriptor(
-                description="operator: 1 plus, 2 minus, 3 multiplication, 4 division",
-                integer_range=[IntegerRange(from_value=PLUS, to_value=DIVISION, step=1)],
-            ),
+        descriptor = ParameterDescriptor(
+            description="operator: 1 plus, 2 minus, 3 multiplication, 4 division",
+            integer_range=[IntegerRange(from_value=PLUS, to_value=DIVISION, step=1)],
         )
+        self.declare_parameter("calculation_method", PLUS, descriptor)
         self.add_on_set_parameters_callback(self.check_parameters)
         self.add_post_set_parameters_callback(self.log_parameters)
         self.service = self.create_service(SrvTutorial, "ros_tutorial_srv", self.calculation)

@@ -22,6 +22,14 @@ LESSON_FILES = sorted(
     if path.name != "__init__.py"
 )  # fmt: skip
 
+# Lesson files that are another lesson's program under the lesson's own name, as in the book
+# (the parameter lesson changes only the server; its client is the service lesson's client).
+REUSED = {"ros_tutorials_parameter/client.py": "ros_tutorials_service.client"}
+
+
+def lesson_name(path: Path) -> str:
+    return f"{path.parent.name}/{path.name}"
+
 
 def imported_modules(path: Path) -> set[str]:
     modules = set()
@@ -33,13 +41,29 @@ def imported_modules(path: Path) -> set[str]:
     return modules
 
 
-@pytest.mark.parametrize("path", LESSON_FILES, ids=lambda p: f"{p.parent.name}/{p.name}")
+@pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
 def test_a_lesson_imports_no_other_lesson(path):
     others = {m for m in imported_modules(path) if m.split(".")[0] in LESSONS}
+    reused = REUSED.get(lesson_name(path))
+    if reused:  # `from ros_tutorials_service import client`
+        others = {m for m in others if m != reused.rpartition(".")[0]}
     assert not others, f"{path.name} imports {others}"
 
 
-@pytest.mark.parametrize("path", LESSON_FILES, ids=lambda p: f"{p.parent.name}/{p.name}")
+@pytest.mark.parametrize("name", sorted(REUSED))
+def test_a_reused_lesson_runs_the_others_main_and_nothing_else(name):
+    tree = ast.parse((ROOT / name).read_text())
+    package, _, module = REUSED[name].rpartition(".")
+    imports = [ast.unparse(node) for node in tree.body if isinstance(node, ast.ImportFrom)]
+    assert imports == [f"from {package} import {module}"]
+    (main,) = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
+    assert f"return {module}.main(args, " in ast.unparse(main)
+    assert "rclpy" not in (ROOT / name).read_text()
+
+
+@pytest.mark.parametrize(
+    "path", [p for p in LESSON_FILES if lesson_name(p) not in REUSED], ids=lesson_name
+)
 def test_a_lesson_shows_init_and_shutdown_and_serves_logger_levels(path):
     source = path.read_text()
     assert "rclpy.init(" in source and "rclpy.try_shutdown()" in source
