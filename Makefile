@@ -10,12 +10,13 @@ VENV := .venv
 PY := $(VENV)/bin/python
 INSTALLED := $(VENV)/.installed
 INTERFACES := $(VENV)/.interfaces
+CTRL_C := $(VENV)/.ctrl_c
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test test-load lint bench clean interfaces
 
-setup: $(INTERFACES)
+setup: $(INTERFACES) $(CTRL_C)
 
 $(INSTALLED): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -25,6 +26,12 @@ $(INSTALLED): pyproject.toml
 
 $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 	$(PY) tools/build_interfaces.py
+	touch $@
+
+# A Ctrl-C while a command starts ends it quietly (ros_tutorials_common/ctrl_c.py): a .pth
+# file, and the console scripts started through `env --block-signal=INT`.
+$(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
+	$(PY) -c 'from ros_tutorials_common.ctrl_c import install; print(*install(), sep="\n")'
 	touch $@
 
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.

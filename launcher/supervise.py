@@ -38,6 +38,7 @@ from typing import IO
 
 from launcher import LaunchError
 from launcher.plan import ProcessSpec
+from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults
 
 POLL_SECONDS = 0.05
@@ -214,6 +215,12 @@ class Supervisor:
         if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
             os.kill(os.getpid(), signal.SIGKILL)
 
+    def _die_with_launcher_sigint_held(self) -> None:
+        # A command of this project starts with SIGINT blocked: a stop while Python is still
+        # starting waits until the command can end quietly (ros_tutorials_common/ctrl_c.py).
+        self._die_with_launcher()
+        ctrl_c.block_sigint()
+
     def start(self, child: Child) -> None:
         spec = child.spec
         env = dict(os.environ)
@@ -233,7 +240,9 @@ class Supervisor:
             env=env,
             cwd=spec.cwd,
             start_new_session=True,
-            preexec_fn=self._die_with_launcher,
+            preexec_fn=self._die_with_launcher_sigint_held
+            if ctrl_c.starts_project_command(spec.command)
+            else self._die_with_launcher,
         )
         self.guardian.watch(child.process.pid)
         child.started_at, child.restart_at = time.monotonic(), None

@@ -7,6 +7,10 @@ steps: rclpy.init, the node, spin, shutdown, in its own file).
 - ``cli``: argument types and exit codes shared by the command-line programs
 - ``int64``: keeping the servers' results inside int64
 
-Nothing is imported here, so a light user (the launcher needs only ``dds``) does not pay for
-loading rclpy.
+Nothing heavy is imported here, so a light user (the launcher needs only ``dds``) does not pay
+for loading rclpy; ``ctrl_c`` (no rclpy) makes a Ctrl-C during a command's start quiet.
 """
+
+from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
+
+_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)
