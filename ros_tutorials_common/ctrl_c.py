@@ -187,13 +187,15 @@ def unblock_sigint() -> None:
 
 
 def pth_line() -> str:
-    """The line of the .pth file: block SIGINT at once, then this file's hold() decides (this
-    project is not importable yet: the editable install's finder comes later)."""
+    """The line of the .pth file: block SIGINT at once, then run this file's hold() (this
+    project is not importable yet: the editable install's finder comes later). The file's
+    code comes from its cached .pyc, as an import would."""
     path = os.path.abspath(__file__)
     return (
         "import _signal; _signal.pthread_sigmask(_signal.SIG_BLOCK, {_signal.SIGINT}); "
-        f"exec(compile(open({path!r}, 'rb').read(), {path!r}, 'exec'), "
-        "_ros_tutorials_ctrl_c := {'__name__': 'ros_tutorials_ctrl_c_hold'}); "
+        "import _frozen_importlib_external as _ros_tutorials_loader; "
+        f"exec(_ros_tutorials_loader.SourceFileLoader('ros_tutorials_common.ctrl_c', {path!r})"
+        ".get_code(None), _ros_tutorials_ctrl_c := {'__name__': 'ros_tutorials_ctrl_c_hold'}); "
         "_ros_tutorials_ctrl_c['hold']()\n"
     )
 
@@ -216,8 +218,12 @@ def install() -> list[str]:
     """``make setup``: write the .pth file into this environment's site-packages, and start
     this project's console scripts through ``env --block-signal=INT`` (GNU coreutils), so that
     SIGINT is blocked even before Python starts. What it did, one line each."""
+    import py_compile
     import sysconfig
 
+    # Its .pyc, which the .pth line loads, even where PYTHONDONTWRITEBYTECODE keeps Python
+    # from writing one: compiling the file at every start of Python would cost milliseconds.
+    py_compile.compile(os.path.abspath(__file__), doraise=True)
     done = []
     pth = os.path.join(sysconfig.get_paths()["purelib"], PTH_NAME)
     with open(pth, "w", encoding="utf-8") as file:
