@@ -48,6 +48,9 @@ PACKAGES = frozenset(
 PTH_NAME = "00_ros_tutorials_ctrl_c.pth"  # sorted before every other .pth file
 OPTIONS_WITH_VALUE = frozenset({"-W", "-X"})
 _SIGINT = {_signal.SIGINT}
+# How rclpy and rcl refuse to go on once rclpy's signal handler has shut the context down.
+STOPPED_ROS = frozenset({"ExternalShutdownException", "NotInitializedException"})
+SHUT_DOWN = ("context is not valid", "context is invalid")  # rcl's two wordings
 
 
 def _module_is_ours(module: str) -> bool:
@@ -112,10 +115,8 @@ def interrupted(error: BaseException | None) -> bool:
         seen.add(id(error))
         if isinstance(error, KeyboardInterrupt):
             return True
-        name = type(error).__name__
-        if name == "ExternalShutdownException" or (
-            name == "RCLError" and "rcl_shutdown() was called" in str(error)
-        ):
+        name, text = type(error).__name__, str(error)
+        if name in STOPPED_ROS or (name == "RCLError" and any(s in text for s in SHUT_DOWN)):
             return True
         error = error.__cause__ or error.__context__
     return False
