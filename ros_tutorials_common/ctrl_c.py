@@ -10,21 +10,24 @@ project's commands (``is_project_command``), in two steps:
 
 - ``00_ros_tutorials_ctrl_c.pth`` (written by ``make setup``; the first ``.pth`` file ``site``
   reads, before the bootstrapper's re-exec) blocks SIGINT, and ``hold()`` keeps it blocked
-  for a command of this project (unblocks it for any other program). A Ctrl-C
-  now waits, pending; the mask and the pending signal survive the re-exec, so the interpreter
-  that runs the command starts with it blocked too.
+  for a command of this project (unblocks it for any other program). A Ctrl-C now waits,
+  pending; the mask and the pending signal survive the re-exec, so the interpreter that runs
+  the command starts with it blocked too.
 - ``release()`` runs from every package's ``__init__.py`` (the first code of this project a
-  command runs): it makes an uncaught KeyboardInterrupt leave without a traceback, then
+  command runs): it makes an uncaught KeyboardInterrupt leave without a traceback (and the
+  errors a Ctrl-C causes while rclpy loads or a node is created: ``interrupted``), then
   unblocks SIGINT. A pending Ctrl-C is delivered at once and ends the command like any later
   one before the command handles Ctrl-C itself: no output, killed by SIGINT (a shell's 130).
 
 Nothing here installs a signal handler, so rclpy's handler, installed by rclpy.init, chains to
 Python's own as before. Other programs run with this environment's Python (pytest, pip) are
-left alone. The launcher starts its children with SIGINT blocked (``blocked_sigint``), so a
-child it stops while Python is starting waits until its ``release()`` too.
+left alone.
 
-What is not covered: the first milliseconds of Python's own start, from where it installs its
-SIGINT handler to the first ``.pth`` file, run before any code of an environment can.
+Python's own start, from where it installs its SIGINT handler to the first ``.pth`` file,
+comes before any code of an environment can run. ``make setup`` therefore also starts this
+project's console scripts through ``env --block-signal=INT`` (``install``), and the launcher
+and rosrun start a command of this project with SIGINT blocked (``starts_project_command``,
+``block_sigint``). Not covered: ``python -m PACKAGE`` typed by hand, in those milliseconds.
 """
 
 from __future__ import annotations
@@ -240,7 +243,8 @@ def install() -> list[str]:
         with open(entry.path, encoding="utf-8") as file:
             first, rest = file.readline(), file.read()
         interpreter = first[2:].strip()
-        if first.startswith(SHEBANG_PREFIX) or not first.startswith("#!/") or " " in interpreter:
+        plain = not any(c in interpreter for c in " \t\\$'\"#")  # nothing env -S would parse
+        if first.startswith(SHEBANG_PREFIX) or not first.startswith("#!/") or not plain:
             continue  # done before, or not pip's plain "#!/path/to/python" line
         line = SHEBANG_PREFIX + interpreter
         if len(line) > MAX_SHEBANG:
