@@ -13,12 +13,13 @@ INTERFACES := $(VENV)/.interfaces
 PACKAGES := $(VENV)/.packages
 # A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
 PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config)
+CTRL_C := $(VENV)/.ctrl_c
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test test-load lint bench clean interfaces
 
-setup: $(INTERFACES) $(PACKAGES)
+setup: $(INTERFACES) $(PACKAGES) $(CTRL_C)
 
 $(INSTALLED): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -33,6 +34,12 @@ $(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
 # The packages in this environment's ament index (README: "Packages and the ament index").
 $(PACKAGES): $(INTERFACES) $(PACKAGE_SOURCES) tools/register_packages.py
 	$(PY) tools/register_packages.py
+	touch $@
+
+# A Ctrl-C while a command starts ends it quietly (ros_tutorials_common/ctrl_c.py): a .pth
+# file, and the console scripts started through `env --block-signal=INT`.
+$(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
+	$(PY) -c 'from ros_tutorials_common.ctrl_c import install; print(*install(), sep="\n")'
 	touch $@
 
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.

@@ -28,6 +28,7 @@ import sys
 from collections.abc import Sequence
 
 from launcher import packages
+from ros_tutorials_common import ctrl_c
 from rostool.errors import ToolError
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
@@ -97,9 +98,14 @@ def run(package: str, executable: str, args: Sequence[str]) -> None:
     command = command_line(package, executable, args)
     sys.stdout.flush()
     sys.stderr.flush()
+    held = ctrl_c.starts_project_command(command)
+    if held:  # until the executable can end quietly on Ctrl-C (see ctrl_c.py)
+        ctrl_c.block_sigint()
     try:
         os.execv(command[0], command)
     except OSError as error:
+        if held:
+            ctrl_c.unblock_sigint()
         raise ToolError(f"cannot run {command[0]}: {error.strerror}") from None
 
 

@@ -1,0 +1,132 @@
+"""Ctrl-C at any instant of a command's start: no traceback, no "Fatal Python error".
+
+A sweep starts a command as a user's shell would (without the ROS wheels' bootstrap done, so
+the interpreter re-executes itself as it does for a user), sends SIGINT after a delay (to the
+whole process group for the launcher, as a terminal does), and collects stderr. The delays
+run from 0 to well past the import of rclpy, so they fall into every phase of the start:
+Python's own, the .pth files and the re-exec, the imports, rclpy.init, the node's creation.
+Nothing here asserts a time: a slower machine moves the phases, and the sweep still crosses
+them (the runs go in parallel, which loads the machine further). See ros_tutorials_common/ctrl_c.py.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import sysconfig
+import time
+from concurrent.futures import ThreadPoolExecutor
+from fnmatch import fnmatch
+from pathlib import Path
+
+import pytest
+import tomllib
+from helpers import TIMEOUT
+
+from ros_tutorials_common import ctrl_c
+
+BIN = Path(sys.executable).parent
+ROOT = Path(__file__).resolve().parents[1]
+DELAYS = (0.0, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.25, 0.4, 0.6, 0.9, 1.4)
+# Killed by SIGINT (a shell shows 130), 130 from the program itself, or 0 from a program
+# for which Ctrl-C is the normal end (a node, once running).
+STOPPED = {-signal.SIGINT, 128 + signal.SIGINT, 0}
+
+
+def user_env() -> dict[str, str]:
+    """The test's environment as a user's shell has it: the ROS wheels' bootstrap not done."""
+    env = dict(os.environ)
+    env.pop("_ROS_WHEELS_BOOTSTRAP_COMPLETE", None)
+    return env
+
+
+def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int, str]:
+    """Start command, SIGINT it after delay seconds, wait for its end: (status, stderr)."""
+    process = subprocess.Popen(
+        command,
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        env=user_env(),
+        start_new_session=True,  # its own process group, as a terminal's foreground job
+    )
+    time.sleep(delay)  # where in the start the Ctrl-C falls; nothing depends on the exact time
+    (os.killpg if group else os.kill)(process.pid, signal.SIGINT)
+    try:
+        _, err = process.communicate(timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail(f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s")
+    return process.returncode, err.decode(errors="replace")
+
+
+COMMANDS = {
+    "rostopic echo (a tool, ROS 1 spelling)": ([str(BIN / "rostopic"), "echo", "/chatter"], False),
+    "talker (a lesson node)": ([str(BIN / "talker")], False),
+    "rosrun add_two_ints_server (exec)": (
+        [str(BIN / "rosrun"), "ros_tutorials_service", "add_two_ints_server"],
+        False,
+    ),
+    "roslaunch union.launch (the launcher and its children)": (
+        [str(BIN / "roslaunch"), "ros_tutorials_topic", "union.launch"],
+        True,
+    ),
+}
+
+
+@pytest.mark.parametrize("name", COMMANDS)
+def test_ctrl_c_at_any_instant_of_the_start_prints_no_traceback(name: str, ros_domain: int):
+    command, group = COMMANDS[name]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        runs = list(pool.map(lambda delay: interrupt_after(command, delay, group), DELAYS))
+    bad = [
+        f"Ctrl-C after {delay} s: status {status}\n{err}"
+        for delay, (status, err) in zip(DELAYS, runs, strict=True)
+        if status not in STOPPED or "Traceback" in err or "Fatal Python error" in err
+    ]
+    assert not bad, f"{len(bad)} of {len(DELAYS)} runs of {name}:\n" + "\n".join(bad[:2])
+
+
+def test_other_programs_of_the_environment_keep_pythons_ctrl_c(ros_domain: int):
+    """Only this project's commands hold SIGINT: Python's own KeyboardInterrupt elsewhere."""
+    code = "import time; print('ready', flush=True); time.sleep(60)"
+    process = subprocess.Popen(
+        [sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=user_env()
+    )
+    assert process.stdout.readline() == b"ready\n"
+    blocked = Path(f"/proc/{process.pid}/status").read_text().split("SigBlk:")[1].split()[0]
+    assert not int(blocked, 16) & (1 << (signal.SIGINT - 1)), "SIGINT left blocked"
+    process.send_signal(signal.SIGINT)
+    _, err = process.communicate(timeout=TIMEOUT)
+    assert b"KeyboardInterrupt" in err and process.returncode == -signal.SIGINT
+
+
+def test_which_command_lines_are_this_projects():
+    python = sys.executable
+    assert ctrl_c.is_project_command([python, "-m", "launcher", "union.launch"])
+    assert ctrl_c.is_project_command([python, "-X", "dev", "-mrostool", "topic", "list"])
+    assert ctrl_c.is_project_command([python, str(ROOT / "ros_tutorials_topic" / "talker.py")])
+    assert ctrl_c.is_project_command([python, str(BIN / "rostopic"), "list"])
+    assert not ctrl_c.is_project_command([python, "-m", "pytest"])
+    assert not ctrl_c.is_project_command([python, "-c", "import launcher"])
+    assert not ctrl_c.is_project_command([python, str(BIN / "pip"), "list"])
+    assert not ctrl_c.is_project_command([python])
+    assert ctrl_c.starts_project_command([python, "-m", "ros_tutorials_topic.publisher"])
+    assert ctrl_c.starts_project_command([str(BIN / "talker")])
+    assert not ctrl_c.starts_project_command(["/bin/sleep", "1"])
+
+
+def test_every_package_releases_ctrl_c_and_make_setup_installed_the_hold():
+    """A package whose __init__ did not release SIGINT would leave its commands deaf to it."""
+    patterns = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"][
+        "packages"
+    ]["find"]["include"]
+    found = {path.parent.name for path in ROOT.glob("*/__init__.py")}
+    assert {name for name in found if any(fnmatch(name, p) for p in patterns)} == ctrl_c.PACKAGES
+    for name in ctrl_c.PACKAGES:
+        assert "_release_ctrl_c()" in (ROOT / name / "__init__.py").read_text(), name
+    pth = Path(sysconfig.get_paths()["purelib"]) / ctrl_c.PTH_NAME
+    assert pth.read_text() == ctrl_c.pth_line()
