@@ -45,8 +45,9 @@ $(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.
 interfaces: $(INTERFACES)
 
+# roslaunch is `python -m launcher` as a console script: Ctrl-C is quiet from its first instant.
 run: setup
-	$(PY) -m launcher union.launch
+	$(VENV)/bin/roslaunch union.launch
 
 lint: setup
 	$(VENV)/bin/ruff check .
