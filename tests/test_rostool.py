@@ -11,17 +11,16 @@ import os
 import pty
 import re
 import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT, spin_until
+from helpers import BIN, TIMEOUT, fails, ok, spin_until
+from helpers import run as tool
 from rclpy.node import Node
 
 from rostool.ros1 import NO_ROS2_MEANING
 
-BIN = Path(sys.executable).parent
 PROJECT_TYPES = {
     "msg": ["AandB", "MsgTutorial", "Num", "UserRecord"],
     "srv": ["AddTwoInts", "SrvTutorial"],
@@ -29,32 +28,6 @@ PROJECT_TYPES = {
 }
 SRV = "ros_tutorials_interfaces/srv/SrvTutorial"
 FIBONACCI = "ros_tutorials_interfaces/action/Fibonacci"
-
-
-def tool(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
-    """Run a console script (`rostool`, `rostopic`, ...) to completion."""
-    command = [str(BIN / args[0]), *args[1:]]
-    try:
-        return subprocess.run(command, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
-
-
-def ok(*args: str) -> str:
-    result = tool(*args)
-    assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
-    assert "Traceback" not in result.stderr
-    return result.stdout
-
-
-def fails(*args: str) -> str:
-    """A command that must fail: non-zero exit, one line on stderr, no traceback."""
-    result = tool(*args)
-    assert result.returncode != 0, f"{' '.join(args)} succeeded:\n{result.stdout}"
-    assert "Traceback" not in result.stderr
-    lines = result.stderr.strip().splitlines()
-    assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
-    return lines[0]
 
 
 @pytest.fixture
@@ -441,16 +414,8 @@ def test_commands_without_ros2_meaning_name_the_ros2_way(owner, command):
 def _in_a_terminal(*args: str) -> subprocess.CompletedProcess:
     """Run a console script with a terminal as its standard input, as a learner types it."""
     controller, terminal = pty.openpty()
-    try:
-        return subprocess.run(
-            [str(BIN / args[0]), *args[1:]],
-            stdin=terminal,
-            capture_output=True,
-            text=True,
-            timeout=TIMEOUT,
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} waited for the terminal instead of failing")
+    try:  # a tool waiting for the terminal instead of failing times out
+        return tool(*args, stdin=terminal)
     finally:
         os.close(controller)
         os.close(terminal)

@@ -27,12 +27,22 @@ def call(executor, client, a: int, b: int):
     return future.result()
 
 
-def test_service_server_adds_and_logs_like_the_book(context, executor, capfd):
-    server = ServiceServer(context=context)
-    probe = Node("probe", context=context)
-    client = probe.create_client(SrvTutorial, "ros_tutorial_srv")
-    for node in (server, probe):
-        executor.add_node(node)
+@pytest.fixture
+def serving(context, executor):
+    """serving(ServerClass, srv_type, name): the lesson's server in-process, and a client of
+    its service on a probe node, both spun by the test's executor."""
+
+    def start(server_class, srv_type, service: str):
+        probe = Node("probe", context=context)
+        for node in (server_class(context=context), probe):
+            executor.add_node(node)
+        return probe.create_client(srv_type, service)
+
+    return start
+
+
+def test_service_server_adds_and_logs_like_the_book(executor, serving, capfd):
+    client = serving(ServiceServer, SrvTutorial, "ros_tutorial_srv")
 
     assert call(executor, client, 2, 3).result == 5
     assert call(executor, client, -7, 3).result == -4
@@ -43,12 +53,8 @@ def test_service_server_adds_and_logs_like_the_book(context, executor, capfd):
     assert "[service_server]: sending back response: 5" in log
 
 
-def test_service_server_answers_0_on_int64_overflow_and_keeps_serving(context, executor, capfd):
-    server = ServiceServer(context=context)
-    probe = Node("probe", context=context)
-    client = probe.create_client(SrvTutorial, "ros_tutorial_srv")
-    for node in (server, probe):
-        executor.add_node(node)
+def test_service_server_answers_0_on_int64_overflow_and_keeps_serving(executor, serving, capfd):
+    client = serving(ServiceServer, SrvTutorial, "ros_tutorial_srv")
 
     assert call(executor, client, INT64_MAX, 1).result == 0
     assert call(executor, client, INT64_MIN, -1).result == 0
@@ -60,12 +66,8 @@ def test_service_server_answers_0_on_int64_overflow_and_keeps_serving(context, e
     assert f"{INT64_MIN} + -1 = {INT64_MIN - 1} does not fit in int64" in log
 
 
-def test_add_two_ints_round_trip(context, executor, capfd):
-    server = AddTwoIntsServer(context=context)
-    probe = Node("probe", context=context)
-    client = probe.create_client(AddTwoInts, "add_two_ints")
-    for node in (server, probe):
-        executor.add_node(node)
+def test_add_two_ints_round_trip(executor, serving, capfd):
+    client = serving(AddTwoIntsServer, AddTwoInts, "add_two_ints")
 
     assert call(executor, client, 1, 2).sum == 3
     assert call(executor, client, INT64_MAX, INT64_MAX).sum == 0
