@@ -58,6 +58,12 @@ def fails(*args: str, timeout: float = TIMEOUT) -> str:
     return lines[0]
 
 
+def ready(server: NodeProcess) -> NodeProcess:
+    """The service or parameter lesson's server, once it says it is ready."""
+    server.wait_for_text("ready srv server!")
+    return server
+
+
 def retry_until(act: Callable[[], None], check: Callable[[], object]) -> object:
     """act(), then check() (which fails the test when it does not see the effect within its
     own short timeout), again and again until check() passes or TIMEOUT has gone by.
