@@ -23,6 +23,18 @@ from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 pytest_plugins = ["cpu_load"]
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        "markers", "long: a test that takes far longer than the others; it runs first"
+    )
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The tests marked long first (the rest in their order): with pytest-xdist the suite
+    then does not wait at its end for one long test that started last."""
+    items.sort(key=lambda item: item.get_closest_marker("long") is None)
+
+
 @pytest.fixture(scope="session", autouse=True)
 def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     """This session's own ROS_DOMAIN_ID, set in os.environ for rclpy and for child processes."""
