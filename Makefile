@@ -52,9 +52,11 @@ run: setup
 lint: setup
 	$(VENV)/bin/ruff check .
 
-# Two pytest processes (pytest-xdist); each claims its own ROS_DOMAIN_ID (tests/conftest.py).
+# JOBS pytest processes (pytest-xdist); each claims its own ROS_DOMAIN_ID (tests/conftest.py).
+# More than the 2 cores: most tests spend their time waiting (process start, DDS discovery).
+JOBS ?= 4
 test: lint
-	$(PY) -m pytest -n 2
+	$(PY) -m pytest -n $(JOBS)
 
 # One busy process per core beside the tests (tests/cpu_load.py), stopped when pytest ends;
 # RUNS runs in a row, stopping at the first that fails.

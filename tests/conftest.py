@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterator
 
 import pytest
 import rclpy
-from helpers import NodeProcess
+from helpers import NodeProcess, ready
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 
@@ -21,6 +21,18 @@ from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 
 # `pytest --cpu-load=auto` (`make test-load`): the suite with every core kept busy.
 pytest_plugins = ["cpu_load"]
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        "markers", "long: a test that takes far longer than the others; it runs first"
+    )
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The tests marked long first (the rest in their order): with pytest-xdist the suite
+    then does not wait at its end for one long test that started last."""
+    items.sort(key=lambda item: item.get_closest_marker("long") is None)
 
 
 @pytest.fixture(scope="session", autouse=True)
@@ -58,9 +70,7 @@ def executor(context: Context) -> Iterator[SingleThreadedExecutor]:
     ex.shutdown()
 
 
-@pytest.fixture
-def node_process(ros_domain: int) -> Iterator[Callable[..., NodeProcess]]:
-    """Start tutorial executables as real processes; all are killed at the end of the test."""
+def _processes() -> Iterator[Callable[..., NodeProcess]]:
     started: list[NodeProcess] = []
 
     def start(*args: str, env: dict[str, str] | None = None) -> NodeProcess:
@@ -71,3 +81,38 @@ def node_process(ros_domain: int) -> Iterator[Callable[..., NodeProcess]]:
     yield start
     for proc in started:
         proc.kill()
+
+
+@pytest.fixture
+def node_process(ros_domain: int) -> Iterator[Callable[..., NodeProcess]]:
+    """Start tutorial executables as real processes; all are killed at the end of the test."""
+    yield from _processes()
+
+
+@pytest.fixture(scope="class")
+def class_node_process(ros_domain: int) -> Iterator[Callable[..., NodeProcess]]:
+    """Like node_process, for processes that the tests of one class share (servers that
+    those tests only ask, never change); killed when the class's tests are done, so they
+    never meet the servers of tests outside the class (which use the same node names)."""
+    yield from _processes()
+
+
+@pytest.fixture
+def parameter_lesson(node_process) -> NodeProcess:
+    """The parameter lesson's server: /ros_tutorial_srv and its calculation_method (1..4)."""
+    return ready(node_process("-m", "ros_tutorials_parameter.server"))
+
+
+@pytest.fixture(scope="class")
+def shared_parameter_lesson(class_node_process) -> NodeProcess:
+    """The parameter lesson's server, one for the tests of a class that leave it as it is
+    (bad requests)."""
+    return ready(class_node_process("-m", "ros_tutorials_parameter.server"))
+
+
+@pytest.fixture
+def unchanged_parameter_lesson(shared_parameter_lesson) -> Iterator[NodeProcess]:
+    """The shared parameter server; after the test, it must still run (nothing already
+    running is lost because of one bad request)."""
+    yield shared_parameter_lesson
+    assert shared_parameter_lesson.process.poll() is None, shared_parameter_lesson.output

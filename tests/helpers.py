@@ -20,6 +20,7 @@ import pytest
 from rclpy.executors import Executor
 
 TIMEOUT = 30.0
+# The console scripts (`rostool`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
 BIN = Path(sys.executable).parent
 
 
@@ -28,19 +29,67 @@ def script(name: str) -> str:
     return str(BIN / name)
 
 
-def finished(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
-    """Run a console script to its end, from a folder other than the project's."""
+def run(*args: str, timeout: float = TIMEOUT, **kwargs) -> subprocess.CompletedProcess:
+    """Run a console script (`rostool`, `rosbag`, ...) to its end, as a learner types it.
+
+    kwargs go to subprocess.run (input, cwd, env); output is captured as text.
+    """
     try:
         return subprocess.run(
-            [sys.executable, script(args[0]), *args[1:]],
+            [str(BIN / args[0]), *args[1:]],
             capture_output=True,
             text=True,
-            timeout=TIMEOUT,
-            cwd=tempfile.gettempdir(),
-            env=env,
+            timeout=timeout,
+            **kwargs,
         )
     except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
+        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+
+
+def finished(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+    """Run a console script to its end, from a folder other than the project's."""
+    return run(*args, cwd=tempfile.gettempdir(), env=env)
+
+
+def ok(*args: str, timeout: float = TIMEOUT) -> str:
+    """A console script that must succeed (exit 0, no traceback); its standard output."""
+    result = run(*args, timeout=timeout)
+    assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
+    assert "Traceback" not in result.stderr
+    return result.stdout
+
+
+def fails(*args: str, timeout: float = TIMEOUT) -> str:
+    """A console script that must fail: non-zero exit, one line on stderr, no traceback."""
+    result = run(*args, timeout=timeout)
+    assert result.returncode != 0, f"{' '.join(args)} succeeded:\n{result.stdout}"
+    assert "Traceback" not in result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
+    return lines[0]
+
+
+def ready(server: NodeProcess) -> NodeProcess:
+    """The service or parameter lesson's server, once it says it is ready."""
+    server.wait_for_text("ready srv server!")
+    return server
+
+
+def retry_until(act: Callable[[], None], check: Callable[[], object]) -> object:
+    """act(), then check() (which fails the test when it does not see the effect within its
+    own short timeout), again and again until check() passes or TIMEOUT has gone by.
+
+    For a command sent before discovery has joined sender and receiver: it is lost, as it
+    would be for a person, who would press the key or send the command again.
+    """
+    deadline = time.monotonic() + TIMEOUT
+    while True:
+        act()
+        try:
+            return check()
+        except pytest.fail.Exception:
+            if time.monotonic() > deadline:
+                raise
 
 
 def spin_until(
@@ -113,6 +162,14 @@ class NodeProcess:
                     )
                 self._changed.wait(min(remaining, 0.5))
             return list(self.lines)
+
+    def wait_for_text(self, text: str, count: int = 1, timeout: float = TIMEOUT) -> list[str]:
+        """Wait until count lines contain text (fails with the output so far otherwise)."""
+        return self.wait_for_output(
+            lambda lines: sum(text in line for line in lines) >= count,
+            timeout,
+            what=text if count == 1 else f"{count} lines with {text!r}",
+        )
 
     def interrupt_when(self, seen: Callable[[str], bool]) -> None:
         """Ctrl-C the process the moment it prints a line for which seen(line) is true.

@@ -106,14 +106,8 @@ def test_rosrun_runs_the_seeds_talker_and_listener_with_ros1_arguments(node_proc
         script("rosrun"), "beginner_tutorials", "talker",
         "__name:=my_talker", "__ns:=/robot1", "chatter:=/other",
     )  # fmt: skip
-    talker.wait_for_output(
-        lambda lines: count(lines, "[robot1.my_talker]: hello world") >= 1,
-        what="the talker named robot1/my_talker",
-    )
-    listener.wait_for_output(
-        lambda lines: count(lines, "[listener]: I heard: [hello world") >= 2,
-        what="the listener hearing the remapped talker",
-    )
+    talker.wait_for_text("[robot1.my_talker]: hello world")
+    listener.wait_for_text("[listener]: I heard: [hello world", 2)
     assert talker.interrupt() == 0  # the node's own exit status: rosrun became the node
     assert listener.interrupt() == 0
 
@@ -122,10 +116,7 @@ def test_rosrun_private_parameter_and_rostool_run(node_process):
     talker = node_process(
         script("rostool"), "run", "my_package", "dynamics_talker.py", "_talker_str:=Goodbye"
     )
-    talker.wait_for_output(
-        lambda lines: count(lines, "[dynamics_talker]: Goodbye") >= 2,
-        what="the talker saying the private parameter's text",
-    )
+    talker.wait_for_text("[dynamics_talker]: Goodbye", 2)
     assert talker.interrupt() == 0
 
 
@@ -161,23 +152,15 @@ def test_roscore_explains_discovery_and_waits_for_ctrl_c(node_process, command):
 def test_aandb_talker_and_listener_log_the_seed_lines(node_process):
     listener = node_process("-m", "ros_tutorials_topic.aandb_listener")
     talker = node_process(script("rosrun"), "beginner_tutorials", "aandb_talker")
-    talker.wait_for_output(
-        lambda lines: count(lines, "[talker]: msg a: 1.000000, msg b:2.000000") >= 1,
-        what="the AandB talker's line",
-    )
-    listener.wait_for_output(
-        lambda lines: count(lines, "[listener]: I heard: msg:a 1.000000, msg:b 2.000000") >= 2,
-        what="the AandB listener's line",
-    )
+    talker.wait_for_text("[talker]: msg a: 1.000000, msg b:2.000000")
+    listener.wait_for_text("[listener]: I heard: msg:a 1.000000, msg:b 2.000000", 2)
     assert talker.interrupt() == 0 and listener.interrupt() == 0
 
 
 def test_num_publisher_and_subscriber_count_as_the_seed(node_process):
     subscriber = node_process(script("num_subscriber"))
     publisher = node_process(script("rosrun"), "pub_sub", "publisher")
-    lines = subscriber.wait_for_output(
-        lambda lines: count(lines, "[sub]: I heard: [") >= 3, what="three numbers"
-    )
+    lines = subscriber.wait_for_text("[sub]: I heard: [", 3)
     heard = [int(m.group(1)) for line in lines if (m := re.search(r"I heard: \[(\d+)\]", line))]
     assert heard == list(range(heard[0], heard[0] + len(heard))) and heard[0] >= 1
     assert publisher.interrupt() == 0 and subscriber.interrupt() == 0
@@ -186,16 +169,8 @@ def test_num_publisher_and_subscriber_count_as_the_seed(node_process):
 def test_user_record_publisher_and_subscriber(node_process):
     subscriber = node_process(script("user_record_subscriber"))
     publisher = node_process(script("user_record_publisher"))
-    publisher.wait_for_output(
-        lambda lines: count(lines, "first_name: Ada, last_name: Lovelace, age: 36, score: ") >= 1,
-        what="the publisher's record line",
-    )
-    subscriber.wait_for_output(
-        lambda lines: (
-            count(lines, "[user_record_subscriber]: Receive : Ada Lovelace, age 36, ") >= 2
-        ),
-        what="the subscriber's record line",
-    )
+    publisher.wait_for_text("first_name: Ada, last_name: Lovelace, age: 36, score: ")
+    subscriber.wait_for_text("[user_record_subscriber]: Receive : Ada Lovelace, age 36, ", 2)
     assert publisher.interrupt() == 0 and subscriber.interrupt() == 0
 
 

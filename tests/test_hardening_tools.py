@@ -11,26 +11,35 @@ import threading
 import pytest
 from helpers import TIMEOUT
 from test_hardening_launcher import BOMB
-from test_rostool import BIN, _ready, fails, ok, tool
+from test_rostool import BIN, fails, ok, tool
 
 
-@pytest.fixture
-def parameter_lesson(node_process):
-    """The parameter lesson's server: /ros_tutorial_srv and its calculation_method (1..4)."""
-    return _ready(node_process("-m", "ros_tutorials_parameter.server"))
+class TestAgainstOneParameterServer:
+    """Refused requests to one parameter server, which the tests share: none changes it."""
 
+    def test_rosparam_set_an_integer_beyond_int64_is_one_line(self, unchanged_parameter_lesson):
+        line = fails("rosparam", "set", "/calculation_method", "99999999999999999999")
+        assert "does not fit a ROS integer (int64)" in line
+        assert ok("rosparam", "get", "/calculation_method").strip() == "1"  # nothing changed
 
-def test_rosparam_set_an_integer_beyond_int64_is_one_line(parameter_lesson):
-    line = fails("rosparam", "set", "/calculation_method", "99999999999999999999")
-    assert "does not fit a ROS integer (int64)" in line
-    assert ok("rosparam", "get", "/calculation_method").strip() == "1"  # nothing changed
+    def test_rostool_param_set_an_integer_beyond_int64_is_one_line(
+        self, unchanged_parameter_lesson
+    ):
+        line = fails(
+            "rostool",
+            "param",
+            "set",
+            "/service_server",
+            "calculation_method",
+            "-99999999999999999999",
+        )
+        assert "does not fit a ROS integer (int64)" in line
 
-
-def test_rostool_param_set_an_integer_beyond_int64_is_one_line(parameter_lesson):
-    line = fails(
-        "rostool", "param", "set", "/service_server", "calculation_method", "-99999999999999999999"
-    )
-    assert "does not fit a ROS integer (int64)" in line
+    def test_the_tools_still_work_after_refusing(self, unchanged_parameter_lesson):
+        """Nothing already running is hurt by a refused request."""
+        fails("rosparam", "set", "/calculation_method", "99999999999999999999")
+        result = tool("rosservice", "call", "/ros_tutorial_srv", "10", "5")
+        assert result.returncode == 0 and "result: 15" in result.stdout
 
 
 def test_a_number_into_a_string_field_is_refused():
@@ -117,10 +126,3 @@ def test_rostopic_pub_at_1e9_hz_ends_cleanly_on_sigterm():
             proc.wait()
     assert b"Traceback" not in err and b"RCLError" not in err, err.decode(errors="replace")
     assert proc.returncode == 0, err  # like Ctrl-C: how a flood ends
-
-
-def test_the_tools_still_work_after_refusing(parameter_lesson):
-    """Nothing already running is hurt by a refused request."""
-    fails("rosparam", "set", "/calculation_method", "99999999999999999999")
-    result = tool("rosservice", "call", "/ros_tutorial_srv", "10", "5")
-    assert result.returncode == 0 and "result: 15" in result.stdout

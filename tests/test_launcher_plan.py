@@ -31,6 +31,11 @@ def ros1(body: str) -> str:
     return f"<launch>\n{body}\n</launch>\n"
 
 
+def write_ros1(tmp_path: Path, name: str, body: str) -> None:
+    """A ROS 1 launch file beside the test's own, for it to include."""
+    (tmp_path / name).write_text(ros1(body))
+
+
 def node1(
     name: str = "pub", type_: str = "topic_publisher", extra: str = "", body: str = ""
 ) -> str:
@@ -182,8 +187,10 @@ def test_if_and_unless_take_true_false_1_0_in_any_case(tmp_path):
 
 def test_params_follow_the_parameter_server_last_one_wins(tmp_path):
     # Seed 004: the group's talker_str is written after the include, and wins.
-    (tmp_path / "talker.launch").write_text(
-        ros1('<param name="talker_str" type="str" value="hello world"/>' + node1("talker"))
+    write_ros1(
+        tmp_path,
+        "talker.launch",
+        '<param name="talker_str" type="str" value="hello world"/>' + node1("talker"),
     )
     xml = ros1(
         '<group if="true"><include file="talker.launch"/>'
@@ -236,9 +243,8 @@ def test_group_remaps_and_env_apply_to_later_nodes_in_scope_only(tmp_path):
 
 
 def test_include_is_scoped_and_takes_args_ns_and_pass_all_args(tmp_path):
-    (tmp_path / "inner.launch").write_text(
-        ros1('<arg name="who"/><arg name="private" default="p"/>' + node1("$(arg who)"))
-    )
+    inner = '<arg name="who"/><arg name="private" default="p"/>' + node1("$(arg who)")
+    write_ros1(tmp_path, "inner.launch", inner)
     xml = ros1(
         '<arg name="who" default="outer"/>\n'
         '<include file="$(dirname)/inner.launch" ns="sub"><arg name="who" value="in"/></include>\n'
@@ -255,7 +261,7 @@ def test_include_is_scoped_and_takes_args_ns_and_pass_all_args(tmp_path):
 
 
 def test_include_loops_and_missing_files_are_errors(tmp_path):
-    (tmp_path / "loop.launch").write_text(ros1('<include file="test.launch"/>'))
+    write_ros1(tmp_path, "loop.launch", '<include file="test.launch"/>')
     assert "include each other in a loop" in error(tmp_path, ros1('<include file="loop.launch"/>'))
     assert "included file" in error(tmp_path, ros1('<include file="nothing.launch"/>'))
 

@@ -67,6 +67,7 @@ def run(command: list[str], env: dict[str, str], timeout: float = TIMEOUT) -> st
     return result.stdout
 
 
+@pytest.mark.long  # the rosidl build: 33 to 43 s of CPU time
 def test_a_new_message_from_the_readme_builds_and_is_used_by_a_node(tmp_path, node_process):
     section = readme_section("Your own message")
     definition, cmake_line = code_block(section, "text"), code_block(section, "cmake").strip()

@@ -11,14 +11,12 @@ from __future__ import annotations
 
 import re
 import signal
-import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
 import yaml
-from helpers import TIMEOUT, NodeProcess, spin_until
+from helpers import BIN, TIMEOUT, NodeProcess, run, spin_until
 from mcap.reader import make_reader
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile
@@ -28,22 +26,12 @@ from rosbags.rosbag2 import Reader
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from std_msgs.msg import String
 
-BIN = Path(sys.executable).parent
 TALKER_TEXT = "recorded by the bag test"
 
 
 def rosbag(*args: str) -> NodeProcess:
     """`rosbag ...` as a real process (the installed console script)."""
     return NodeProcess(str(BIN / "rosbag"), *args)
-
-
-def run(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
-    try:
-        return subprocess.run(
-            [str(BIN / args[0]), *args[1:]], capture_output=True, text=True, timeout=timeout
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
 
 
 def wait_subscribed(recorder: NodeProcess, *topics: str) -> None:

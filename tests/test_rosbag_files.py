@@ -17,14 +17,13 @@ import select
 import shutil
 import signal
 import subprocess
-import sys
 import termios
 import time
 from pathlib import Path
 
 import pytest
 import yaml
-from helpers import TIMEOUT, NodeProcess, spin_until
+from helpers import BIN, TIMEOUT, NodeProcess, run, spin_until
 from mcap.reader import make_reader
 from rclpy.node import Node
 from rclpy.serialization import serialize_message
@@ -35,17 +34,7 @@ from rostool.bag import definitions, storage
 from rostool.bag.storage import BagError, BagReader, BagWriter, TopicInfo
 from rostool.errors import ToolError
 
-BIN = Path(sys.executable).parent
 ROS2_BAGS = Path(__file__).parent / "data" / "ros2_bags"
-
-
-def run(*args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
-    try:
-        return subprocess.run(
-            [str(BIN / args[0]), *args[1:]], capture_output=True, text=True, timeout=timeout
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
 
 
 def fails(*args: str) -> str:

@@ -10,40 +10,21 @@ import pty
 import select
 import signal
 import subprocess
-import sys
 import termios
 import threading
 import time
-from pathlib import Path
 
 import pygame
 import pytest
 from geometry_msgs.msg import Twist
-from helpers import TIMEOUT, spin_until
+from helpers import BIN, TIMEOUT, ok, retry_until, spin_until
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from turtlesim.msg import Pose
 
 from ros_tutorials_turtlesim.turtlesim_node import TurtlesimNode, topic_qos
 
-BIN = Path(sys.executable).parent
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
-
-
-def tool(*args: str) -> subprocess.CompletedProcess:
-    try:
-        return subprocess.run(
-            [str(BIN / args[0]), *args[1:]], capture_output=True, text=True, timeout=TIMEOUT
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {TIMEOUT:.0f} s")
-
-
-def ok(*args: str) -> str:
-    result = tool(*args)
-    assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
-    assert "Traceback" not in result.stderr
-    return result.stdout
 
 
 class Watcher:
@@ -74,18 +55,9 @@ class Watcher:
         """Publish the command every second until condition holds for a pose: the nodes
         in between (mimic) may still be discovering each other when the first one goes."""
         publisher = self.node.create_publisher(Twist, topic, topic_qos())
-        deadline = time.monotonic() + TIMEOUT
-        while True:
-            publisher.publish(twist)
-            try:
-                return self.until(condition, what, timeout=1.0)
-            except pytest.fail.Exception:
-                if time.monotonic() > deadline:
-                    raise
-
-
-def started(proc, line: str) -> None:
-    proc.wait_for_output(lambda lines: any(line in text for text in lines), what=line)
+        return retry_until(
+            lambda: publisher.publish(twist), lambda: self.until(condition, what, timeout=1.0)
+        )
 
 
 def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_path):
@@ -100,7 +72,7 @@ def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_
         f"snapshot_path:={at_exit}",
         env=HEADLESS,
     )
-    started(sim, "Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]")
+    sim.wait_for_text("Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]")
     assert "Running headless (no DISPLAY or WAYLAND_DISPLAY, so no window)" in sim.output
     assert "Starting turtlesim with node name /turtlesim" in sim.output
     watcher = Watcher(executor)
@@ -116,7 +88,9 @@ def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_
     expected = "float32 x float32 y float32 theta string name --- string name"
     assert shown.stdout.split() == expected.split(" ")
     assert "name: new_turtle" in ok("rosservice", "call", "/spawn", "3", "3", "0.2", "new_turtle")
-    started(sim, "Spawning turtle [new_turtle] at x=[3.000000], y=[3.000000], theta=[0.200000]")
+    sim.wait_for_text(
+        "Spawning turtle [new_turtle] at x=[3.000000], y=[3.000000], theta=[0.200000]"
+    )
     assert "/new_turtle/pose" in ok("rostopic", "list")
     assert "name: turtle2" in ok("rosservice", "call", "/spawn", "8", "2", "2.0", "")  # any name
 
@@ -149,7 +123,7 @@ def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_
     ok("rosparam", "set", "/turtlesim/background_r", "150")
     assert ok("rosparam", "get", "/turtlesim/background_r").strip() == "150"
     sim.process.send_signal(signal.SIGUSR1)
-    started(sim, f"Wrote the canvas to {at_exit}")
+    sim.wait_for_text(f"Wrote the canvas to {at_exit}")
     assert tuple(pygame.image.load(str(at_exit)).get_at((2, 2)))[:3] == (150, 86, 255)
     at_exit.unlink()
 
@@ -189,9 +163,9 @@ def test_seed_003_two_simulators_joined_by_mimic(node_process, executor, launch_
 @pytest.mark.parametrize("launch_file", ["turtlesim_teleop.launch", "turtlesim_teleop.launch.xml"])
 def test_seed_002_turtlesim_and_teleop_launch(node_process, executor, launch_file):
     launch = _launch(node_process, "turtlesim", launch_file)
-    started(launch, "Spawning turtle [turtle1]")
+    launch.wait_for_text("Spawning turtle [turtle1]")
     # launched, the teleop has no terminal: it says so, and turtlesim runs on
-    started(launch, "stdin is not a terminal")
+    launch.wait_for_text("stdin is not a terminal")
     Watcher(executor).until(lambda p: True, "turtle1's pose")
     assert launch.interrupt() == 130
     assert "Traceback" not in launch.output
@@ -297,14 +271,9 @@ def test_teleop_key_drives_rotates_cancels_and_quits(watched_sim, teleop):
     def press_until(keys: str, condition, what: str) -> Pose:
         """Press again until it shows, as a person would: a key pressed before discovery
         has joined the teleop to the simulator is lost (one command per press)."""
-        deadline = time.monotonic() + TIMEOUT
-        while True:
-            teleop.type(keys)
-            try:
-                return watched_sim.until(condition, what, timeout=1.0)
-            except pytest.fail.Exception:
-                if time.monotonic() > deadline:
-                    raise
+        return retry_until(
+            lambda: teleop.type(keys), lambda: watched_sim.until(condition, what, timeout=1.0)
+        )
 
     press_until("\x1b[A", lambda p: p.linear_velocity == 2.0, "forward at 2 m/s (up arrow)")
     press_until("\x1b[D", lambda p: p.angular_velocity == 2.0, "turning at 2 rad/s (left)")
@@ -357,7 +326,7 @@ def test_a_display_that_cannot_open_means_headless_with_a_warning(node_process):
         "ros_tutorials_turtlesim.turtlesim_node",
         env={"DISPLAY": ":4242", "WAYLAND_DISPLAY": "", "SDL_VIDEODRIVER": ""},
     )
-    started(sim, "Spawning turtle [turtle1]")
+    sim.wait_for_text("Spawning turtle [turtle1]")
     assert "Running headless: no window could open on DISPLAY=:4242" in sim.output
     assert sim.interrupt() == 0
     assert "Traceback" not in sim.output
