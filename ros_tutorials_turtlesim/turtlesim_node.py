@@ -529,41 +529,44 @@ class TurtlesimNode(Node):
             handle.done.set_result(RotateAbsolute.Result(delta=entry.goal_delta))
 
 
-def spin_until_signalled(node: TurtlesimNode, executor: SingleThreadedExecutor) -> None:
-    """Spin until Ctrl-C or SIGTERM. Their handler only notes the signal and wakes the executor,
-    so the loop ends between two callbacks, never inside rclpy's own code, where an exception
-    raised by a signal can leave a half-made object behind (and a traceback from its __del__)."""
-    signalled = []
-    wake = node.create_guard_condition(lambda: None)
+class StopSignals:
+    """Ctrl-C and SIGTERM, noted and nothing more: the spin loop ends between two callbacks,
+    never inside rclpy's own code or close(), where an exception raised by a signal can leave a
+    half-made object behind (and a traceback from its __del__)."""
 
-    def on_signal(signum: int, _frame) -> None:
-        signalled.append(signum)
-        wake.trigger()
+    def __init__(self) -> None:
+        self.received: list[int] = []
+        self.wake = None  # the node's guard condition, while the loop spins
+        signal.signal(signal.SIGINT, self.note)
+        signal.signal(signal.SIGTERM, self.note)
 
-    signal.signal(signal.SIGINT, on_signal)
-    signal.signal(signal.SIGTERM, on_signal)
-    executor.add_node(node)
-    while not signalled:
-        executor.spin_once()
+    def note(self, signum: int, _frame) -> None:
+        if not self.received and self.wake is not None:
+            self.wake.trigger()  # the executor's wait returns, the loop sees it
+        self.received.append(signum)
 
 
 def main(argv: list[str] | None = None) -> int:
     # Ctrl-C and SIGTERM are handled here, not by rclpy (whose handler shuts ROS down at once,
     # racing close()): the node is destroyed and the PNG written while ROS is still up.
     init(argv, signal_handler_options=SignalHandlerOptions.NO)
-    signal.signal(signal.SIGTERM, signal.default_int_handler)  # until the node is up
-    executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as turtle1 is up
+    stop = StopSignals()
+    executor = SingleThreadedExecutor()
     node = None
     # kill -USR1 PID: a PNG now (set first: SIGUSR1's default would end the process)
     signal.signal(signal.SIGUSR1, lambda *_: node and node.request_snapshot())
     try:
         node = TurtlesimNode()
-        spin_until_signalled(node, executor)
-    except (KeyboardInterrupt, ExternalShutdownException, WindowClosed):
+        stop.wake = node.create_guard_condition(lambda: None)
+        executor.add_node(node)
+        while not stop.received:
+            executor.spin_once()
+    except (ExternalShutdownException, WindowClosed):
         pass
     except ParameterException as error:
         raise SystemExit(f"error: {error}") from None
     finally:
+        stop.wake = None  # a signal from here on wakes nothing
         if node is not None:
             node.close()
         rclpy.try_shutdown()

@@ -330,3 +330,16 @@ def test_a_display_that_cannot_open_means_headless_with_a_warning(node_process):
     assert "Running headless: no window could open on DISPLAY=:4242" in sim.output
     assert sim.interrupt() == 0
     assert "Traceback" not in sim.output
+
+
+def test_ctrl_c_then_sigterm_at_once_still_closes_cleanly(node_process):
+    """A launcher escalates to SIGTERM while the node may still be closing after Ctrl-C: the
+    second signal must not break into close() (it used to raise KeyboardInterrupt there)."""
+    for _ in range(3):
+        sim = node_process("-m", "ros_tutorials_turtlesim.turtlesim_node", env=HEADLESS)
+        sim.wait_for_text("Spawning turtle [turtle1]")
+        sim.process.send_signal(signal.SIGINT)
+        sim.process.send_signal(signal.SIGTERM)
+        assert sim.wait() == 0, sim.output
+        assert "Traceback" not in sim.output
+        assert "Exception ignored" not in sim.output
