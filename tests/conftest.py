@@ -45,6 +45,9 @@ def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     domain_id, lock = claim_private_domain_id()
     os.environ["ROS_DOMAIN_ID"] = str(domain_id)
     os.environ["ROS_LOG_DIR"] = str(tmp_path_factory.mktemp("ros_log"))
+    # A process that crashes (two rare segfaults at exit after Ctrl-C/SIGTERM were seen on
+    # 2026-11-22) prints where each thread was, into the output the failing test shows.
+    os.environ.setdefault("PYTHONFAULTHANDLER", "1")
     apply_dds_defaults()
     yield domain_id
     lock.close()
