@@ -174,7 +174,9 @@ def test_sigterm_escalates_for_a_child_that_ignores_sigint(node_process, tmp_pat
         'sigterm_timeout="1"/></launch>'
     )
     launcher = node_process("-m", "launcher", launch_file(tmp_path, xml))
-    lines = launcher.wait_for_output(lambda lines: "[stubborn] ready" in lines, what="ready")
+    lines = launcher.wait_for_output(  # the child's line may come before the launcher's
+        lambda lines: "[stubborn] ready" in lines and started_pids(lines), what="ready, its pid"
+    )
     pids = list(started_pids(lines).values())
     launcher.process.send_signal(signal.SIGTERM)
     assert launcher.wait() == 143
