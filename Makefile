@@ -64,7 +64,7 @@ RUNS ?= 1
 test-load: lint
 	@for run in $$(seq $(RUNS)); do \
 		echo "== test run $$run of $(RUNS), CPU kept busy"; \
-		$(PY) -m pytest --cpu-load=auto $(PYTEST_ARGS) || exit 1; \
+		$(PY) -m pytest --cpu-load=auto -n $(JOBS) $(PYTEST_ARGS) || exit 1; \
 	done
 
 bench: setup
