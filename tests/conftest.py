@@ -11,11 +11,13 @@ import os
 import signal
 from collections.abc import Callable, Iterator
 
+import helpers
 import pytest
 import rclpy
 from helpers import NodeProcess, ready
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
+from warm import Starter
 
 from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 
@@ -49,7 +51,12 @@ def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     # 2026-11-22) prints where each thread was, into the output the failing test shows.
     os.environ.setdefault("PYTHONFAULTHANDLER", "1")
     apply_dds_defaults()
+    # The processes of this project that the tests start, forked from one that has imported
+    # it (tests/warm.py): a third of the CPU a cold start costs.
+    helpers.warm = Starter(str(tmp_path_factory.mktemp("warm")))
     yield domain_id
+    helpers.warm.stop()
+    helpers.warm = None
     lock.close()
 
 

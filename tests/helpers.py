@@ -13,15 +13,33 @@ import sys
 import tempfile
 import threading
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
 import pytest
 from rclpy.executors import Executor
+from warm import Starter
 
 TIMEOUT = 30.0
 # The console scripts (`rostool`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
 BIN = Path(sys.executable).parent
+# This pytest process's warm-start server (tests/warm.py), set by conftest's ros_domain.
+warm: Starter | None = None
+
+
+def _warm(command: Sequence[str], env: Mapping[str, str], cold: bool) -> Starter | None:
+    """The warm-start server if this command may start warm, else None (a cold start)."""
+    if cold or warm is None or not warm.eligible(command, env):
+        return None
+    return warm
+
+
+_file = tempfile.TemporaryFile
+
+
+def _text(output: bytes) -> str:
+    """Bytes a process wrote, as subprocess's text mode reads them (universal newlines)."""
+    return output.decode(errors="replace").replace("\r\n", "\n").replace("\r", "\n")
 
 
 def script(name: str) -> str:
@@ -29,21 +47,53 @@ def script(name: str) -> str:
     return str(BIN / name)
 
 
-def run(*args: str, timeout: float = TIMEOUT, **kwargs) -> subprocess.CompletedProcess:
+def run(
+    *args: str,
+    timeout: float = TIMEOUT,
+    input: str | None = None,
+    stdin: int | None = None,
+    cwd: str | None = None,
+    env: dict[str, str] | None = None,
+    cold: bool = False,
+) -> subprocess.CompletedProcess:
     """Run a console script (`rostool`, `rosbag`, ...) to its end, as a learner types it.
 
-    kwargs go to subprocess.run (input, cwd, env); output is captured as text.
+    Output is captured as text. A command of this project in this session's environment
+    starts warm (tests/warm.py) unless cold is true.
     """
-    try:
-        return subprocess.run(
-            [str(BIN / args[0]), *args[1:]],
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            **kwargs,
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+    command = [str(BIN / args[0]), *args[1:]]
+    starter = _warm(command, os.environ if env is None else env, cold)
+    if starter is None:
+        try:
+            return subprocess.run(
+                command,
+                capture_output=True,
+                text=True,
+                timeout=timeout,
+                input=input,
+                stdin=stdin,
+                cwd=cwd,
+                env=env,
+            )
+        except subprocess.TimeoutExpired:
+            pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+    with tempfile.TemporaryFile() as into, tempfile.TemporaryFile() as out, _file() as err:
+        if input is not None:
+            into.write(input.encode())
+            into.seek(0)
+        given = stdin if input is None else into.fileno()
+        streams = [0 if given is None else given, out.fileno(), err.fileno()]
+        environment = os.environ if env is None else env
+        process = starter.start(command, environment, streams, cwd, new_session=False)
+        try:
+            code = process.wait(timeout)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+            pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
+        out.seek(0)
+        err.seek(0)
+        return subprocess.CompletedProcess(command, code, _text(out.read()), _text(err.read()))
 
 
 def finished(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
@@ -110,33 +160,50 @@ class NodeProcess:
     """A tutorial executable run as a real process, its output collected line by line."""
 
     def __init__(
-        self, *args: str, env: dict[str, str] | None = None, prefix: Sequence[str] = ()
+        self,
+        *args: str,
+        env: dict[str, str] | None = None,
+        prefix: Sequence[str] = (),
+        cold: bool = False,
     ) -> None:
         # prefix: a command that runs Python for us, e.g. `ip netns exec NS` (two machines).
         self.args = [*prefix, sys.executable, *args]
         self.lines: list[str] = []
         self._changed = threading.Condition()
         self._interrupt_on: Callable[[str], bool] | None = None
-        self.process = subprocess.Popen(
-            self.args,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-            env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})},
-            start_new_session=True,
-        )
+        environment = {**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})}
+        starter = None if prefix else _warm(args, environment, cold)
+        if starter is None:
+            self.process = subprocess.Popen(
+                self.args,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.STDOUT,
+                text=True,
+                env=environment,
+                start_new_session=True,
+            )
+            self._stdout = self.process.stdout
+        else:
+            read_end, write_end = os.pipe()
+            try:
+                streams = [0, write_end, write_end]
+                self.process = starter.start(args, environment, streams, None, True)
+            finally:
+                os.close(write_end)
+            self._stdout = open(read_end, encoding="utf-8", errors="replace")  # noqa: SIM115
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
 
     def _read(self) -> None:
-        assert self.process.stdout is not None
-        for line in self.process.stdout:
+        assert self._stdout is not None
+        for line in self._stdout:
             with self._changed:
                 self.lines.append(line.rstrip("\n"))
                 if self._interrupt_on is not None and self._interrupt_on(self.lines[-1]):
                     self._interrupt_on = None
                     self.process.send_signal(signal.SIGINT)
                 self._changed.notify_all()
+        self._stdout.close()
         with self._changed:
             self._changed.notify_all()
 

@@ -199,7 +199,7 @@ def test_ctrl_c_while_children_import_prints_no_traceback(node_process):
     """SIGINT as soon as the four children exist: they are still importing rclpy."""
     launcher = node_process("-m", "launcher", "union.launch")
     pids = list(wait_started(launcher, 4).values())
-    assert launcher.interrupt() == 130
+    assert launcher.interrupt() == 130, launcher.output
     assert "Traceback" not in launcher.output, launcher.output
     assert "KeyboardInterrupt" not in launcher.output
     assert_all_gone(pids)
