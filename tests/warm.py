@@ -60,10 +60,13 @@ ENDED = b"ended "
 # --- the server ---------------------------------------------------------------------------
 
 
-def _preload() -> None:
+def _preload() -> dict[str, str]:
+    """Import what every command needs; return the variables those imports put into the
+    environment (a module's os.environ.setdefault), which each child gets again."""
     import importlib
     import pkgutil
 
+    before = dict(os.environ)
     for name in PRELOAD:
         module = importlib.import_module(name)
         if name.startswith("ros_tutorials_"):  # a lesson package: each node's module
@@ -76,6 +79,7 @@ def _preload() -> None:
     for kind in (rcl_interfaces.msg.ParameterEvent, rcl_interfaces.msg.Log):
         check_for_type_support(kind)
     check_for_type_support(type_description_interfaces.srv.GetTypeDescription)
+    return {name: value for name, value in os.environ.items() if before.get(name) != value}
 
 
 def serve(path: str) -> tuple[dict, list[int]]:
@@ -140,7 +144,7 @@ def _reap(children: dict[int, socket.socket]) -> None:
             connection.close()
 
 
-def become(request: dict, fds: list[int]) -> None:
+def become(request: dict, fds: list[int], imported: dict[str, str]) -> None:
     """In the child: the process state a fresh interpreter running the command would have."""
     for target, fd in enumerate(fds):
         os.dup2(fd, target)  # sys.stdin/stdout/stderr keep their objects, on the new files
@@ -152,6 +156,8 @@ def become(request: dict, fds: list[int]) -> None:
     os.chdir(request["cwd"])
     os.environ.clear()
     os.environ.update(request["env"])
+    for name, value in imported.items():
+        os.environ.setdefault(name, value)
     signal.signal(signal.SIGINT, signal.default_int_handler)
     signal.pthread_sigmask(signal.SIG_SETMASK, ())
     import random
@@ -249,8 +255,16 @@ class WarmProcess:
 class Starter:
     """The server of one pytest process, started with that process's environment."""
 
-    # Variables that change nothing a module reads when imported (pytest names each test).
-    RUN_TIME_ONLY = ("PYTEST_CURRENT_TEST", "PYTHONUNBUFFERED")
+    # Variables no module of this project reads when imported, only when it runs: a command
+    # with other values of these still starts warm (pytest names each test; turtlesim, the
+    # GUI stand-ins and rostool log look for a display and the log folder at run time).
+    RUN_TIME_ONLY = (
+        "PYTEST_CURRENT_TEST",
+        "PYTHONUNBUFFERED",
+        "DISPLAY",
+        "WAYLAND_DISPLAY",
+        "ROS_LOG_DIR",
+    )
 
     def __init__(self, folder: str) -> None:
         self.path = os.path.join(folder, "warm.sock")
@@ -304,8 +318,8 @@ class Starter:
 
 
 if __name__ == "__main__":
-    _preload()
+    imported = _preload()
     request, fds = serve(sys.argv[1])
-    become(request, fds)
-    del request, fds
+    become(request, fds, imported)
+    del request, fds, imported
     run(sys.orig_argv[1:])
