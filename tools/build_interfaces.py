@@ -154,6 +154,11 @@ def build_package(
             return False
     for stale in installed_before - installed_files(build):
         path = Path(stale)
+        # share/PKG/package.xml, once tools/register_packages.py made it a link to the source,
+        # is the source itself to CMake: it installs nothing there and leaves it out of the
+        # manifest. That file is not stale.
+        if path.resolve().is_relative_to(source.resolve()):
+            continue
         if path.is_relative_to(prefix) and path.is_file():
             path.unlink()
             for compiled in path.parent.glob(f"__pycache__/{path.stem}.*.pyc"):
