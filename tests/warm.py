@@ -257,12 +257,14 @@ class Starter:
 
     # Variables no module of this project reads when imported, only when it runs: a command
     # with other values of these still starts warm (pytest names each test; turtlesim, the
-    # GUI stand-ins and rostool log look for a display and the log folder at run time).
+    # GUI stand-ins and rostool log look for a display and the log folder at run time, and
+    # SDL sets SDL_VIDEODRIVER in the test's own process when an in-process turtlesim draws).
     RUN_TIME_ONLY = (
         "PYTEST_CURRENT_TEST",
         "PYTHONUNBUFFERED",
         "DISPLAY",
         "WAYLAND_DISPLAY",
+        "SDL_VIDEODRIVER",
         "ROS_LOG_DIR",
     )
 
