@@ -6,6 +6,7 @@ saying what was awaited; nothing here sleeps and hopes.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
@@ -34,9 +35,6 @@ def _warm(command: Sequence[str], env: Mapping[str, str], cold: bool) -> Starter
     return warm
 
 
-_file = tempfile.TemporaryFile
-
-
 def _text(output: bytes) -> str:
     """Bytes a process wrote, as subprocess's text mode reads them (universal newlines)."""
     return output.decode(errors="replace").replace("\r\n", "\n").replace("\r", "\n")
@@ -62,7 +60,8 @@ def run(
     starts warm (tests/warm.py) unless cold is true.
     """
     command = [str(BIN / args[0]), *args[1:]]
-    starter = _warm(command, os.environ if env is None else env, cold)
+    environment = os.environ if env is None else env
+    starter = _warm(command, environment, cold)
     if starter is None:
         try:
             return subprocess.run(
@@ -77,13 +76,13 @@ def run(
             )
         except subprocess.TimeoutExpired:
             pytest.fail(f"{' '.join(args)} did not finish within {timeout:.0f} s")
-    with tempfile.TemporaryFile() as into, tempfile.TemporaryFile() as out, _file() as err:
+    with contextlib.ExitStack() as files:
+        into, out, err = (files.enter_context(tempfile.TemporaryFile()) for _ in range(3))
         if input is not None:
             into.write(input.encode())
             into.seek(0)
         given = stdin if input is None else into.fileno()
         streams = [0 if given is None else given, out.fileno(), err.fileno()]
-        environment = os.environ if env is None else env
         process = starter.start(command, environment, streams, cwd, new_session=False)
         try:
             code = process.wait(timeout)
