@@ -26,6 +26,7 @@ when the child has ended, its wait status (as ``os.waitpid`` gives it).
 from __future__ import annotations
 
 import contextlib
+import gc
 import json
 import os
 import select
@@ -323,6 +324,12 @@ class Starter:
 
 if __name__ == "__main__":
     imported = _preload()
+    # What is imported now stays out of the garbage collector's sight (Python's advice for
+    # fork() without exec()). Otherwise every child's collections, and the last one at its
+    # exit, write to every imported object and so copy the pages they share with this
+    # server: an `interface show` cost 0.17 CPU-s instead of 0.07. The child still ends as
+    # Python ends (atexit, module teardown); only cycles among these objects are not freed.
+    gc.freeze()
     request, fds = serve(sys.argv[1])
     become(request, fds, imported)
     del request, fds, imported
