@@ -57,9 +57,18 @@ def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int,
     try:
         _, err = process.communicate(timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        pytest.fail(f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s")
+        # SIGABRT: Python's fault handler (PYTHONFAULTHANDLER, conftest) prints where each
+        # thread was, so the failure says where it hung.
+        os.killpg(process.pid, signal.SIGABRT)
+        try:
+            _, err = process.communicate(timeout=5)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            _, err = process.communicate()
+        pytest.fail(
+            f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; where it was:\n"
+            + err.decode(errors="replace")[-4000:]
+        )
     return process.returncode, err.decode(errors="replace")
 
 

@@ -52,7 +52,7 @@ def test_standard_input_working_directory_and_argv_reach_the_command(ros_domain,
 
 
 def test_a_warm_node_is_its_own_process_and_ends_by_ctrl_c_like_a_cold_one(ros_domain):
-    ends = {}
+    ends, outputs = {}, {}
     for cold in (False, True):
         node = NodeProcess("-m", "ros_tutorials_topic.publisher", cold=cold)
         try:
@@ -60,6 +60,7 @@ def test_a_warm_node_is_its_own_process_and_ends_by_ctrl_c_like_a_cold_one(ros_d
             assert node.process.pid not in (os.getpid(), os.getppid())
             assert sys.executable in node.args
             ends[cold] = (node.interrupt(), "Traceback" in node.output)
+            outputs[cold] = node.output
         finally:
             node.kill()
-    assert ends[False] == ends[True], ends
+    assert ends[False] == ends[True], f"{ends}\nwarm:\n{outputs[False]}\ncold:\n{outputs[True]}"
