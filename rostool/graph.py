@@ -48,7 +48,10 @@ from rostool.wait import spin_until
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
 MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete (load: 7 s seen)
-POLL_PERIOD = 0.02
+POLL_PERIOD = 0.02  # how often a wait looks for what it waits for, at first (wait_for)
+# How often settle() looks for new participants: against an announcement period of 0.25 s,
+# finding one up to 0.05 s later changes nothing, and each look costs CPU.
+SETTLE_POLL_PERIOD = 0.05
 ANNOUNCEMENTS = 5  # announcement periods a listing waits for participants to be discovered
 UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"  # rmw's name for an endpoint whose node is not known yet
 
@@ -211,7 +214,7 @@ class Graph:
     def wait_for(self, condition: Callable[[], T], what: str, timeout: float | None = None) -> T:
         """Spin until condition() gives something truthy and return it; ToolError on timeout."""
         timeout = self.timeout if timeout is None else timeout
-        result = spin_until(self.executor, condition, timeout, period=POLL_PERIOD)
+        result = spin_until(self.executor, condition, timeout, period=POLL_PERIOD, slow_down=True)
         if not result:
             raise ToolError(f"{what} (waited {timeout:g} s)")
         return result
@@ -228,7 +231,7 @@ class Graph:
         """
         start = time.monotonic()
         if self.spin_time is not None:  # spin exactly that long: the condition is never true
-            spin_until(self.executor, lambda: False, self.spin_time, period=POLL_PERIOD)
+            spin_until(self.executor, lambda: False, self.spin_time, period=SETTLE_POLL_PERIOD)
             return
         # Participant discovery itself is not visible through ROS; what bounds it is the
         # running participants' announcement period. Five of them: on a loaded 2-core
@@ -242,7 +245,7 @@ class Graph:
         participants = self.participants()
         last_found, longest_gap = self.started, 0.0
         while time.monotonic() < all_announced:
-            self.spin_once()
+            self.spin_once(SETTLE_POLL_PERIOD)
             found = self.participants()
             if not found <= participants:
                 participants |= found
@@ -265,7 +268,7 @@ class Graph:
             return not self.incomplete
 
         remaining = max(0.0, MAX_SETTLE_TIME - (time.monotonic() - start))
-        if not spin_until(self.executor, complete, remaining, period=0.05):
+        if not spin_until(self.executor, complete, remaining, period=SETTLE_POLL_PERIOD):
             print(
                 f"warning: after {MAX_SETTLE_TIME:g} s discovery is still incomplete "
                 f"({'; '.join(self.incomplete[:3])}); the list may miss something",

@@ -43,15 +43,20 @@ def spin_until(
     client: ActionClient | None = None,
     interrupted: Callable[[], bool] | None = None,
     period: float = SPIN_SLICE,
+    slow_down: bool = False,
 ) -> T | None:
     """Spin until condition() gives something true, and return it; None after timeout seconds.
 
     Raises Interrupted once interrupted() is true, and ServerLost if a client is given and
     its action server goes away. ``period``: the longest single spin (how often condition()
-    is asked when nothing arrives).
+    is asked when nothing arrives). ``slow_down``: for a condition that only polling sees
+    (the graph: nothing wakes the executor when it changes): ask every ``period`` at first,
+    then less often, up to every SPIN_SLICE after a second (what usually appears does so
+    within a few hundred milliseconds; every look costs CPU).
     """
-    deadline = time.monotonic() + timeout
-    next_check = time.monotonic() + SERVER_CHECK_PERIOD
+    start = time.monotonic()
+    deadline = start + timeout
+    next_check = start + SERVER_CHECK_PERIOD
     while not (result := condition()):
         if interrupted is not None and interrupted():
             raise Interrupted
@@ -62,5 +67,6 @@ def spin_until(
             if not client.server_is_ready():
                 raise ServerLost
             next_check = now + SERVER_CHECK_PERIOD
-        executor.spin_once(timeout_sec=min(period, deadline - now))
+        spin = min(SPIN_SLICE, period + (now - start) / 10) if slow_down else period
+        executor.spin_once(timeout_sec=min(spin, deadline - now))
     return result
