@@ -278,6 +278,7 @@ def test_teleop_key_drives_rotates_cancels_and_quits(watched_sim, teleop):
     press_until("\x1b[A", lambda p: p.linear_velocity == 2.0, "forward at 2 m/s (up arrow)")
     press_until("\x1b[D", lambda p: p.angular_velocity == 2.0, "turning at 2 rad/s (left)")
     press_until("r", lambda p: abs(p.angular_velocity) == 1.0, "a rotation to north to start")
+
     def north(pose: Pose) -> bool:
         return pose.angular_velocity == 0.0 and abs(pose.theta - 1.5708) < 0.03
 
