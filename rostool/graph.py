@@ -27,7 +27,7 @@ import os
 import signal
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import TypeVar
 
@@ -156,6 +156,20 @@ def add_list_and_type(
     p.set_defaults(run=lambda graph, a: print_type(graph, a.name))
 
 
+@contextlib.contextmanager
+def ctrl_c_deferred() -> Iterator[None]:
+    """A Ctrl-C during the block takes effect after it: for short steps that must not be
+    cut half-way (creating and destroying the tool's rclpy objects)."""
+    pressed = []
+    previous = signal.signal(signal.SIGINT, lambda *_: pressed.append(True))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if pressed and callable(previous):
+        previous(signal.SIGINT, None)  # Python's default raises KeyboardInterrupt now
+
+
 class Graph:
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
@@ -165,15 +179,18 @@ class Graph:
         self.finished = False  # see finish()
         # SIGTERM only: Ctrl-C stays Python's KeyboardInterrupt and ROS keeps running, so
         # that `action send_goal` can still cancel its goal after it.
-        init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
-        # No parameter services or rosout: the tool's node should not clutter what it shows.
-        self.node = Node(
-            f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False
-        )
-        self.started = time.monotonic()
-        self.executor = SingleThreadedExecutor()
-        self.executor.add_node(self.node)
-        self.discovery = DiscoveryInfo(self.node)
+        # The node is in the graph (a user may be waiting for it to press Ctrl-C) before
+        # the executor exists: an executor cut half-way by Ctrl-C complains when collected.
+        with ctrl_c_deferred():
+            init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
+            # No parameter services or rosout: the tool's node should not clutter what it shows.
+            self.node = Node(
+                f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False
+            )
+            self.started = time.monotonic()
+            self.executor = SingleThreadedExecutor()
+            self.executor.add_node(self.node)
+            self.discovery = DiscoveryInfo(self.node)
         self.incomplete: list[str] = []  # what the last settle() still missed
 
     def close(self) -> None:
@@ -181,17 +198,11 @@ class Graph:
 
         Closing is short, and one interrupted half-way would leave rclpy to complain at exit.
         """
-        pressed = []
-        previous = signal.signal(signal.SIGINT, lambda *_: pressed.append(True))
-        try:
+        with ctrl_c_deferred():
             self.discovery.close()
             self.executor.shutdown()
             self.node.destroy_node()
             rclpy.try_shutdown()
-        finally:
-            signal.signal(signal.SIGINT, previous)
-        if pressed and callable(previous):
-            previous(signal.SIGINT, None)  # Python's default raises KeyboardInterrupt now
 
     def __enter__(self) -> Graph:
         return self
