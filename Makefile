@@ -54,7 +54,7 @@ lint: setup
 
 # JOBS pytest processes (pytest-xdist); each claims its own ROS_DOMAIN_ID (tests/conftest.py).
 # More than the 2 cores: most tests spend their time waiting (process start, DDS discovery).
-JOBS ?= 4
+JOBS ?= 6
 # The tests and the processes they start keep compiled bytecode (__pycache__, ignored by git)
 # even where the environment says PYTHONDONTWRITEBYTECODE (as some CI images and containers
 # do): otherwise every pytest process compiles the test files again (1.4 s of CPU each) and
