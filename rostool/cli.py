@@ -11,7 +11,6 @@ Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (
 from __future__ import annotations
 
 import argparse
-import contextlib
 import os
 import signal
 import sys
@@ -98,11 +97,9 @@ def execute(
     SIGINT (a shell shows 130) after the command had printed its answer.
     """
     try:
-        status = _execute(command, offline, timeout, spin_time)
+        return _execute(command, offline, timeout, spin_time)
     except KeyboardInterrupt:  # while an error line was being printed
-        status = EXIT_INTERRUPTED
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    return status
+        return EXIT_INTERRUPTED
 
 
 def _execute(
@@ -135,11 +132,12 @@ def _execute(
         # subscription or a timer, which then fails (RCLError "context is not valid").
         return EXIT_INTERRUPTED
     finally:
+        # The status is decided: from here on a Ctrl-C (the user answering the printed line
+        # while the node closes and Python shuts down, however late the process gets the CPU
+        # back) does not turn a command that did its job into "interrupted".
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
         if graph is not None:
-            # The status is decided: a Ctrl-C while the node closes (Graph.close finishes
-            # first) does not turn a command that did its job into "interrupted".
-            with contextlib.suppress(KeyboardInterrupt):
-                graph.close()
+            graph.close()
     return 0
 
 
