@@ -60,6 +60,7 @@ def _runs(*command: str, runs: int = RUNS) -> list[str]:
     return outputs
 
 
+@pytest.mark.long  # 20 runs of rosnode list: about 20 s
 def test_node_list_is_complete_in_every_run(union_launch):
     runs = [output.split() for output in _runs("rosnode", "list")]
     incomplete = [
@@ -68,6 +69,7 @@ def test_node_list_is_complete_in_every_run(union_launch):
     assert not incomplete, f"node list incomplete in {len(incomplete)} of {RUNS} runs: {incomplete}"
 
 
+@pytest.mark.long  # 20 runs of rostopic list: about 20 s
 def test_topic_list_is_complete_in_every_run(union_launch):
     runs = [set(output.split()) for output in _runs("rostopic", "list")]
     incomplete = [
@@ -86,6 +88,7 @@ def test_node_list_command_is_complete(union_launch, command):
         assert set(output.split()) >= set(UNION_NODES), output
 
 
+@pytest.mark.long  # 20 runs: 11 to 13 s
 def test_rosservice_info_names_the_node_every_time(node_process):
     server = node_process("-m", "ros_tutorials_service.server")
     server.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines))

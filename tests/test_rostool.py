@@ -121,6 +121,7 @@ def test_offline_errors_are_one_clear_line(args, message):
 # Topics, against the topic lesson's nodes.
 
 
+@pytest.mark.long  # six commands, one waits 5 s: 13 s
 def test_topic_list_type_info_and_node_list(publisher):
     # A list waits until discovery is complete (tests/test_graph_complete.py), or exactly
     # --spin-time seconds.
@@ -249,6 +250,7 @@ def test_service_call_in_both_spellings(service_lesson):
     assert ok("rostool", "service", "type", "/ros_tutorial_srv").strip() == SRV
 
 
+@pytest.mark.long  # the walk-through, command by command: 10 to 15 s
 def test_the_books_parameter_walk_through(parameter_lesson):
     assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "5").strip() == "result: 15"
     for method, result in ((2, 5), (3, 50), (4, 2)):

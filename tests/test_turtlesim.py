@@ -168,6 +168,7 @@ def test_cmd_vel_is_integrated_16_ms_per_update_and_stops_after_1_s(probe):
     assert still.x > CENTRE and still.y > CENTRE
 
 
+@pytest.mark.long  # four sides driven in real time: 22 to 28 s
 def test_draw_square_tutorial_drives_a_square_and_leaves_its_trail(
     context, executor, sim, probe, tmp_path
 ):

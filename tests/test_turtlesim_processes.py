@@ -60,6 +60,7 @@ class Watcher:
         )
 
 
+@pytest.mark.long  # the seed, command by command: 19 to 28 s
 def test_turtlesim_node_and_the_seeds_ros1_commands(node_process, executor, tmp_path):
     at_exit = tmp_path / "exit.png"
     sim = node_process(
