@@ -57,8 +57,13 @@ def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int,
     try:
         _, err = process.communicate(timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
-        # SIGABRT: Python's fault handler (PYTHONFAULTHANDLER, conftest) prints where each
-        # thread was, so the failure says where it hung.
+        # Whether the Ctrl-C is still pending (SigPnd/ShdPnd bit 2) and blocked (SigBlk), and
+        # (SIGABRT: Python's fault handler, PYTHONFAULTHANDLER in conftest) where each thread was.
+        try:
+            status = Path(f"/proc/{process.pid}/status").read_text().splitlines()
+        except OSError:
+            status = []
+        masks = [line for line in status if line.startswith(("SigPnd", "ShdPnd", "SigBlk"))]
         os.killpg(process.pid, signal.SIGABRT)
         try:
             _, err = process.communicate(timeout=5)
@@ -66,7 +71,9 @@ def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int,
             os.killpg(process.pid, signal.SIGKILL)
             _, err = process.communicate()
         pytest.fail(
-            f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; where it was:\n"
+            f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; "
+            + " ".join(masks)
+            + "; where it was:\n"
             + err.decode(errors="replace")[-4000:]
         )
     return process.returncode, err.decode(errors="replace")
