@@ -11,6 +11,7 @@ Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import signal
 import sys
@@ -109,36 +110,41 @@ def _execute(
     spin_time: float | None,
 ) -> int:
     graph = None
+    status = None  # the exit status, once decided
     try:
         if not offline:
             graph = Graph(timeout, spin_time)
         command(graph)
+        status = 0
     except ToolError as error:
         print(f"error: {error}", file=sys.stderr)
-        return 1
+        status = 1
     except NameValidationException as error:
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
-        return 1
+        status = 1
     except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
-        return 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
+        status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 0
+        status = 0
     except Exception:
         if rclpy.ok():
             raise
         # SIGTERM: rclpy's handler shut ROS down while the command was creating its node, a
         # subscription or a timer, which then fails (RCLError "context is not valid").
-        return EXIT_INTERRUPTED
+        status = EXIT_INTERRUPTED
     finally:
-        # The status is decided: from here on a Ctrl-C (the user answering the printed line
-        # while the node closes and Python shuts down, however late the process gets the CPU
-        # back) does not turn a command that did its job into "interrupted".
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        if status is not None:
+            # Decided: from here on a Ctrl-C (the user answering the printed line while the
+            # node closes and Python shuts down, however late the process gets the CPU back)
+            # does not turn a command that did its job into "interrupted". (Not when an
+            # exception goes on up, such as argparse's exit: the caller's Ctrl-C stays.)
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
         if graph is not None:
-            graph.close()
-    return 0
+            with contextlib.suppress(KeyboardInterrupt):  # only if nothing was decided
+                graph.close()
+    return status
 
 
 def main(argv: Sequence[str] | None = None) -> int:

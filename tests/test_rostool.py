@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import pty
 import re
+import signal
 import subprocess
 import time
 from pathlib import Path
@@ -412,9 +413,12 @@ def test_bad_numbers_and_conflicting_options_are_usage_errors(capsys, args):
     # (a traceback in a process) fails the test.
     entry_point = {"rostool": cli.main, "rostopic": ros1.rostopic, "rosnode": ros1.rosnode}
     entry_point["rosservice"] = ros1.rosservice
+    ctrl_c = signal.getsignal(signal.SIGINT)
     with pytest.raises(SystemExit) as exited:
         entry_point[args[0]](list(args[1:]))
     assert exited.value.code == 2, f"{' '.join(args)}: {exited.value.code}"
+    # A refused command leaves Ctrl-C as it was (this process starts others after it).
+    assert signal.getsignal(signal.SIGINT) is ctrl_c
     output = capsys.readouterr()
     assert "usage:" in output.err and output.out == ""
 
