@@ -53,7 +53,14 @@ OPTIONS_WITH_VALUE = frozenset({"-W", "-X"})
 _SIGINT = {_signal.SIGINT}
 # How rclpy and rcl refuse to go on once rclpy's signal handler has shut the context down.
 STOPPED_ROS = frozenset({"ExternalShutdownException", "NotInitializedException"})
-SHUT_DOWN = ("context is not valid", "context is invalid")  # rcl's two wordings
+SHUT_DOWN = (
+    "context is not valid",  # rcl's two wordings for a context that was shut down ...
+    "context is invalid",
+    # ... and rclpy.try_shutdown() after Ctrl-C, when rclpy's signal handler thread shut the
+    # context down between try_shutdown's check and its own rcl_shutdown (seen under load
+    # in `make run`: a traceback from one of union.launch's publishers).
+    "rcl_shutdown already called",
+)
 
 
 def _module_is_ours(module: str) -> bool:

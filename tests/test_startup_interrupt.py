@@ -146,3 +146,17 @@ def test_every_package_releases_ctrl_c_and_make_setup_installed_the_hold():
         assert "_release_ctrl_c()" in (ROOT / name / "__init__.py").read_text(), name
     pth = Path(sysconfig.get_paths()["purelib"]) / ctrl_c.PTH_NAME
     assert pth.read_text() == ctrl_c.pth_line()
+
+
+def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
+    """What ROS raises once rclpy's signal handler has shut the context down counts as the
+    Ctrl-C (no traceback, death by SIGINT); other ROS errors keep their traceback."""
+    rcl_error = type("RCLError", (RuntimeError,), {})
+    stopped = [
+        "failed to shutdown: rcl_shutdown already called on the given context, at init.c:333",
+        "Failed to create publisher: the given context is not valid",
+    ]
+    for text in stopped:
+        assert ctrl_c.interrupted(rcl_error(text)), text
+    assert not ctrl_c.interrupted(rcl_error("failed to create subscription: invalid topic name"))
+    assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
