@@ -15,6 +15,7 @@ import tempfile
 import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -106,6 +107,14 @@ def ok(*args: str, timeout: float = TIMEOUT) -> str:
     assert result.returncode == 0, f"{' '.join(args)} failed:\n{result.stderr}"
     assert "Traceback" not in result.stderr
     return result.stdout
+
+
+def ok_at_once(*commands: Sequence[str]) -> list[str]:
+    """Console scripts that must succeed (each as ok()), started together as in as many
+    terminals; their standard outputs, in order. For commands that only look at the
+    graph: none depends on another, and their waits for discovery overlap."""
+    with ThreadPoolExecutor(max_workers=len(commands)) as pool:
+        return list(pool.map(lambda args: ok(*args), commands))
 
 
 def fails(*args: str, timeout: float = TIMEOUT) -> str:

@@ -16,7 +16,7 @@ import time
 from pathlib import Path
 
 import pytest
-from helpers import BIN, TIMEOUT, fails, ok, ready, spin_until
+from helpers import BIN, TIMEOUT, fails, ok, ok_at_once, ready, spin_until
 from helpers import run as tool
 from rclpy.node import Node
 
@@ -122,26 +122,26 @@ def test_offline_errors_are_one_clear_line(args, message):
 # Topics, against the topic lesson's nodes.
 
 
-@pytest.mark.long  # six commands, one waits 5 s: 13 s
 def test_topic_list_type_info_and_node_list(publisher):
     # A list waits until discovery is complete (tests/test_graph_complete.py), or exactly
-    # --spin-time seconds.
-    assert "/ros_tutorial_msg" in ok("rostopic", "list").split()
-    assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in ok(
-        "rostool", "topic", "list", "-t", "--spin-time", "5"
+    # --spin-time seconds; -v waits (up to --timeout) for the endpoints' node names, which
+    # discovery sends later. The commands only look: they run at once, as in six terminals
+    # (and each must hide the others' nodes).
+    listed, typed, type_name, info, nodes, node_info = ok_at_once(
+        ("rostopic", "list"),
+        ("rostool", "topic", "list", "-t", "--spin-time", "5"),
+        ("rostool", "topic", "type", "/ros_tutorial_msg"),
+        ("rostool", "topic", "info", "/ros_tutorial_msg", "-v", "--timeout", "30"),
+        ("rosnode", "list"),
+        ("rostool", "node", "info", "/topic_publisher"),
     )
-    assert ok("rostool", "topic", "type", "/ros_tutorial_msg").strip() == (
-        "ros_tutorials_interfaces/msg/MsgTutorial"
-    )
-    # -v waits (up to --timeout) for the endpoints' node names, which discovery sends later.
-    info = ok("rostool", "topic", "info", "/ros_tutorial_msg", "-v", "--timeout", "30")
+    assert "/ros_tutorial_msg" in listed.split()
+    assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in typed
+    assert type_name.strip() == "ros_tutorials_interfaces/msg/MsgTutorial"
     assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
-    nodes = ok("rosnode", "list").split()
-    assert "/topic_publisher" in nodes
-    assert not [name for name in nodes if "_rostool" in name]  # the tool's own node is hidden
-    assert "/ros_tutorial_msg: ros_tutorials_interfaces/msg/MsgTutorial" in ok(
-        "rostool", "node", "info", "/topic_publisher"
-    )
+    assert "/topic_publisher" in nodes.split()
+    assert not [name for name in nodes.split() if "_rostool" in name]  # tools' nodes hidden
+    assert "/ros_tutorial_msg: ros_tutorials_interfaces/msg/MsgTutorial" in node_info
 
 
 def test_topic_echo_prints_messages_as_yaml(publisher):
