@@ -17,11 +17,13 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+from typing import TypeVar
 
 import pytest
 from rclpy.executors import Executor
 from warm import Starter
 
+T = TypeVar("T")
 TIMEOUT = 30.0
 # The console scripts (`rostool`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
 BIN = Path(sys.executable).parent
@@ -109,12 +111,12 @@ def ok(*args: str, timeout: float = TIMEOUT) -> str:
     return result.stdout
 
 
-def ok_at_once(*commands: Sequence[str]) -> list[str]:
-    """Console scripts that must succeed (each as ok()), started together as in as many
-    terminals; their standard outputs, in order. For commands that only look at the
-    graph: none depends on another, and their waits for discovery overlap."""
+def at_once(check: Callable[..., T], *commands: Sequence[str]) -> list[T]:
+    """check(*command) (ok or fails) for each command, the commands started together as in
+    as many terminals; the results in order. For commands that only look at the graph or
+    fail on their own: none depends on another, and their waits for discovery overlap."""
     with ThreadPoolExecutor(max_workers=len(commands)) as pool:
-        return list(pool.map(lambda args: ok(*args), commands))
+        return list(pool.map(lambda command: check(*command), commands))
 
 
 def fails(*args: str, timeout: float = TIMEOUT) -> str:

@@ -16,7 +16,7 @@ import time
 from pathlib import Path
 
 import pytest
-from helpers import BIN, TIMEOUT, fails, ok, ok_at_once, ready, spin_until
+from helpers import BIN, TIMEOUT, at_once, fails, ok, ready, spin_until
 from helpers import run as tool
 from rclpy.node import Node
 
@@ -127,7 +127,8 @@ def test_topic_list_type_info_and_node_list(publisher):
     # --spin-time seconds; -v waits (up to --timeout) for the endpoints' node names, which
     # discovery sends later. The commands only look: they run at once, as in six terminals
     # (and each must hide the others' nodes).
-    listed, typed, type_name, info, nodes, node_info = ok_at_once(
+    listed, typed, type_name, info, nodes, node_info = at_once(
+        ok,
         ("rostopic", "list"),
         ("rostool", "topic", "list", "-t", "--spin-time", "5"),
         ("rostool", "topic", "type", "/ros_tutorial_msg"),
@@ -242,13 +243,21 @@ def test_topic_pub_reaches_a_subscriber_in_both_spellings(node_process):
 
 
 def test_service_call_in_both_spellings(service_lesson):
-    assert ok("rosservice", "call", "/ros_tutorial_srv", "10", "2").strip() == "result: 12"
-    assert ok("rosservice", "call", "/ros_tutorial_srv", "5", "15").strip() == "result: 20"
-    out = ok("rostool", "service", "call", "/ros_tutorial_srv", SRV, "{a: 10, b: 5}")
+    # Six independent commands (the server keeps no state), at once as in six terminals.
+    twelve, twenty, out, args, listed, type_name = at_once(
+        ok,
+        ("rosservice", "call", "/ros_tutorial_srv", "10", "2"),
+        ("rosservice", "call", "/ros_tutorial_srv", "5", "15"),
+        ("rostool", "service", "call", "/ros_tutorial_srv", SRV, "{a: 10, b: 5}"),
+        ("rosservice", "args", "/ros_tutorial_srv"),
+        ("rosservice", "list"),
+        ("rostool", "service", "type", "/ros_tutorial_srv"),
+    )
+    assert twelve.strip() == "result: 12" and twenty.strip() == "result: 20"
     assert "SrvTutorial_Response(result=15)" in out
-    assert ok("rosservice", "args", "/ros_tutorial_srv").strip() == "a b"
-    assert "/ros_tutorial_srv" in ok("rosservice", "list").split()
-    assert ok("rostool", "service", "type", "/ros_tutorial_srv").strip() == SRV
+    assert args.strip() == "a b"
+    assert "/ros_tutorial_srv" in listed.split()
+    assert type_name.strip() == SRV
 
 
 @pytest.mark.long  # the walk-through, command by command: 10 to 15 s
@@ -379,8 +388,9 @@ def test_params_files_that_cannot_be_used_are_one_clear_line(tmp_path):
         (("rostool", "param", "load", "/service_server", str(binary)), "not a text file"),
         (("rostool", "param", "load", "/service_server", str(broken)), "is not valid YAML"),
     ]
-    for args, message in cases:
-        assert message in fails(*args, "--timeout", "1"), args
+    lines = at_once(fails, *((*args, "--timeout", "1") for args, _ in cases))
+    for (args, message), line in zip(cases, lines, strict=True):
+        assert message in line, args
 
 
 @pytest.mark.parametrize(
