@@ -179,19 +179,24 @@ class Graph:
         self.finished = False  # see finish()
         # SIGTERM only: Ctrl-C stays Python's KeyboardInterrupt and ROS keeps running, so
         # that `action send_goal` can still cancel its goal after it.
+        self.incomplete: list[str] = []  # what the last settle() still missed
         # The node is in the graph (a user may be waiting for it to press Ctrl-C) before
         # the executor exists: an executor cut half-way by Ctrl-C complains when collected.
-        with ctrl_c_deferred():
-            init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
-            # No parameter services or rosout: the tool's node should not clutter what it shows.
-            self.node = Node(
-                f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False
-            )
-            self.started = time.monotonic()
-            self.executor = SingleThreadedExecutor()
-            self.executor.add_node(self.node)
-            self.discovery = DiscoveryInfo(self.node)
-        self.incomplete: list[str] = []  # what the last settle() still missed
+        try:
+            with ctrl_c_deferred():
+                init(["rostool"], signal_handler_options=SignalHandlerOptions.SIGTERM)
+                # No parameter services or rosout: the tool's node should not clutter what
+                # it shows.
+                self.node = Node(
+                    f"_rostool_{os.getpid()}", start_parameter_services=False, enable_rosout=False
+                )
+                self.started = time.monotonic()
+                self.executor = SingleThreadedExecutor()
+                self.executor.add_node(self.node)
+                self.discovery = DiscoveryInfo(self.node)
+        except KeyboardInterrupt:  # pressed meanwhile: everything exists, close it first
+            self.close()
+            raise
 
     def close(self) -> None:
         """Destroy the node and shut ROS down; a Ctrl-C meanwhile takes effect afterwards.
