@@ -65,6 +65,13 @@ def lists(runs: int = 10) -> list[Row]:
                 seconds, out = _timed([str(BIN / "rostool"), verb, "list"])
                 samples[verb].append(seconds)
                 complete[verb] += out.split() == expected
+                if out.split() != expected:  # say what differed: the table only counts
+                    listed = set(out.split())
+                    print(
+                        f"`rostool {verb} list` missed {sorted(set(expected) - listed)}, "
+                        f"listed more: {sorted(listed - set(expected))}",
+                        file=sys.stderr,
+                    )
             samples["bare"].append(_timed(bare)[0])
         graph_seconds = [_timed([str(BIN / "rostool"), "graph"])[0] for _ in range(3)]
     finally:

@@ -1,0 +1,113 @@
+"""Which processes on this machine hold a DDS participant in our domain, and how many each.
+
+A listing must show everything that was running when it started, but discovery never says
+"that was everyone": without more, the listing waits until every running participant has had
+time to announce itself (graph.Graph.settle). On this machine the operating system can say who
+is there. With ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST every participant that can be
+discovered runs here, and Fast DDS gives each one a UDP port of its own for discovery, the RTPS
+well-known "metatraffic unicast" port: 7400 + 250 * domain + 10 + 2 * i for the domain's i-th
+participant on this machine (Fast DDS takes the first free i). /proc/net/udp lists the bound
+ports with their sockets, /proc/PID/fd says which process holds each socket, and a Fast DDS
+participant's GUID prefix carries its process id (bytes 4 and 5: the id's low 16 bits). So a
+listing that has seen, for every such process, as many participants as it holds ports, has
+heard from everyone that was running when it looked.
+
+Whenever that reasoning might not hold, ``local_participants`` answers None and the listing
+waits the announcement periods as before: another discovery range, static peers, a discovery
+server, another RMW, no such port found for our own participant (another transport or port
+layout), or a socket whose process we may not look at (another user's). What it cannot know: a
+participant on this machine configured with no UDP transport at all (e.g.
+FASTDDS_BUILTIN_TRANSPORTS=SHM in that process only).
+"""
+
+from __future__ import annotations
+
+import os
+from collections import Counter
+
+import rclpy
+
+PORT_BASE, DOMAIN_GAIN, METATRAFFIC_UNICAST, PARTICIPANT_GAIN = 7400, 250, 10, 2  # RTPS 9.6.1.1
+MAX_PARTICIPANTS = 120  # participant ports of one domain stay below the next domain's
+EPROSIMA = b"\x01\x0f"  # the vendor id opening a Fast DDS GUID prefix
+
+
+def process_of(prefix: bytes) -> int | None:
+    """The low 16 bits of the process id in a Fast DDS participant's GUID prefix."""
+    if prefix[:2] != EPROSIMA:
+        return None
+    return int.from_bytes(prefix[4:6], "little")
+
+
+def local_participants(domain_id: int) -> Counter[int] | None:
+    """Per process (low 16 bits of its id): how many participants it holds in the domain.
+
+    None when this cannot be known (see the module's docstring); our own process is counted.
+    """
+    if not _only_this_machine():
+        return None
+    sockets = _discovery_sockets(domain_id)
+    owners = _owners(set(sockets))
+    if owners is None or os.getpid() not in owners:
+        return None
+    expected: Counter[int] = Counter()
+    for pid, count in owners.items():
+        expected[pid & 0xFFFF] += count
+    return expected
+
+
+def heard_from_all(expected: Counter[int], seen: set[bytes]) -> bool:
+    """Whether the participants seen (GUID prefixes) include as many per process as expected."""
+    found = Counter(process_of(prefix) for prefix in seen)
+    return all(found[pid] >= count for pid, count in expected.items())
+
+
+def _only_this_machine() -> bool:
+    return (
+        os.environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE") == "LOCALHOST"
+        and not os.environ.get("ROS_STATIC_PEERS")
+        and not os.environ.get("ROS_DISCOVERY_SERVER")
+        and rclpy.get_rmw_implementation_identifier() == "rmw_fastrtps_cpp"
+    )
+
+
+def _discovery_sockets(domain_id: int) -> dict[str, int]:
+    """The sockets bound to the domain's participant discovery ports: 'socket:[inode]' -> port."""
+    first = PORT_BASE + DOMAIN_GAIN * domain_id + METATRAFFIC_UNICAST
+    ports = range(first, first + PARTICIPANT_GAIN * MAX_PARTICIPANTS, PARTICIPANT_GAIN)
+    sockets: dict[str, int] = {}
+    for table in ("/proc/net/udp", "/proc/net/udp6"):
+        try:
+            with open(table) as lines:
+                next(lines)  # the header
+                for line in lines:
+                    fields = line.split()
+                    port = int(fields[1].rsplit(":", 1)[1], 16)
+                    if port in ports:
+                        sockets[f"socket:[{fields[9]}]"] = port
+        except (OSError, ValueError, IndexError, StopIteration):
+            continue
+    return sockets
+
+
+def _owners(sockets: set[str]) -> Counter[int] | None:
+    """Per process id, how many of these sockets it holds; None if one has no owner found."""
+    owners: Counter[int] = Counter()
+    for entry in os.scandir("/proc"):
+        if not sockets:
+            break
+        if not entry.name.isdigit():
+            continue
+        try:
+            descriptors = os.listdir(f"/proc/{entry.name}/fd")
+        except OSError:  # gone meanwhile, or another user's
+            continue
+        for fd in descriptors:
+            try:
+                target = os.readlink(f"/proc/{entry.name}/fd/{fd}")
+            except OSError:
+                continue
+            if target in sockets:
+                sockets.discard(target)
+                owners[int(entry.name)] += 1
+    return None if sockets else owners

@@ -1,0 +1,79 @@
+"""A listing knows who runs on this machine (rostool/local_participants.py).
+
+The two facts it rests on, checked on the real Fast DDS: each participant holds a discovery
+port of the domain's (found through /proc with its process), and its GUID prefix carries its
+process id. Then: where those cannot be relied on, there is no answer (the listing waits the
+announcement periods instead). That lists stay complete is tests/test_graph_complete.py's.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import Counter
+
+from helpers import spin_until
+from rclpy.node import Node
+
+from rostool.local_participants import heard_from_all, local_participants, process_of
+
+
+def _prefix(pid: int, participant: int = 0) -> bytes:
+    """A Fast DDS GUID prefix: vendor, host, process id (low 16 bits), random, participant."""
+    vendor_and_host, random = b"\x01\x0f\x12\x34", b"\xab\xcd"
+    return (
+        vendor_and_host
+        + (pid & 0xFFFF).to_bytes(2, "little")
+        + random
+        + (participant.to_bytes(4, "little"))
+    )
+
+
+def test_each_process_with_a_participant_is_counted_and_named_in_its_guid(
+    context, executor, node_process, ros_domain
+):
+    talker = node_process("-m", "ros_tutorials_topic.talker")
+    talker.wait_for_text("hello world")
+    node = Node("_looking", context=context)
+    executor.add_node(node)
+
+    counted = local_participants(ros_domain)
+
+    assert counted is not None, "no answer, although discovery stays on this machine"
+    assert counted[talker.process.pid & 0xFFFF] == 1, counted
+    assert counted[os.getpid() & 0xFFFF] >= 1, counted  # this test's own node
+    found: list[bytes] = []
+    spin_until(
+        executor,
+        lambda: found.extend(node.get_publishers_info_by_topic("/chatter")) or found,
+        what="the talker's publisher",
+    )
+    talker_prefix = bytes(found[0].endpoint_gid)[:12]
+    assert process_of(talker_prefix) == talker.process.pid & 0xFFFF
+    spin_until(
+        executor,
+        lambda: heard_from_all(counted, {talker_prefix, _prefix(os.getpid())}),
+        what="the talker and ourselves to be all that was expected",
+    )
+
+
+def test_no_answer_where_this_machine_cannot_know(context, executor, monkeypatch, ros_domain):
+    executor.add_node(Node("_looking", context=context))
+    assert local_participants(ros_domain) is not None
+    # No participant of ours in that domain: the port layout is not confirmed.
+    assert local_participants((ros_domain + 50) % 101 + 1) is None
+    for name, value in (
+        ("ROS_AUTOMATIC_DISCOVERY_RANGE", "SUBNET"),  # other machines may take part
+        ("ROS_STATIC_PEERS", "192.168.0.2"),
+        ("ROS_DISCOVERY_SERVER", "127.0.0.1:11811"),
+    ):
+        with monkeypatch.context() as patch:
+            patch.setenv(name, value)
+            assert local_participants(ros_domain) is None, f"{name}={value}"
+
+
+def test_heard_from_all_counts_participants_per_process():
+    two_in_one = Counter({7: 2, 70000 & 0xFFFF: 1})
+    assert not heard_from_all(two_in_one, {_prefix(7), _prefix(70000)})
+    assert heard_from_all(two_in_one, {_prefix(7), _prefix(7, 1), _prefix(70000)})
+    assert heard_from_all(Counter(), set())
+    assert process_of(b"\x01\x10" + bytes(10)) is None  # another vendor's: no process id
