@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -270,10 +271,31 @@ class NodeProcess:
         try:
             code = self.process.wait(timeout)
         except subprocess.TimeoutExpired:
+            stuck = self.where_stuck()
             self.kill()
-            pytest.fail(f"{' '.join(self.args[1:])} did not exit within {timeout:.0f} s")
+            pytest.fail(
+                f"{' '.join(self.args[1:])} did not exit within {timeout:.0f} s; output:\n"
+                + "\n".join(self.lines[-120:])
+                + stuck
+            )
         self._reader.join(timeout)
         return code
+
+    def where_stuck(self) -> str:
+        """For a failure message: every thread's stack of the running process, native ones
+        from gdb where it is installed, then Python's (the fault handler's, on SIGABRT)."""
+        native = ""
+        if shutil.which("gdb"):
+            gdb = ["gdb", "-p", str(self.process.pid), "-batch", "-ex", "thread apply all bt 25"]
+            with contextlib.suppress(subprocess.SubprocessError, OSError):
+                found = subprocess.run(gdb, capture_output=True, text=True, timeout=60)
+                native = "\n--- gdb ---\n" + found.stdout[-20000:]
+        with contextlib.suppress(OSError):
+            self.process.send_signal(signal.SIGABRT)  # PYTHONFAULTHANDLER (conftest)
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.process.wait(5)
+        self._reader.join(5)
+        return native
 
     def kill(self) -> None:
         if self.process.poll() is None:
