@@ -11,7 +11,9 @@ fixed time: it polls until what it needs appears (``wait_for``), and reports "un
 Listing commands must show everything that was running before they started. Discovery
 tells them when that is (``settle``): every running participant has announced itself once
 its announcement period (0.25 s here) has passed since ours started (we wait five, and
-five after the last participant found: participants are not visible through ROS); each
+five after the last participant found: participants are not visible through ROS), or as
+soon as every process that holds one on this machine has been heard from, where the machine
+can say which those are (local_participants.py); each
 participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
 readers and writers each node has; the graph is complete when every participant seen has sent it and
 every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
@@ -243,6 +245,8 @@ class Graph:
         started and since the last participant found (so every running participant has
         announced itself), and every participant seen has
         sent its ros_discovery_info, and every node and endpoint it announced is in our graph.
+        The first part ends early once every local participant has been seen, where
+        local_participants() knows them.
         At most MAX_SETTLE_TIME; what is still missing then is reported on stderr. With
         ``spin_time`` given, wait exactly that long instead.
         """
