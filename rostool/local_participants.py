@@ -17,7 +17,9 @@ waits the announcement periods as before: another discovery range, static peers,
 server, another RMW, no such port found for our own participant (another transport or port
 layout), or a socket whose process we may not look at (another user's). What it cannot know: a
 participant on this machine configured with no UDP transport at all (e.g.
-FASTDDS_BUILTIN_TRANSPORTS=SHM in that process only).
+FASTDDS_BUILTIN_TRANSPORTS=SHM in that process only); and only 16 bits of a process id are
+in the GUID, so a participant still seen of a process that has just ended could be taken for
+a running process whose id ends in the same 16 bits (about one chance in 65 536 each).
 """
 
 from __future__ import annotations
@@ -47,6 +49,8 @@ def local_participants(domain_id: int) -> Counter[int] | None:
     if not _only_this_machine():
         return None
     sockets = _discovery_sockets(domain_id)
+    if sockets is None:
+        return None
     owners = _owners(set(sockets))
     if owners is None or os.getpid() not in owners:
         return None
@@ -71,12 +75,17 @@ def _only_this_machine() -> bool:
     )
 
 
-def _discovery_sockets(domain_id: int) -> dict[str, int]:
-    """The sockets bound to the domain's participant discovery ports: 'socket:[inode]' -> port."""
+def _discovery_sockets(domain_id: int) -> dict[str, int] | None:
+    """The sockets bound to the domain's participant discovery ports: 'socket:[inode]' -> port.
+
+    None if the tables cannot be read whole (a socket left out would be a participant missed).
+    """
     first = PORT_BASE + DOMAIN_GAIN * domain_id + METATRAFFIC_UNICAST
     ports = range(first, first + PARTICIPANT_GAIN * MAX_PARTICIPANTS, PARTICIPANT_GAIN)
     sockets: dict[str, int] = {}
     for table in ("/proc/net/udp", "/proc/net/udp6"):
+        if table.endswith("6") and not os.path.exists(table):
+            continue  # no IPv6 on this machine: no IPv6 sockets either
         try:
             with open(table) as lines:
                 next(lines)  # the header
@@ -86,7 +95,7 @@ def _discovery_sockets(domain_id: int) -> dict[str, int]:
                     if port in ports:
                         sockets[f"socket:[{fields[9]}]"] = port
         except (OSError, ValueError, IndexError, StopIteration):
-            continue
+            return None
     return sockets
 
 
