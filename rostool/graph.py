@@ -274,7 +274,14 @@ class Graph:
         )
         while time.monotonic() < all_announced:
             if expected is not None and heard_from_all(expected, participants):
-                break
+                # Counted again: a participant made meanwhile must not stand in for one
+                # that was there at the first count (both count for their process). No
+                # answer this time (a process ending meanwhile): ask again next round.
+                recount = local_participants(self.node.context.get_domain_id())
+                if recount is not None and heard_from_all(recount, participants):
+                    break
+                if recount is not None:
+                    expected = recount
             self.spin_once(SETTLE_POLL_PERIOD)
             found = self.participants()
             if not found <= participants:

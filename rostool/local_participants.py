@@ -6,11 +6,16 @@ time to announce itself (graph.Graph.settle). On this machine the operating syst
 is there. With ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST every participant that can be
 discovered runs here, and Fast DDS gives each one a UDP port of its own for discovery, the RTPS
 well-known "metatraffic unicast" port: 7400 + 250 * domain + 10 + 2 * i for the domain's i-th
-participant on this machine (Fast DDS takes the first free i). /proc/net/udp lists the bound
-ports with their sockets, /proc/PID/fd says which process holds each socket, and a Fast DDS
-participant's GUID prefix carries its process id (bytes 4 and 5: the id's low 16 bits). So a
-listing that has seen, for every such process, as many participants as it holds ports, has
-heard from everyone that was running when it looked.
+participant on this machine (Fast DDS starts from the process's own participant number and
+steps to the next free port). /proc/net/udp lists the bound ports with their sockets,
+/proc/PID/fd says which process holds each socket, and a Fast DDS participant's GUID prefix
+carries its process id (bytes 4 and 5: the id's low 16 bits). So a listing that has seen, for
+every such process, as many participants as it holds ports, has heard from everyone that was
+running when it looked. Counting per process, not per port, can only ask for more than is
+there (a socket inherited by a forked child is counted for whichever holder is found first):
+the listing then waits the announcement periods, never less. Participants that appear while
+the listing waits are not in the first count; the listing counts again before it stops
+(graph.Graph.settle), so a process's new participant cannot stand in for its old one.
 
 Whenever that reasoning might not hold, ``local_participants`` answers None and the listing
 waits the announcement periods as before: another discovery range, static peers, a discovery
@@ -102,7 +107,11 @@ def _discovery_sockets(domain_id: int) -> dict[str, int] | None:
 def _owners(sockets: set[str]) -> Counter[int] | None:
     """Per process id, how many of these sockets it holds; None if one has no owner found."""
     owners: Counter[int] = Counter()
-    for entry in os.scandir("/proc"):
+    try:
+        processes = list(os.scandir("/proc"))
+    except OSError:  # no /proc: nothing can be known
+        return None
+    for entry in processes:
         if not sockets:
             break
         if not entry.name.isdigit():

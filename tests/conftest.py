@@ -40,8 +40,9 @@ def pytest_sessionfinish(session: pytest.Session) -> None:
     Fast DDS keeps each participant's shared-memory segment in /dev/shm (memory, not disk)
     and removes it when the participant closes; a process killed with SIGKILL leaves it, and
     a run of the suite left about 150 files and 35 MB. Its own tool removes those no running
-    process holds (`fastdds shm clean`); run once, by the pytest process that started the
-    others, in the background: the run does not wait for it.
+    process holds (`fastdds shm clean`: it looks at each segment's file lock, so a running
+    process's segment, also another session's, stays); run once, by the pytest process that
+    started the others, in the background: the run does not wait for it.
     """
     fastdds = Path(sys.prefix) / "tools" / "fastdds" / "fastdds.py"  # what bin/fastdds runs
     if hasattr(session.config, "workerinput") or not fastdds.exists():

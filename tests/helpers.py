@@ -289,7 +289,7 @@ class NodeProcess:
             gdb = ["gdb", "-p", str(self.process.pid), "-batch", "-ex", "thread apply all bt 25"]
             with contextlib.suppress(subprocess.SubprocessError, OSError):
                 found = subprocess.run(gdb, capture_output=True, text=True, timeout=60)
-                native = "\n--- gdb ---\n" + found.stdout[-20000:]
+                native = "\n--- gdb ---\n" + found.stdout[-20000:] + found.stderr[-2000:]
         with contextlib.suppress(OSError):
             self.process.send_signal(signal.SIGABRT)  # PYTHONFAULTHANDLER (conftest)
         with contextlib.suppress(subprocess.TimeoutExpired):
@@ -298,6 +298,8 @@ class NodeProcess:
         return native
 
     def kill(self) -> None:
-        if self.process.poll() is None:
+        """SIGKILL to the process's whole group (it leads a session of its own), also when
+        the leader has ended already: children it started must not outlive the test."""
+        with contextlib.suppress(ProcessLookupError, PermissionError):
             os.killpg(self.process.pid, signal.SIGKILL)
-            self.process.wait()
+        self.process.wait()

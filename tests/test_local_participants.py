@@ -11,7 +11,9 @@ from __future__ import annotations
 import os
 from collections import Counter
 
+import rclpy
 from helpers import spin_until
+from rclpy.context import Context
 from rclpy.node import Node
 
 from rostool.local_participants import heard_from_all, local_participants, process_of
@@ -35,12 +37,13 @@ def test_each_process_with_a_participant_is_counted_and_named_in_its_guid(
     talker.wait_for_text("hello world")
     node = Node("_looking", context=context)
     executor.add_node(node)
+    talker_pid, own_pid = talker.process.pid & 0xFFFF, os.getpid() & 0xFFFF
 
     counted = local_participants(ros_domain)
 
     assert counted is not None, "no answer, although discovery stays on this machine"
-    assert counted[talker.process.pid & 0xFFFF] == 1, counted
-    assert counted[os.getpid() & 0xFFFF] >= 1, counted  # this test's own node
+    assert counted[talker_pid] == 1, counted
+    assert counted[own_pid] >= 1, counted  # this test's own node
     found: list[bytes] = []
     spin_until(
         executor,
@@ -48,12 +51,22 @@ def test_each_process_with_a_participant_is_counted_and_named_in_its_guid(
         what="the talker's publisher",
     )
     talker_prefix = bytes(found[0].endpoint_gid)[:12]
-    assert process_of(talker_prefix) == talker.process.pid & 0xFFFF
-    spin_until(
-        executor,
-        lambda: heard_from_all(counted, {talker_prefix, _prefix(os.getpid())}),
-        what="the talker and ourselves to be all that was expected",
-    )
+    assert process_of(talker_prefix) == talker_pid
+    assert heard_from_all(Counter({talker_pid: 1}), {talker_prefix})
+    assert not heard_from_all(Counter({talker_pid: 1}), {_prefix(talker_pid + 1)})
+
+    # A second participant in this process (a context of its own) is one more port of ours.
+    second = Context()
+    rclpy.init(context=second)
+    try:
+        other = Node("_looking_too", context=second)
+        try:
+            again = local_participants(ros_domain)
+            assert again is not None and again[own_pid] == counted[own_pid] + 1, again
+        finally:
+            other.destroy_node()
+    finally:
+        second.try_shutdown()
 
 
 def test_no_answer_where_this_machine_cannot_know(context, executor, monkeypatch, ros_domain):
@@ -69,6 +82,13 @@ def test_no_answer_where_this_machine_cannot_know(context, executor, monkeypatch
         with monkeypatch.context() as patch:
             patch.setenv(name, value)
             assert local_participants(ros_domain) is None, f"{name}={value}"
+
+    def unreadable(path: str) -> str:
+        raise PermissionError(path)
+
+    with monkeypatch.context() as patch:  # whose sockets these are cannot be seen
+        patch.setattr(os, "readlink", unreadable)
+        assert local_participants(ros_domain) is None
 
 
 def test_heard_from_all_counts_participants_per_process():
