@@ -160,3 +160,29 @@ def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
         assert ctrl_c.interrupted(rcl_error(text)), text
     assert not ctrl_c.interrupted(rcl_error("failed to create subscription: invalid topic name"))
     assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
+
+
+def test_a_future_cut_short_by_ctrl_c_is_not_reported_and_other_errors_are():
+    """rclpy's Future.__del__ fails on a future whose __init__ a Ctrl-C cut short ("Exception
+    ignored in: <function Future.__del__ ...>"): said nothing of; other unraisable errors are."""
+    from rclpy.task import Future
+
+    cut = Future.__new__(Future)  # as a KeyboardInterrupt inside __init__ leaves it
+    with pytest.raises(AttributeError) as failed:
+        cut.__del__()
+    cut._exception = None  # this one may now be collected quietly
+    seen = []
+
+    def unraisable(exc_value, where):
+        return type("Unraisable", (), {"exc_value": exc_value, "object": where})()
+
+    previous = ctrl_c._previous_unraisablehook
+    ctrl_c._previous_unraisablehook = seen.append
+    try:
+        ctrl_c._quiet_unraisablehook(unraisable(failed.value, Future.__del__))
+        assert seen == []
+        other = unraisable(AttributeError("x"), test_which_command_lines_are_this_projects)
+        ctrl_c._quiet_unraisablehook(other)
+        assert seen == [other]
+    finally:
+        ctrl_c._previous_unraisablehook = previous
