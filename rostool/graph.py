@@ -267,17 +267,14 @@ class Graph:
         last_found, longest_gap = self.started, 0.0
         # Where the machine can say which processes hold a participant (local_participants.py),
         # having heard from each of them ends this wait early: usually at once.
-        expected = (
-            local_participants(self.node.context.get_domain_id())
-            if self.discovery.available
-            else None
-        )
+        domain_id = self.node.context.get_domain_id()
+        expected = local_participants(domain_id) if self.discovery.available else None
         while time.monotonic() < all_announced:
             if expected is not None and heard_from_all(expected, participants):
                 # Counted again: a participant made meanwhile must not stand in for one
                 # that was there at the first count (both count for their process). No
                 # answer this time (a process ending meanwhile): ask again next round.
-                recount = local_participants(self.node.context.get_domain_id())
+                recount = local_participants(domain_id)
                 if recount is not None and heard_from_all(recount, participants):
                     break
                 if recount is not None:

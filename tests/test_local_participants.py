@@ -26,7 +26,7 @@ def _prefix(pid: int, participant: int = 0) -> bytes:
         vendor_and_host
         + (pid & 0xFFFF).to_bytes(2, "little")
         + random
-        + (participant.to_bytes(4, "little"))
+        + participant.to_bytes(4, "little")
     )
 
 
