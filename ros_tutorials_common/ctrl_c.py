@@ -163,15 +163,17 @@ def _quiet_unraisablehook(unraisable) -> None:
 
 
 def cut_short(unraisable) -> bool:
-    """rclpy's Future (and Task).__del__ failing on an attribute that __init__ sets: a Ctrl-C
-    raised inside that __init__ (the executor makes a task per callback), seen as "Exception
-    ignored in: <function Future.__del__ ...> AttributeError: ... '_exception'" after a
-    `rostopic echo` had ended by Ctrl-C as it should. rclpy's slip, not the command's."""
+    """An rclpy object's __del__ failing on an attribute that its __init__ sets: a Ctrl-C
+    raised inside that __init__. Seen after a Ctrl-C had ended a command as it should: for a
+    Future or Task (the executor makes one per callback; "Exception ignored in: <function
+    Future.__del__ ...> AttributeError: ... '_exception'", after `rostopic echo`), and for the
+    executor rclpy.spin makes and its SignalHandlerGuardCondition (a server stopped as it
+    started spinning). rclpy's slip, not the command's."""
     where = unraisable.object
     return (
         isinstance(unraisable.exc_value, AttributeError)
-        and getattr(where, "__module__", "") == "rclpy.task"
-        and getattr(where, "__qualname__", "") in ("Future.__del__", "Task.__del__")
+        and getattr(where, "__module__", "").startswith("rclpy.")
+        and getattr(where, "__name__", "") == "__del__"
     )
 
 

@@ -91,7 +91,16 @@ def launch(node_process, tmp_path):
         assert int(grandchild_stat[1]) == node, "the grandchild's parent is the node, alive"
         assert grandchild_stat[3] != node_stat[3], "the grandchild has a session of its own"
         inner = int(node_stat[1])  # the launcher: the node's parent
-        assert {launcher.process.pid, inner, node, grandchild} <= set(marked(marker))
+        # The grandchild's command line can read empty for a moment after the spawner learnt
+        # its pid: Linux lets Popen return (close-on-exec) before exec has set up argv.
+        everyone = {launcher.process.pid, inner, node, grandchild}
+        deadline = time.monotonic() + TIMEOUT
+        while not everyone <= set(found := marked(marker)):
+            assert time.monotonic() < deadline, (
+                f"not all of {everyone} found by the marker: {found}; "
+                f"the grandchild: {_stat(grandchild)}"
+            )
+            time.sleep(0.05)
         yield launcher, marker, {"guardian": launcher.process.pid, "launcher": inner}
     finally:  # each test checks that nothing is left; after a failure, leave nothing either
         for pid in marked(marker):

@@ -16,6 +16,7 @@ import signal
 import subprocess
 import sys
 import sysconfig
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from fnmatch import fnmatch
@@ -24,6 +25,7 @@ from pathlib import Path
 import pytest
 import tomllib
 from helpers import TIMEOUT
+from rclpy.context import Context
 
 from ros_tutorials_common import ctrl_c
 
@@ -162,15 +164,21 @@ def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
     assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
 
 
-def test_a_future_cut_short_by_ctrl_c_is_not_reported_and_other_errors_are():
-    """rclpy's Future.__del__ fails on a future whose __init__ a Ctrl-C cut short ("Exception
-    ignored in: <function Future.__del__ ...>"): said nothing of; other unraisable errors are."""
+def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are():
+    """rclpy's Future.__del__ (and the executor's) fails on an object whose __init__ a Ctrl-C
+    cut short ("Exception ignored in: <function Future.__del__ ...>"): said nothing of; other
+    unraisable errors are."""
+    from rclpy.executors import SingleThreadedExecutor
     from rclpy.task import Future
 
     cut = Future.__new__(Future)  # as a KeyboardInterrupt inside __init__ leaves it
     with pytest.raises(AttributeError) as failed:
         cut.__del__()
     cut._exception = None  # this one may now be collected quietly
+    executor = SingleThreadedExecutor.__new__(SingleThreadedExecutor)
+    with pytest.raises(AttributeError) as executor_failed:
+        executor.__del__()
+    executor._sigint_gc = None
     seen = []
 
     def unraisable(exc_value, where):
@@ -180,9 +188,53 @@ def test_a_future_cut_short_by_ctrl_c_is_not_reported_and_other_errors_are():
     ctrl_c._previous_unraisablehook = seen.append
     try:
         ctrl_c._quiet_unraisablehook(unraisable(failed.value, Future.__del__))
+        ctrl_c._quiet_unraisablehook(
+            unraisable(executor_failed.value, SingleThreadedExecutor.__del__)
+        )
         assert seen == []
         other = unraisable(AttributeError("x"), test_which_command_lines_are_this_projects)
         ctrl_c._quiet_unraisablehook(other)
         assert seen == [other]
     finally:
         ctrl_c._previous_unraisablehook = previous
+
+
+def test_keyboard_interrupt_waits_until_rclpy_has_shut_ros_down(context):
+    """The SIGINT handler ros_args installs (ros_tutorials_common/ros/node_main.py) raises
+    KeyboardInterrupt only once the context is down: here it waits for a thread that shuts
+    the context down later, as rclpy's signal handler thread does, and gives up after its
+    timeout while the context stays up."""
+    from ros_tutorials_common.ros.node_main import _CtrlCOnceRosIsDown
+
+    handler = _CtrlCOnceRosIsDown(context)
+    assert handler.ros_is_up()
+    assert not handler.wait_until_down(0.2), "the context is up: the wait must give up"
+    shutting_down = threading.Timer(0.3, context.shutdown)
+    shutting_down.start()
+    try:
+        assert handler.wait_until_down(TIMEOUT)
+        assert not context.ok(), "the wait ended before the context was down"
+    finally:
+        shutting_down.join()
+    assert not _CtrlCOnceRosIsDown(Context()).ros_is_up(), "a context never initialised"
+
+
+def test_a_node_sees_ros_down_when_ctrl_c_reaches_it(node_process):
+    """End to end: rclpy.init(args=ros_args()) then spin; at KeyboardInterrupt rclpy's handler
+    has shut ROS down already, so the program's rclpy.try_shutdown() has nothing to race."""
+    code = (
+        "import rclpy\n"
+        "from ros_tutorials_common.ros import ros_args\n"
+        "rclpy.init(args=ros_args(['probe']))\n"
+        "node = rclpy.create_node('probe')\n"
+        "print('spinning', flush=True)\n"
+        "try:\n"
+        "    rclpy.spin(node)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('ROS down at KeyboardInterrupt:', not rclpy.ok(), flush=True)\n"
+        "rclpy.try_shutdown()\n"
+    )
+    probe = node_process("-c", code)
+    probe.wait_for_text("spinning")
+    assert probe.interrupt() == 0, probe.output
+    assert "ROS down at KeyboardInterrupt: True" in probe.lines, probe.output

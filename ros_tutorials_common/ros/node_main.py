@@ -10,18 +10,29 @@ ros_tutorials_common/dds.py) and checks the ROS arguments, so that ``--ros-args 
 the program with one clear line and exit status 1 instead of a traceback from rclpy.init.
 ``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
 steps at once for the tools (rostool, benchmarks), where rclpy.init is not the lesson.
+
+``ros_args`` also orders the two things a Ctrl-C does (``_CtrlCOnceRosIsDown``): rclpy's signal
+handler shuts ROS down in a thread of its own, and Python raises KeyboardInterrupt in the main
+thread. Left to chance, the program's ``except KeyboardInterrupt`` / ``finally:
+rclpy.try_shutdown()`` can run while that thread is still shutting down: try_shutdown then
+fails with "rcl_shutdown already called", and the node ends killed by SIGINT (status 130)
+instead of exiting 0 (seen in `make test` on a loaded machine).
 """
 
 from __future__ import annotations
 
+import signal
 import sys
+import threading
+import time
 from collections.abc import Callable, Sequence
 
 import rclpy
+from rclpy.context import Context
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
 from rclpy.node import Node
-from rclpy.signals import SignalHandlerOptions
+from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 from rclpy.utilities import remove_ros_args
 
 from ros_tutorials_common.dds import apply_dds_defaults
@@ -46,11 +57,58 @@ def user_args(argv: Sequence[str] | None = None) -> list[str]:
 
 def ros_args(argv: Sequence[str] | None = None) -> list[str]:
     """The command line to give rclpy.init (sys.argv unless argv), checked, with this
-    project's DDS defaults applied to the environment first."""
+    project's DDS defaults applied to the environment first, and Ctrl-C raising
+    KeyboardInterrupt only once ROS is shut down (see the module's docstring)."""
     argv = list(sys.argv if argv is None else argv)
     user_args(argv)  # ends the program with one line if the ROS arguments are malformed
     apply_dds_defaults()
+    _CtrlCOnceRosIsDown.install()
     return argv
+
+
+class _CtrlCOnceRosIsDown:
+    """Python's SIGINT handler for a program of this project: KeyboardInterrupt, as Python's
+    own, raised once rclpy's signal handler has shut the default context down (at most
+    ``WAIT`` seconds later), when rclpy handles SIGINT at all.
+
+    Installed before rclpy.init, which then installs rclpy's handler in front of it and calls
+    it after its own. Reads the context's handle, not Context.ok(): a signal handler must not
+    take a lock that the code it interrupted may hold.
+    """
+
+    WAIT = 2.0
+
+    def __init__(self, context: Context) -> None:
+        self.context = context
+
+    @classmethod
+    def install(cls) -> None:
+        if threading.current_thread() is not threading.main_thread():
+            return  # signal.signal works in the main thread only
+        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:  # not the program's
+            signal.signal(signal.SIGINT, cls(rclpy.get_default_context()))
+
+    def ros_is_up(self) -> bool:
+        handle = self.context.handle
+        try:
+            return handle is not None and handle.ok()
+        except Exception:  # destroyed meanwhile: down
+            return False
+
+    def wait_until_down(self, timeout: float) -> bool:
+        """Whether the context is down (now, or before timeout seconds have passed)."""
+        deadline = time.monotonic() + timeout
+        while self.ros_is_up():
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.001)
+        return True
+
+    def __call__(self, signum: int, frame: object) -> None:
+        options = get_current_signal_handlers_options()
+        if options in (SignalHandlerOptions.SIGINT, SignalHandlerOptions.ALL):
+            self.wait_until_down(self.WAIT)
+        raise KeyboardInterrupt
 
 
 def init(
