@@ -227,8 +227,8 @@ def test_a_node_sees_ros_down_when_ctrl_c_reaches_it(node_process):
         "from ros_tutorials_common.ros import ros_args\n"
         "rclpy.init(args=ros_args(['probe']))\n"
         "node = rclpy.create_node('probe')\n"
-        "print('spinning', flush=True)\n"
         "try:\n"
+        "    print('spinning', flush=True)\n"  # in the try: the Ctrl-C may follow at once
         "    rclpy.spin(node)\n"
         "except KeyboardInterrupt:\n"
         "    print('ROS down at KeyboardInterrupt:', not rclpy.ok(), flush=True)\n"
