@@ -22,6 +22,7 @@ from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
 from benchmarks.common import Row, fmt_ms, p99, python, start, stop, wait_for_lines
+from rostool import wait
 
 PERIOD = 0.016
 TURTLES = 10
@@ -66,11 +67,8 @@ class Bench:
             self.executor.spin_once(timeout_sec=0.05)
 
     def spin_until(self, condition, timeout: float = 60.0) -> None:
-        end = time.monotonic() + timeout
-        while not condition():
-            if time.monotonic() > end:
-                raise RuntimeError("turtlesim benchmark: timed out")
-            self.executor.spin_once(timeout_sec=0.05)
+        if not wait.spin_until(self.executor, condition, timeout, period=0.05):
+            raise RuntimeError("turtlesim benchmark: timed out")
 
     def spawn(self, count: int) -> list[str]:
         client = self.node.create_client(Spawn, "/spawn")

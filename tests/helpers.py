@@ -24,6 +24,8 @@ import pytest
 from rclpy.executors import Executor
 from warm import Starter
 
+from rostool import wait
+
 T = TypeVar("T")
 TIMEOUT = 30.0
 # The console scripts (`rostool`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
@@ -159,12 +161,10 @@ def spin_until(
     timeout: float = TIMEOUT,
     what: str = "condition",
 ) -> None:
-    """Spin until condition() is true; fail the test clearly after timeout seconds."""
-    deadline = time.monotonic() + timeout
-    while not condition():
-        if time.monotonic() > deadline:
-            pytest.fail(f"timed out after {timeout:.0f} s waiting for {what}")
-        executor.spin_once(timeout_sec=0.05)
+    """Spin until condition() is true (the tools' own wait loop); fail the test clearly
+    after timeout seconds."""
+    if not wait.spin_until(executor, condition, timeout, period=0.05):
+        pytest.fail(f"timed out after {timeout:.0f} s waiting for {what}")
 
 
 class NodeProcess:
