@@ -192,6 +192,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
     group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
     group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
     group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
+    p.add_argument("-v", "--verbose", action="store_true", help="print each message (with -r)")
     p.set_defaults(run=_pub)
 
     for name, bandwidth in (("hz", False), ("bw", True)):
@@ -216,7 +217,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
 def _pub(graph: Graph, args: argparse.Namespace) -> None:
     values = values_from_args(args.values)
     if args.rate is not None:
-        topic.pub(graph, args.topic, args.type, values, rate=args.rate)
+        topic.pub(graph, args.topic, args.type, values, rate=args.rate, verbose=args.verbose)
     elif args.once:
         topic.pub(graph, args.topic, args.type, values, times=1)
     else:  # ROS 1's default: publish once, latched, until Ctrl-C

@@ -138,8 +138,10 @@ def pub(
     rate: float | None = DEFAULT_PUB_RATE,
     times: int | None = None,
     latch: bool = False,
+    verbose: bool = True,
 ) -> None:
-    """Publish a message filled from values: `times` times (None: until Ctrl-C) at `rate` Hz.
+    """Publish a message filled from values: `times` times (None: until Ctrl-C) at `rate` Hz,
+    printing each message unless not verbose (ROS 1's `rostopic pub -r` printed none).
 
     rate=None publishes once and keeps the publisher alive until Ctrl-C (ROS 1's latching
     mode, with a transient-local publisher so late subscribers that ask for it still get it).
@@ -159,7 +161,7 @@ def pub(
                 print("publishing and latching message. Press ctrl-C to terminate", flush=True)
                 _latch(graph, publisher, msg)
             else:
-                _publish(graph, publisher, msg, rate, times)
+                _publish(graph, publisher, msg, rate, times, verbose)
         return
     publisher = graph.node.create_publisher(msg_type, topic, qos)
     # A one-shot publication into a void is lost: give subscribers time to match first.
@@ -167,7 +169,7 @@ def pub(
         graph.wait_for(publisher.get_subscription_count, "no subscriber")
     except ToolError:
         print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
-    _publish(graph, publisher, msg, rate, times)  # Ctrl-C before the last one: interrupted
+    _publish(graph, publisher, msg, rate, times, verbose)  # Ctrl-C before the last: interrupted
     # Reliable delivery of the last message before the process goes away.
     publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
 
@@ -195,8 +197,11 @@ def _publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
         raise
 
 
-def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: int | None) -> None:
-    print("publisher: beginning loop", flush=True)
+def _publish(
+    graph: Graph, publisher: Publisher, msg: Any, rate: float, times: int | None, verbose: bool
+) -> None:
+    if verbose:
+        print("publisher: beginning loop", flush=True)
     count = 0
     next_time = time.monotonic()
     while times is None or count < times:
@@ -206,7 +211,8 @@ def _publish(graph: Graph, publisher: Publisher, msg: Any, rate: float, times: i
             continue
         count += 1
         _publish_one(graph, publisher, msg)
-        print(f"publishing #{count}: {msg}", flush=True)
+        if verbose:
+            print(f"publishing #{count}: {msg}", flush=True)
         next_time += 1.0 / rate
 
 

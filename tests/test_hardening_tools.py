@@ -97,8 +97,9 @@ def test_rossrv_show_reading_dev_zero_is_refused():
 
 def test_rostopic_pub_at_1e9_hz_ends_cleanly_on_sigterm():
     """At -r 1e9 the loop never waits, so SIGTERM shuts ROS down between two publishes."""
+    flood = ("pub", "-v", "-r", "1e9", "/hardening_flood", "std_msgs/String", "hi")  # -v: lines
     proc = subprocess.Popen(
-        [str(BIN / "rostopic"), "pub", "-r", "1e9", "/hardening_flood", "std_msgs/String", "hi"],
+        [str(BIN / "rostopic"), *flood],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         start_new_session=True,

@@ -237,6 +237,7 @@ def test_topic_pub_reaches_a_subscriber_in_both_spellings(node_process):
     )
     listener.wait_for_output(lambda lines: sum("[again]" in x for x in lines) >= 3)
     assert rated.interrupt() == 0
+    assert "publishing" not in rated.output, "ROS 1's pub -r prints nothing per message (-v does)"
 
 
 # Services, parameters and actions, against the lessons' nodes, as the book does it.
