@@ -46,7 +46,7 @@ from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_common.ros import init
 from rostool.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
 from rostool.errors import ToolError
-from rostool.local_participants import heard_from_all, local_participants
+from rostool.local_participants import heard_from_all, local_participants, unexplained
 from rostool.wait import spin_until
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
@@ -276,8 +276,10 @@ class Graph:
                 # answer this time (a process ending meanwhile): ask again next round.
                 recount = local_participants(domain_id)
                 if recount is not None and heard_from_all(recount, participants):
-                    break
-                if recount is not None:
+                    if not unexplained(recount, participants):
+                        break
+                    expected = None  # someone the count cannot see: wait the periods out
+                elif recount is not None:
                     expected = recount
             self.spin_once(SETTLE_POLL_PERIOD)
             found = self.participants()

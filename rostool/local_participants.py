@@ -17,8 +17,9 @@ the listing then waits the announcement periods, never less. Participants that a
 the listing waits are not in the first count; the listing counts again before it stops
 (graph.Graph.settle), so a process's new participant cannot stand in for its old one.
 
-Whenever that reasoning might not hold, ``local_participants`` answers None and the listing
-waits the announcement periods as before: another discovery range, static peers, a discovery
+Whenever that reasoning might not hold, ``local_participants`` answers None, or the listing
+sees a participant the count does not explain (``unexplained``), and the listing waits the
+announcement periods as before: another discovery range, static peers, a discovery
 server, another RMW, no such port found for our own participant (another transport or port
 layout), or a socket whose process we may not look at (another user's). What it cannot know: a
 participant on this machine configured with no UDP transport at all (e.g.
@@ -69,6 +70,30 @@ def heard_from_all(expected: Counter[int], seen: set[bytes]) -> bool:
     """Whether the participants seen (GUID prefixes) include as many per process as expected."""
     found = Counter(process_of(prefix) for prefix in seen)
     return all(found[pid] >= count for pid, count in expected.items())
+
+
+def unexplained(expected: Counter[int], seen: set[bytes]) -> bool:
+    """Whether a participant seen is not one of those counted, so that the count cannot be
+    trusted to hold everyone: another vendor's (no process id in its GUID), more of one
+    process than it holds discovery ports, or one of a running process that holds none
+    (a port layout of its own: another configuration, a participant number past
+    MAX_PARTICIPANTS). A participant of a process that has ended meanwhile is no sign."""
+    found = Counter(process_of(prefix) for prefix in seen)
+    return any(
+        pid is None or expected[pid] > 0 or _runs(pid)
+        for pid, count in found.items()
+        if pid is None or count > expected[pid]
+    )
+
+
+def _runs(low_bits: int) -> bool:
+    """Whether a process runs whose id ends in these 16 bits."""
+    try:
+        with open("/proc/sys/kernel/pid_max") as pid_max:
+            highest = int(pid_max.read())
+    except (OSError, ValueError):
+        return True  # cannot tell: assume it runs
+    return any(os.path.exists(f"/proc/{pid}") for pid in range(low_bits, highest + 1, 0x10000))
 
 
 def _only_this_machine() -> bool:

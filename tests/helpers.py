@@ -167,6 +167,15 @@ def spin_until(
         pytest.fail(f"timed out after {timeout:.0f} s waiting for {what}")
 
 
+def _start_time(pid: int) -> int | None:
+    """When a process started (clock ticks after boot, /proc/PID/stat); None if none runs."""
+    try:
+        with open(f"/proc/{pid}/stat") as stat:
+            return int(stat.read().rsplit(")", 1)[1].split()[19])
+    except (OSError, IndexError, ValueError):
+        return None
+
+
 class NodeProcess:
     """A tutorial executable run as a real process, its output collected line by line."""
 
@@ -202,6 +211,7 @@ class NodeProcess:
             finally:
                 os.close(write_end)
             self._stdout = open(read_end, encoding="utf-8", errors="replace")  # noqa: SIM115
+        self._started_at = _start_time(self.process.pid)  # tells this process from a new one
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
 
@@ -299,7 +309,10 @@ class NodeProcess:
 
     def kill(self) -> None:
         """SIGKILL to the process's whole group (it leads a session of its own), also when
-        the leader has ended already: children it started must not outlive the test."""
-        with contextlib.suppress(ProcessLookupError, PermissionError):
-            os.killpg(self.process.pid, signal.SIGKILL)
+        the leader has ended already: children it started must not outlive the test. Not
+        when its process id now names another process (ended and reaped long ago, the id
+        given again to a process that may lead a group of another test's)."""
+        if _start_time(self.process.pid) in (None, self._started_at):
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                os.killpg(self.process.pid, signal.SIGKILL)
         self.process.wait()

@@ -10,13 +10,20 @@ from __future__ import annotations
 
 import os
 from collections import Counter
+from pathlib import Path
 
 import rclpy
-from helpers import spin_until
+from helpers import run, spin_until
 from rclpy.context import Context
 from rclpy.node import Node
 
-from rostool.local_participants import heard_from_all, local_participants, process_of
+from ros_tutorials_common import dds
+from rostool.local_participants import (
+    heard_from_all,
+    local_participants,
+    process_of,
+    unexplained,
+)
 
 
 def _prefix(pid: int, participant: int = 0) -> bytes:
@@ -97,3 +104,34 @@ def test_heard_from_all_counts_participants_per_process():
     assert heard_from_all(two_in_one, {_prefix(7), _prefix(7, 1), _prefix(70000)})
     assert heard_from_all(Counter(), set())
     assert process_of(b"\x01\x10" + bytes(10)) is None  # another vendor's: no process id
+
+
+def test_a_participant_the_count_cannot_explain_is_noticed():
+    """A listing stops early only when every participant it saw is one of those counted."""
+    mine = os.getpid() & 0xFFFF
+    counted = Counter({mine: 1})
+    assert not unexplained(counted, {_prefix(mine)})
+    assert unexplained(counted, {_prefix(mine), _prefix(mine, 1)}), "more than it holds ports"
+    assert unexplained(Counter(), {_prefix(mine)}), "a running process that holds no port"
+    assert unexplained(counted, {b"\x01\x10" + bytes(10)}), "another vendor's"
+    ended = next(
+        low
+        for low in range(300, 0xFFFF)
+        if not any(os.path.exists(f"/proc/{pid}") for pid in range(low, 1 << 22, 0x10000))
+    )
+    assert not unexplained(counted, {_prefix(mine), _prefix(ended)}), "of a process now gone"
+
+
+def test_a_listing_stops_once_it_has_heard_from_everyone(node_process, tmp_path):
+    """With an announcement period so long that waiting it out five times would pass the
+    listing's 10 s limit (and print a warning), `rosnode list` still ends without one: it
+    stopped once it had heard from every participant on this machine."""
+    profile = Path(dds.DDS_DEFAULTS["FASTRTPS_DEFAULT_PROFILES_FILE"]).read_text()
+    slow = tmp_path / "slow_announcements.xml"
+    slow.write_text(profile.replace("<sec>0</sec>", "<sec>15</sec>"))
+    talker = node_process("-m", "ros_tutorials_topic.talker")
+    talker.wait_for_text("hello world")
+    env = {**os.environ, "FASTRTPS_DEFAULT_PROFILES_FILE": str(slow)}
+    listed = run("rosnode", "list", env=env)
+    assert listed.returncode == 0 and "/talker" in listed.stdout.split(), listed
+    assert "warning" not in listed.stderr, listed.stderr
