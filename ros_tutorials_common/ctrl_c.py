@@ -33,6 +33,7 @@ and rosrun start a command of this project with SIGINT blocked (``starts_project
 from __future__ import annotations
 
 import _signal  # the C module: ``signal`` imports enum, too slow for every start of Python
+import _thread
 import os
 import sys
 
@@ -157,9 +158,32 @@ def _quiet_excepthook(kind, value, traceback) -> None:
 
 
 def _quiet_unraisablehook(unraisable) -> None:
-    # A Ctrl-C while Python runs the atexit callbacks or a __del__ on the way out.
-    if not isinstance(unraisable.exc_value, KeyboardInterrupt) and not cut_short(unraisable):
+    if isinstance(unraisable.exc_value, KeyboardInterrupt):
+        if _still_running():
+            # The Ctrl-C came while a __del__ ran (rclpy's Future and Task have one, and the
+            # executor drops one per callback): Python cannot raise it from there, so it would
+            # be lost and the command would run on (`rostopic echo` ignored a Ctrl-C for 30 s
+            # under load). Deliver it again, a moment later, from a thread: raised from here
+            # (signal.raise_signal, interrupt_main) it would only end this hook.
+            _deliver_again()
+        return  # on the way out (atexit, module teardown): it is the exit already under way
+    if not cut_short(unraisable):
         _previous_unraisablehook(unraisable)
+
+
+def _deliver_again() -> None:
+    import threading
+
+    again = threading.Timer(0.01, _thread.interrupt_main, (_signal.SIGINT,))
+    again.daemon = True
+    again.start()
+
+
+def _still_running() -> bool:
+    """Whether the program still runs: not yet in Python's shutdown (which marks the main
+    thread stopped before the atexit callbacks run)."""
+    threading = sys.modules.get("threading")
+    return not sys.is_finalizing() and (threading is None or threading.main_thread().is_alive())
 
 
 def cut_short(unraisable) -> bool:
