@@ -155,6 +155,8 @@ class Scope:
     params: list[tuple[str, Any]] = field(default_factory=list)
     params_files: list[str] = field(default_factory=list)  # only inside a ROS 2 <node>
     env: dict[str, str | None] = field(default_factory=dict)
+    # The file's <arg>s declared so far, name -> line: shared by its groups, new per file.
+    declared: dict[str, int] = field(default_factory=dict)
 
     def child(self, **changes: Any) -> Scope:
         copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
@@ -350,6 +352,7 @@ class Resolver:
         parent: Scope | None,
         strict: bool = True,
         include: Element | None = None,
+        given_at: dict[str, Element] | None = None,
     ) -> None:
         path = path.resolve()
         if path in self.include_chain:
@@ -363,13 +366,18 @@ class Resolver:
         unknown = sorted(set(given) - declared) if strict else []
         if unknown:
             names = ", ".join(sorted(n for n in declared if n)) or "none"
+            if given_at and unknown[0] in given_at:  # an <include>'s <arg>: name its line
+                raise given_at[unknown[0]].error(
+                    f"no argument named {', '.join(unknown)} is declared in {path.name} "
+                    f"(declared: {names})"
+                )
             raise LaunchError(
                 f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
             )
         if parent is None:
             scope = Scope(self, path, fmt, {}, given)
         else:
-            scope = parent.child(file=path, fmt=fmt, args={}, given=given)
+            scope = parent.child(file=path, fmt=fmt, args={}, given=given, declared={})
         self.include_chain.append(path)
         self.resolve_scope(root, scope)
         self.include_chain.pop()
@@ -462,6 +470,12 @@ class Resolver:
     def on_arg(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
         fixed = "value" in element.attrs  # ROS 1: a constant, not an argument
+        if scope.fmt == "ros1" and name in scope.declared:
+            raise element.error(
+                f"argument {name!r} is declared twice (first at line {scope.declared[name]}); "
+                "roslaunch refuses that too"
+            )
+        scope.declared[name] = element.line
         for child in element.children:
             _check_tag(child, {"choice": {"value"}}, scope.fmt, "arg")
         if fixed and name in scope.given:
@@ -505,14 +519,17 @@ class Resolver:
             path = scope.file.parent / path
         pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
         given = dict(scope.args) if pass_all else {}
+        given_at = {}
         for child in element.children:
             _check_tag(child, {"arg": {"name", "value"}}, scope.fmt, "include")
             if self.enabled(child, scope):
-                given[self.text(child, "name", scope)] = self.text(child, "value", scope)
+                name = self.text(child, "name", scope)
+                given[name] = self.text(child, "value", scope)
+                given_at.setdefault(name, child)
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         if not path.is_file():
             raise element.error(f"included file {path} does not exist")
-        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element)
+        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element, given_at)
 
     @tag("ros2", "log", {"message"})
     def on_log(self, element: Element, scope: Scope) -> None:

@@ -44,6 +44,45 @@ def test_an_argument_with_equals_says_arguments_are_name_colon_equals_value(caps
     assert "name:=value" in line and "unknown package" not in line
 
 
+# 2. an <include> passing an argument the included file does not declare
+
+
+def test_an_undeclared_include_argument_names_the_including_file_and_line(capsys, tmp_path):
+    ros1_file(tmp_path, '<arg name="topic" default="chatter"/>', "x.launch")
+    path = ros1_file(
+        tmp_path, '<include file="x.launch">\n  <arg name="topc" value="news"/>\n</include>'
+    )
+    line = refused(capsys, str(path))
+    assert line.startswith(f"error: {path}:3: ")
+    assert "no argument named topc is declared in x.launch (declared: topic)" in line
+
+
+# 3. an argument declared twice in one ROS 1 file
+
+
+def test_an_argument_declared_twice_is_refused_with_both_places(capsys, tmp_path):
+    path = ros1_file(
+        tmp_path, '<arg name="a" default="1"/>\n<group><arg name="a" value="2"/></group>'
+    )
+    line = refused(capsys, str(path))
+    assert line == (
+        f"error: {path}:3: argument 'a' is declared twice (first at line 2); "
+        "roslaunch refuses that too"
+    )
+
+
+def test_an_argument_declared_under_exclusive_conditions_is_accepted(capsys, tmp_path):
+    path = ros1_file(
+        tmp_path,
+        '<arg name="fast" default="true"/>\n'
+        '<arg name="rate" default="10" if="$(arg fast)"/>\n'
+        '<arg name="rate" default="1" unless="$(arg fast)"/>\n'
+        + NODE.format('<param name="rate" value="$(arg rate)"/>'),
+    )
+    status, lines, out = launch(capsys, str(path))
+    assert status == 0 and lines == [] and "param:   rate = 10" in out
+
+
 # 7. a package without a file, a file in another package
 
 

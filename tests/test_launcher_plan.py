@@ -257,7 +257,7 @@ def test_include_is_scoped_and_takes_args_ns_and_pass_all_args(tmp_path):
     assert "argument 'private' is not declared here" in error(tmp_path, leak)
     extra = ros1('<include file="inner.launch"><arg name="who" value="a"/>'
                  '<arg name="what" value="b"/></include>')  # fmt: skip
-    assert "no argument named what is declared (declared: private, who)" in error(tmp_path, extra)
+    assert "what is declared in inner.launch (declared: private, who)" in error(tmp_path, extra)
 
 
 def test_include_loops_and_missing_files_are_errors(tmp_path):
