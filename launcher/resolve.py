@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import shlex
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
@@ -175,6 +176,24 @@ def join_namespace(base: str, name: str) -> str:
     """Namespace ``name`` relative to ``base`` (absolute if it starts with /)."""
     full = name if name.startswith("/") else f"{base.rstrip('/')}/{name}"
     return "/" + "/".join(part for part in full.split("/") if part)
+
+
+# A ROS name as rcl's remap rules take it: parts of letters, digits and _ (not starting with a
+# digit) separated by single /, relative, absolute (/a) or private (~/a); the rule's "from" may
+# start with rostopic:// or rosservice://. No spaces, no {node}, no wildcards, no trailing /.
+_ROS_NAME = re.compile(r"(~/|/)?[A-Za-z_][A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*")
+_REMAP_PREFIX = re.compile(r"(rostopic|rosservice)://")
+
+
+def remap_problem(name: str, side: str) -> str | None:
+    """Why rcl would refuse ``name`` as the ``side`` ("from" or "to") of a remap; else None."""
+    plain = _REMAP_PREFIX.sub("", name, count=1) if side == "from" else name
+    if _ROS_NAME.fullmatch(plain):
+        return None
+    return (
+        f"remap {side}={name!r} is not a valid ROS name (parts of letters, digits and _, "
+        "not starting with a digit, separated by one /; ~/ only at the start)"
+    )
 
 
 def valid_name(name: str) -> bool:
@@ -541,7 +560,15 @@ class Resolver:
     @tag("ros2", "set_remap", {"from", "to"})
     @tag("ros2", "remap", {"from", "to"}, under={"node"})
     def on_remap(self, element: Element, scope: Scope) -> None:
-        scope.remaps.append((self.text(element, "from", scope), self.text(element, "to", scope)))
+        names = []
+        for side in ("from", "to"):
+            written = name = self.text(element, side, scope)
+            if scope.fmt == "ros1" and name.startswith("~") and not name.startswith("~/"):
+                name = "~/" + name[1:]  # ROS 1's private ~name is ~/name in ROS 2
+            if remap_problem(name, side):
+                raise element.error(remap_problem(written, side) or "")
+            names.append(name)
+        scope.remaps.append((names[0], names[1]))
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
     @tag("ros2", "set_env", {"name", "value"})

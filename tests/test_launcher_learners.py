@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from launcher.__main__ import main
+from launcher.resolve import remap_problem
 
 NODE = '<node pkg="ros_tutorials_topic" type="topic_publisher" name="pub">{}</node>'
 
@@ -81,6 +84,66 @@ def test_an_argument_declared_under_exclusive_conditions_is_accepted(capsys, tmp
     )
     status, lines, out = launch(capsys, str(path))
     assert status == 0 and lines == [] and "param:   rate = 10" in out
+
+
+# 4. remap names are checked as rcl checks them, before anything starts
+
+
+@pytest.mark.parametrize(
+    ("attrs", "bad"),
+    [
+        ('from="chat ter" to="x"', "from='chat ter'"),
+        ('from="chatter" to="1x"', "to='1x'"),
+        ('from="a//b" to="x"', "from='a//b'"),
+        ('from="chatter" to="news/"', "to='news/'"),
+        ('from="chatter" to="$(arg t)"', "to='a-b'"),  # the substitution's result is checked
+        ('from="chatter" to="{node}/x"', "to='{node}/x'"),
+    ],
+)
+def test_a_remap_that_is_not_a_ros_name_is_refused_at_its_line(capsys, tmp_path, attrs, bad):
+    path = ros1_file(tmp_path, '<arg name="t" default="a-b"/>\n' + NODE.format(f"<remap {attrs}/>"))
+    line = refused(capsys, str(path))
+    assert line.startswith(f"error: {path}:3: remap {bad} is not a valid ROS name")
+
+
+def test_a_remap_in_a_ros2_file_is_checked_too(capsys, tmp_path):
+    path = tmp_path / "test.launch.xml"
+    path.write_text(
+        '<launch>\n<node pkg="ros_tutorials_topic" exec="publisher">\n'
+        '  <remap from="chatter" to="~news"/>\n</node>\n</launch>\n'
+    )
+    line = refused(capsys, str(path))
+    assert line.startswith(f"error: {path}:3: remap to='~news' is not a valid ROS name")
+
+
+def test_private_and_absolute_remaps_pass_and_ros1_tilde_names_become_ros2_ones(capsys, tmp_path):
+    remaps = '<remap from="~chatter" to="/news"/><remap from="rostopic://a" to="~/b_2"/>'
+    path = ros1_file(tmp_path, NODE.format(remaps))
+    status, lines, out = launch(capsys, str(path))
+    assert status == 0 and lines == [], lines
+    assert "remap:   ~/chatter -> /news\n    remap:   rostopic://a -> ~/b_2" in out
+
+
+@pytest.mark.parametrize(
+    "rule",
+    ["a:=b", "/a/b:=c", "~/a:=b", "_a:=~/b", "rostopic://a:=b", "rosservice://a/b:=/c",
+     "chat ter:=x", "~a:=b", "~:=b", "a:=~b", "1a:=b", "a:=1b", "a/:=b", "a//b:=c", "a:=b/",
+     "a:={node}/x", "**:=b", "a*:=b", "a-b:=c", "a.b:=c", "a:=", ":=a", "/:=a", "a:=b~", "ä:=b"],
+)  # fmt: skip
+def test_the_remap_check_agrees_with_rcl(rule):
+    """rcl itself parses each rule (no node, no DDS participant): both must agree."""
+    rclpy = pytest.importorskip("rclpy")
+    source, _, target = rule.partition(":=")
+    context = rclpy.context.Context()
+    try:
+        rclpy.init(args=["--ros-args", "-r", rule], context=context)
+    except Exception:
+        rcl_accepts = False
+    else:
+        rcl_accepts = True
+        rclpy.shutdown(context=context)
+    ours = remap_problem(source, "from") is None and remap_problem(target, "to") is None
+    assert ours == rcl_accepts
 
 
 # 7. a package without a file, a file in another package
