@@ -281,6 +281,7 @@ def describe_args(path: Path) -> list[ArgInfo]:
 
 def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     """A parameter value from its text, typed as roslaunch and ros2 launch do."""
+    name = element.attrs.get("name", "")
     try:
         if kind in ("str", "string"):
             return text
@@ -289,11 +290,12 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
         if kind == "double":
             return float(text)
         if kind in ("bool", "boolean"):
-            return to_bool(text, element, "a bool parameter")
+            return to_bool(text, element, "")
         if kind == "yaml":
             return _load_yaml(text, element)
-    except (ValueError, yaml.YAMLError) as error:
-        raise element.error(f"value {text!r} is not a valid {kind}: {error}") from None
+    except (ValueError, LaunchError):  # int('abc'), float('fast'), to_bool('yes please')
+        what = {"int": "an int", "double": "a double"}.get(kind, "a bool (true, false, 1 or 0)")
+        raise element.error(f"param {name!r}: {text!r} is not {what}") from None
     if kind is not None:
         raise element.error(f"unknown parameter type {kind!r}; use str, int, double, bool, yaml")
     for convert in (int, float):

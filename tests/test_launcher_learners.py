@@ -146,6 +146,23 @@ def test_the_remap_check_agrees_with_rcl(rule):
     assert ours == rcl_accepts
 
 
+# 5. a <param type=...> whose value is not of that type
+
+
+@pytest.mark.parametrize(
+    ("kind", "value", "expected"),
+    [
+        ("int", "abc", "param 'x': 'abc' is not an int"),
+        ("int", "1.5", "param 'x': '1.5' is not an int"),
+        ("double", "fast", "param 'x': 'fast' is not a double"),
+        ("bool", "yes please", "param 'x': 'yes please' is not a bool (true, false, 1 or 0)"),
+    ],
+)
+def test_a_param_of_the_wrong_type_says_so_in_ros_terms(capsys, tmp_path, kind, value, expected):
+    path = ros1_file(tmp_path, NODE.format(f'<param name="x" type="{kind}" value="{value}"/>'))
+    assert refused(capsys, str(path)) == f"error: {path}:2: {expected}"
+
+
 # 7. a package without a file, a file in another package
 
 

@@ -213,7 +213,7 @@ def test_param_types_namespaces_and_private_names(tmp_path):
     }  # fmt: skip
     assert params(at_root) == {"top": 1, "abs": 1.0}
     bad = ros1('<param name="x" type="int" value="seven"/>')
-    assert "value 'seven' is not a valid int" in error(tmp_path, bad)
+    assert "param 'x': 'seven' is not an int" in error(tmp_path, bad)
 
 
 def test_rosparam_loads_yaml_from_a_file_or_inline(tmp_path):
