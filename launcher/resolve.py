@@ -50,6 +50,8 @@ CONDITIONS = {"if", "unless"}
 PROCESS_ATTRS = {"args", "output", "respawn", "respawn_delay", "respawn_max_retries",
                  "sigterm_timeout", "sigkill_timeout", "launch_prefix", "on_exit"}  # fmt: skip
 SYNTAX = {"ros1": "ROS 1 (roslaunch)", "ros2": "ROS 2"}
+# Attributes kept with _ inside (parse.py) that both formats document with - (both accepted).
+SPELLING = {"launch_prefix": "launch-prefix"}
 
 
 @dataclass(frozen=True)
@@ -234,8 +236,11 @@ def detect_format(root: Element) -> str:
 def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
     for name in element.attrs:
         if name not in allowed | CONDITIONS:
-            known = ", ".join(sorted(allowed | CONDITIONS))
-            raise element.error(f"unknown attribute {name!r} on <{element.tag}>; allowed: {known}")
+            known = ", ".join(sorted(SPELLING.get(a, a) for a in allowed | CONDITIONS))
+            written = element.spelled.get(name, name)  # as the file wrote it
+            raise element.error(
+                f"unknown attribute {written!r} on <{element.tag}>; allowed: {known}"
+            )
     if "if" in element.attrs and "unless" in element.attrs:
         raise element.error("use either 'if' or 'unless', not both")
 

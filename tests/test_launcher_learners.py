@@ -163,6 +163,16 @@ def test_a_param_of_the_wrong_type_says_so_in_ros_terms(capsys, tmp_path, kind, 
     assert refused(capsys, str(path)) == f"error: {path}:2: {expected}"
 
 
+# 6. unknown attributes are listed as the file's format spells them
+
+
+def test_unknown_attribute_lists_launch_prefix_as_ros1_spells_it(capsys, tmp_path):
+    path = ros1_file(tmp_path, NODE.format("").replace("<node ", '<node launch-prefx="nice" '))
+    line = refused(capsys, str(path))
+    assert line.startswith(f"error: {path}:2: unknown attribute 'launch-prefx' on <node>")
+    assert "launch-prefix" in line and "launch_prefix" not in line
+
+
 # 7. a package without a file, a file in another package
 
 

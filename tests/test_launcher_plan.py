@@ -296,7 +296,7 @@ def test_unknown_tags_and_attributes_name_the_place_and_the_allowed_set(tmp_path
     assert message.startswith(f"{tmp_path / 'test.launch'}:2: unknown tag <machine> in <launch>")
     assert "allowed: <arg>, <env>, <group>, <include>, <node>, <param>" in message
     message = error(tmp_path, ros1(node1(extra='machine="m"')))
-    assert ":2: unknown attribute 'machine' on <node>; allowed: args, if, launch_prefix" in message
+    assert ":2: unknown attribute 'machine' on <node>; allowed: args, if, launch-prefix" in message
     assert "unknown tag <group> in <node>" in error(tmp_path, ros1(node1(body="<group/>")))
 
 
