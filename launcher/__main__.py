@@ -199,6 +199,8 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except KeyboardInterrupt:
         return 130
+    for warning in launch.warnings:  # at start, before the plan or the first process
+        print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
         print(format_plan(specs, launch.messages))
         return 0

@@ -132,6 +132,7 @@ class Launch:
 
     nodes: list[NodeDecl]
     messages: list[str]
+    warnings: list[str] = field(default_factory=list)  # file:line: what reaches no node
 
 
 @dataclass
@@ -362,7 +363,10 @@ class Resolver:
         # ROS 1: the parameter server roslaunch would fill, full name -> value, and the
         # nodes whose parameters come from it once every file is read.
         self.param_server: dict[str, Any] = {}
+        self.param_origin: dict[str, tuple[str, str]] = {}  # key -> (name as written, where)
         self.ros1_nodes: list[NodeDecl] = []
+        # ROS 2: each <set_parameter>'s entry, to tell whether a node after it received it.
+        self.set_parameters: list[tuple[tuple[str, Any], str]] = []
 
     def anon(self, name: str) -> str:
         if name not in self.anon_names:
@@ -427,9 +431,23 @@ class Resolver:
                 TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
     def finish(self) -> Launch:
+        reached: set[str] = set()
         for node in self.ros1_nodes:
-            node.params = self._ros1_params(node) + node.params
-        return Launch(self.nodes, self.messages)
+            node.params = self._ros1_params(node, reached) + node.params
+        # A parameter no node receives would be dropped without a word (ROS 1 kept every one
+        # on its parameter server): one warning for each place that wrote such parameters.
+        unreached: dict[tuple[str, str], str] = {}
+        for key, (name, where) in self.param_origin.items():
+            if key not in reached:
+                unreached[(where, name)] = "ROS 2 has no parameter server; put it inside a <node>"
+        for entry, where in self.set_parameters:
+            if not any(param is entry for node in self.nodes for param in node.params):
+                unreached[(where, entry[0])] = "no <node> follows it in its scope"
+        warnings = [
+            f"{where}: param {name!r} is given to no node: {why}"
+            for (where, name), why in unreached.items()
+        ]
+        return Launch(self.nodes, self.messages, warnings)
 
     # -- attribute helpers --------------------------------------------------------------------
 
@@ -599,7 +617,10 @@ class Resolver:
         value = _typed_value(self.text(element, "value", scope), None, element)
         name = self.text(element, "name", scope)
         _check_params(element, None, name, value)
-        scope.params.append((name, value))
+        entry = (name, value)
+        scope.params.append(entry)
+        if element.tag == "set_parameter":
+            self.set_parameters.append((entry, element.where))
 
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
@@ -613,6 +634,7 @@ class Resolver:
         _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
         for key, item in _flatten(join_namespace(scope.namespace, name), value):
             self.param_server[key] = item
+            self.param_origin[key] = (name, element.where)
 
     @tag("ros1", "rosparam", {"command", "file", "param", "ns", "subst_value"}, {"launch", "node"})
     def on_rosparam(self, element: Element, scope: Scope) -> None:
@@ -640,9 +662,11 @@ class Resolver:
             raise element.error("<rosparam> without 'param' must hold a YAML mapping")
         for key, item in _flatten(namespace, value):
             self.param_server[key] = item
+            self.param_origin[key] = (key, element.where)
 
-    def _ros1_params(self, node: NodeDecl) -> list[tuple[str, Any]]:
-        """A ROS 1 node's parameters from the parameter server (see the module docstring)."""
+    def _ros1_params(self, node: NodeDecl, reached: set[str]) -> list[tuple[str, Any]]:
+        """A ROS 1 node's parameters from the parameter server (see the module docstring);
+        adds the keys it receives to ``reached``."""
         parts = node.namespace.strip("/").split("/") if node.namespace != "/" else []
         namespaces = ["/" + "/".join(parts[:depth]) for depth in range(len(parts) + 1)]
         private = f"{node.namespace.rstrip('/')}/{node.name}/"
@@ -653,9 +677,11 @@ class Resolver:
                 rest = key[len(prefix) :]
                 if key.startswith(prefix) and "/" not in rest:
                     params[rest] = value
+                    reached.add(key)
         for key, value in self.param_server.items():
             if key.startswith(private):
                 params[key[len(private) :].replace("/", ".")] = value
+                reached.add(key)
         return list(params.items())
 
     # -- tags: processes ----------------------------------------------------------------------

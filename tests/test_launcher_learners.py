@@ -188,3 +188,48 @@ def test_a_file_of_another_package_says_where_it_is(capsys):
     assert "union.launch is in ros_tutorials_topic: roslaunch ros_tutorials_topic union.launch" in (
         line.replace("python -m launcher", "roslaunch")
     )
+
+
+# 8. a <param> that reaches no node
+
+
+def test_a_param_given_to_no_node_is_one_warning_naming_it(capsys, tmp_path):
+    seed = ros1_file(  # seed 000's example: a file with a parameter and no node
+        tmp_path, '<arg name="update_period" default="10"/>\n'
+        '<param name="timing" value="$(arg update_period)"/>', "seed.launch"
+    )  # fmt: skip
+    status, lines, out = launch(capsys, str(seed), "update_period:=30")
+    assert status == 0 and out.strip() == ""
+    assert lines == [
+        f"warning: {seed}:3: param 'timing' is given to no node: ROS 2 has no parameter "
+        "server; put it inside a <node>"
+    ]
+
+
+def test_a_param_in_a_namespace_without_nodes_is_a_warning_the_others_reach_nodes(capsys, tmp_path):
+    path = ros1_file(
+        tmp_path,
+        '<param name="shared" value="1"/>\n'
+        '<group ns="empty"><param name="rate" value="2"/></group>\n'
+        '<group ns="ns1">' + NODE.format('<param name="~own" value="3"/>') + "</group>",
+    )
+    status, lines, out = launch(capsys, str(path))
+    assert status == 0
+    assert lines == [
+        f"warning: {path}:3: param 'rate' is given to no node: ROS 2 has no parameter "
+        "server; put it inside a <node>"
+    ]
+    assert "param:   shared = 1" in out and "param:   own = 3" in out
+
+
+def test_a_set_parameter_with_no_node_after_it_is_one_warning(capsys, tmp_path):
+    path = tmp_path / "test.launch.xml"
+    path.write_text(
+        '<launch>\n<group><set_parameter name="used" value="1"/>\n'
+        '<node pkg="ros_tutorials_topic" exec="publisher"/></group>\n'
+        '<set_parameter name="late" value="2"/>\n</launch>\n'
+    )
+    status, lines, _ = launch(capsys, str(path))
+    assert status == 0 and lines == [
+        f"warning: {path}:4: param 'late' is given to no node: no <node> follows it in its scope"
+    ]
