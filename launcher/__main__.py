@@ -40,7 +40,7 @@ exit code: 0 all ended cleanly, 1 a process failed or the launch could not start
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="roslaunch" if Path(sys.argv[0]).name == "roslaunch" else "python -m launcher",
+        prog=program(),
         description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -86,6 +86,16 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def program() -> str:
+    """The launcher's name as the user typed it: roslaunch, or python -m launcher."""
+    return "roslaunch" if Path(sys.argv[0]).name == "roslaunch" else "python -m launcher"
+
+
+def _shipped() -> dict[str, list[Path]]:
+    """Each tutorial package's launch files."""
+    return {package: packages.launch_files(package) for package in packages.package_dirs()}
+
+
 def find_launch_file(names: list[str]) -> Path:
     """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
     if len(names) == 2:
@@ -99,8 +109,12 @@ def find_launch_file(names: list[str]) -> Path:
             if path.is_file():
                 return path
         have = ", ".join(file.name for pkg in found for file in packages.launch_files(pkg))
-        have = have or "none"
-        raise LaunchError(f"{package} has no launch file {name!r}; it has: {have}")
+        message = f"{package} has no launch file {name!r}"
+        elsewhere = [pkg for pkg, files in _shipped().items() if name in (f.name for f in files)]
+        if elsewhere:  # seed 000 puts union.launch in the service package
+            runs = "; ".join(f"{program()} {pkg} {name}" for pkg in elsewhere)
+            raise LaunchError(f"{message}; {name} is in {', '.join(elsewhere)}: {runs}")
+        raise LaunchError(f"{message}; it has: {have or 'none'}")
     if len(names) != 1:
         raise LaunchError(f"expected [PKG] FILE, got: {' '.join(names) or 'nothing'}")
     path = Path(names[0])
@@ -108,14 +122,21 @@ def find_launch_file(names: list[str]) -> Path:
         if not path.is_file():
             raise LaunchError(f"no launch file {path}")
         return path
-    shipped = {package: packages.launch_files(package) for package in packages.package_dirs()}
+    shipped = _shipped()
+    package = packages.resolve_package(names[0])
+    if package and not any(file.name == names[0] for files in shipped.values() for file in files):
+        have = ", ".join(f.name for pkg in package for f in packages.launch_files(pkg)) or "none"
+        raise LaunchError(
+            f"{names[0]} is a package; name one of its launch files too "
+            f"({program()} {names[0]} FILE): {have}"
+        )
     matches = [file for files in shipped.values() for file in files if file.name == names[0]]
     if len(matches) == 1:
         return matches[0]
     if matches:
         where = ", ".join(file.parent.parent.name for file in matches)
         raise LaunchError(
-            f"{names[0]} is in several packages ({where}); say which: python -m launcher PKG FILE"
+            f"{names[0]} is in several packages ({where}); say which: {program()} PKG FILE"
         )
     have = ", ".join(f"{pkg} {file.name}" for pkg, files in shipped.items() for file in files)
     raise LaunchError(f"no launch file {names[0]!r} here or in any package; known: {have}")
@@ -125,6 +146,11 @@ def split_words(words: list[str]) -> tuple[list[str], dict[str, str]]:
     """The file words and the name:=value arguments."""
     names, args = [], {}
     for word in words:
+        name, equals, value = word.partition("=")
+        if equals and ":=" not in word and valid_name(name) and not Path(word).exists():
+            raise LaunchError(
+                f"{word!r}: launch arguments are written name:=value; did you mean {name}:={value}?"
+            )
         if ":=" not in word:
             names.append(word)
             continue
@@ -173,6 +199,8 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except KeyboardInterrupt:
         return 130
+    for warning in launch.warnings:  # at start, before the plan or the first process
+        print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
         print(format_plan(specs, launch.messages))
         return 0

@@ -25,6 +25,7 @@ class Element:
     line: int
     children: list[Element] = field(default_factory=list)
     text: str = ""
+    spelled: dict[str, str] = field(default_factory=dict)  # attribute -> as the file wrote it
 
     @property
     def where(self) -> str:
@@ -56,8 +57,10 @@ def parse_bytes(data: bytes, path: Path) -> Element:
 
     def start(tag: str, attrs: dict[str, str]) -> None:
         # Both spellings are accepted (launch-prefix, launch_prefix); keep one internally.
+        spelled = {name.replace("-", "_"): name for name in attrs}
         attrs = {name.replace("-", "_"): value for name, value in attrs.items()}
         element = Element(tag.replace("-", "_"), attrs, path, parser.CurrentLineNumber)
+        element.spelled = spelled
         (stack[-1].children if stack else roots).append(element)
         stack.append(element)
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import shlex
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
@@ -49,6 +50,8 @@ CONDITIONS = {"if", "unless"}
 PROCESS_ATTRS = {"args", "output", "respawn", "respawn_delay", "respawn_max_retries",
                  "sigterm_timeout", "sigkill_timeout", "launch_prefix", "on_exit"}  # fmt: skip
 SYNTAX = {"ros1": "ROS 1 (roslaunch)", "ros2": "ROS 2"}
+# Attributes kept with _ inside (parse.py) that both formats document with - (both accepted).
+SPELLING = {"launch_prefix": "launch-prefix"}
 
 
 @dataclass(frozen=True)
@@ -129,6 +132,7 @@ class Launch:
 
     nodes: list[NodeDecl]
     messages: list[str]
+    warnings: list[str] = field(default_factory=list)  # file:line: what reaches no node
 
 
 @dataclass
@@ -155,6 +159,8 @@ class Scope:
     params: list[tuple[str, Any]] = field(default_factory=list)
     params_files: list[str] = field(default_factory=list)  # only inside a ROS 2 <node>
     env: dict[str, str | None] = field(default_factory=dict)
+    # The file's <arg>s declared so far, name -> line: shared by its groups, new per file.
+    declared: dict[str, int] = field(default_factory=dict)
 
     def child(self, **changes: Any) -> Scope:
         copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
@@ -173,6 +179,24 @@ def join_namespace(base: str, name: str) -> str:
     """Namespace ``name`` relative to ``base`` (absolute if it starts with /)."""
     full = name if name.startswith("/") else f"{base.rstrip('/')}/{name}"
     return "/" + "/".join(part for part in full.split("/") if part)
+
+
+# A ROS name as rcl's remap rules take it: parts of letters, digits and _ (not starting with a
+# digit) separated by single /, relative, absolute (/a) or private (~/a); the rule's "from" may
+# start with rostopic:// or rosservice://. No spaces, no {node}, no wildcards, no trailing /.
+_ROS_NAME = re.compile(r"(~/|/)?[A-Za-z_][A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*")
+_REMAP_PREFIX = re.compile(r"(rostopic|rosservice)://")
+
+
+def remap_problem(name: str, side: str) -> str | None:
+    """Why rcl would refuse ``name`` as the ``side`` ("from" or "to") of a remap; else None."""
+    plain = _REMAP_PREFIX.sub("", name, count=1) if side == "from" else name
+    if _ROS_NAME.fullmatch(plain):
+        return None
+    return (
+        f"remap {side}={name!r} is not a valid ROS name (parts of letters, digits and _, "
+        "not starting with a digit, separated by one /; ~/ only at the start)"
+    )
 
 
 def valid_name(name: str) -> bool:
@@ -213,8 +237,11 @@ def detect_format(root: Element) -> str:
 def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
     for name in element.attrs:
         if name not in allowed | CONDITIONS:
-            known = ", ".join(sorted(allowed | CONDITIONS))
-            raise element.error(f"unknown attribute {name!r} on <{element.tag}>; allowed: {known}")
+            known = ", ".join(sorted(SPELLING.get(a, a) for a in allowed | CONDITIONS))
+            written = element.spelled.get(name, name)  # as the file wrote it
+            raise element.error(
+                f"unknown attribute {written!r} on <{element.tag}>; allowed: {known}"
+            )
     if "if" in element.attrs and "unless" in element.attrs:
         raise element.error("use either 'if' or 'unless', not both")
 
@@ -260,6 +287,7 @@ def describe_args(path: Path) -> list[ArgInfo]:
 
 def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     """A parameter value from its text, typed as roslaunch and ros2 launch do."""
+    name = element.attrs.get("name", "")
     try:
         if kind in ("str", "string"):
             return text
@@ -268,11 +296,12 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
         if kind == "double":
             return float(text)
         if kind in ("bool", "boolean"):
-            return to_bool(text, element, "a bool parameter")
+            return to_bool(text, element, "")
         if kind == "yaml":
             return _load_yaml(text, element)
-    except (ValueError, yaml.YAMLError) as error:
-        raise element.error(f"value {text!r} is not a valid {kind}: {error}") from None
+    except (ValueError, LaunchError):  # int('abc'), float('fast'), to_bool('yes please')
+        what = {"int": "an int", "double": "a double"}.get(kind, "a bool (true, false, 1 or 0)")
+        raise element.error(f"param {name!r}: {text!r} is not {what}") from None
     if kind is not None:
         raise element.error(f"unknown parameter type {kind!r}; use str, int, double, bool, yaml")
     for convert in (int, float):
@@ -334,7 +363,10 @@ class Resolver:
         # ROS 1: the parameter server roslaunch would fill, full name -> value, and the
         # nodes whose parameters come from it once every file is read.
         self.param_server: dict[str, Any] = {}
+        self.param_origin: dict[str, tuple[str, str]] = {}  # key -> (name as written, where)
         self.ros1_nodes: list[NodeDecl] = []
+        # ROS 2: each <set_parameter>'s entry, to tell whether a node after it received it.
+        self.set_parameters: list[tuple[tuple[str, Any], str]] = []
 
     def anon(self, name: str) -> str:
         if name not in self.anon_names:
@@ -350,6 +382,7 @@ class Resolver:
         parent: Scope | None,
         strict: bool = True,
         include: Element | None = None,
+        given_at: dict[str, Element] | None = None,
     ) -> None:
         path = path.resolve()
         if path in self.include_chain:
@@ -363,13 +396,18 @@ class Resolver:
         unknown = sorted(set(given) - declared) if strict else []
         if unknown:
             names = ", ".join(sorted(n for n in declared if n)) or "none"
+            if given_at and unknown[0] in given_at:  # an <include>'s <arg>: name its line
+                raise given_at[unknown[0]].error(
+                    f"no argument named {', '.join(unknown)} is declared in {path.name} "
+                    f"(declared: {names})"
+                )
             raise LaunchError(
                 f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
             )
         if parent is None:
             scope = Scope(self, path, fmt, {}, given)
         else:
-            scope = parent.child(file=path, fmt=fmt, args={}, given=given)
+            scope = parent.child(file=path, fmt=fmt, args={}, given=given, declared={})
         self.include_chain.append(path)
         self.resolve_scope(root, scope)
         self.include_chain.pop()
@@ -393,9 +431,23 @@ class Resolver:
                 TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
     def finish(self) -> Launch:
+        reached: set[str] = set()
         for node in self.ros1_nodes:
-            node.params = self._ros1_params(node) + node.params
-        return Launch(self.nodes, self.messages)
+            node.params = self._ros1_params(node, reached) + node.params
+        # A parameter no node receives would be dropped without a word (ROS 1 kept every one
+        # on its parameter server): one warning for each place that wrote such parameters.
+        unreached: dict[tuple[str, str], str] = {}
+        for key, (name, where) in self.param_origin.items():
+            if key not in reached:
+                unreached[(where, name)] = "ROS 2 has no parameter server; put it inside a <node>"
+        for entry, where in self.set_parameters:
+            if not any(param is entry for node in self.nodes for param in node.params):
+                unreached[(where, entry[0])] = "no <node> follows it in its scope"
+        warnings = [
+            f"{where}: param {name!r} is given to no node: {why}"
+            for (where, name), why in unreached.items()
+        ]
+        return Launch(self.nodes, self.messages, warnings)
 
     # -- attribute helpers --------------------------------------------------------------------
 
@@ -462,6 +514,12 @@ class Resolver:
     def on_arg(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
         fixed = "value" in element.attrs  # ROS 1: a constant, not an argument
+        if scope.fmt == "ros1" and name in scope.declared:
+            raise element.error(
+                f"argument {name!r} is declared twice (first at line {scope.declared[name]}); "
+                "roslaunch refuses that too"
+            )
+        scope.declared[name] = element.line
         for child in element.children:
             _check_tag(child, {"choice": {"value"}}, scope.fmt, "arg")
         if fixed and name in scope.given:
@@ -505,14 +563,17 @@ class Resolver:
             path = scope.file.parent / path
         pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
         given = dict(scope.args) if pass_all else {}
+        given_at = {}
         for child in element.children:
             _check_tag(child, {"arg": {"name", "value"}}, scope.fmt, "include")
             if self.enabled(child, scope):
-                given[self.text(child, "name", scope)] = self.text(child, "value", scope)
+                name = self.text(child, "name", scope)
+                given[name] = self.text(child, "value", scope)
+                given_at.setdefault(name, child)
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         if not path.is_file():
             raise element.error(f"included file {path} does not exist")
-        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element)
+        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element, given_at)
 
     @tag("ros2", "log", {"message"})
     def on_log(self, element: Element, scope: Scope) -> None:
@@ -524,7 +585,15 @@ class Resolver:
     @tag("ros2", "set_remap", {"from", "to"})
     @tag("ros2", "remap", {"from", "to"}, under={"node"})
     def on_remap(self, element: Element, scope: Scope) -> None:
-        scope.remaps.append((self.text(element, "from", scope), self.text(element, "to", scope)))
+        names = []
+        for side in ("from", "to"):
+            written = name = self.text(element, side, scope)
+            if scope.fmt == "ros1" and name.startswith("~") and not name.startswith("~/"):
+                name = "~/" + name[1:]  # ROS 1's private ~name is ~/name in ROS 2
+            if remap_problem(name, side):
+                raise element.error(remap_problem(written, side) or "")
+            names.append(name)
+        scope.remaps.append((names[0], names[1]))
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
     @tag("ros2", "set_env", {"name", "value"})
@@ -548,7 +617,10 @@ class Resolver:
         value = _typed_value(self.text(element, "value", scope), None, element)
         name = self.text(element, "name", scope)
         _check_params(element, None, name, value)
-        scope.params.append((name, value))
+        entry = (name, value)
+        scope.params.append(entry)
+        if element.tag == "set_parameter":
+            self.set_parameters.append((entry, element.where))
 
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
@@ -562,6 +634,7 @@ class Resolver:
         _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
         for key, item in _flatten(join_namespace(scope.namespace, name), value):
             self.param_server[key] = item
+            self.param_origin[key] = (name, element.where)
 
     @tag("ros1", "rosparam", {"command", "file", "param", "ns", "subst_value"}, {"launch", "node"})
     def on_rosparam(self, element: Element, scope: Scope) -> None:
@@ -589,9 +662,11 @@ class Resolver:
             raise element.error("<rosparam> without 'param' must hold a YAML mapping")
         for key, item in _flatten(namespace, value):
             self.param_server[key] = item
+            self.param_origin[key] = (key, element.where)
 
-    def _ros1_params(self, node: NodeDecl) -> list[tuple[str, Any]]:
-        """A ROS 1 node's parameters from the parameter server (see the module docstring)."""
+    def _ros1_params(self, node: NodeDecl, reached: set[str]) -> list[tuple[str, Any]]:
+        """A ROS 1 node's parameters from the parameter server (see the module docstring);
+        adds the keys it receives to ``reached``."""
         parts = node.namespace.strip("/").split("/") if node.namespace != "/" else []
         namespaces = ["/" + "/".join(parts[:depth]) for depth in range(len(parts) + 1)]
         private = f"{node.namespace.rstrip('/')}/{node.name}/"
@@ -602,9 +677,11 @@ class Resolver:
                 rest = key[len(prefix) :]
                 if key.startswith(prefix) and "/" not in rest:
                     params[rest] = value
+                    reached.add(key)
         for key, value in self.param_server.items():
             if key.startswith(private):
                 params[key[len(private) :].replace("/", ".")] = value
+                reached.add(key)
         return list(params.items())
 
     # -- tags: processes ----------------------------------------------------------------------
