@@ -41,6 +41,7 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
     "roscpp_tutorials": _TOPIC_AND_SERVICE,  # seed 001 (talker, listener, add_two_ints_*)
     "rospy_tutorials": _TOPIC_AND_SERVICE,
     "pub_sub": "ros_tutorials_topic",  # seed 003
+    "service": "ros_tutorials_service",  # seed 003's AddTwoInts package
     "my_package": (*_TOPIC_AND_SERVICE, "ros_tutorials_parameter"),  # seed 004
     # turtlesim's nodes: rosidl's generated module is already called `turtlesim`.
     "turtlesim": "ros_tutorials_turtlesim",  # seeds 001-004
@@ -49,6 +50,8 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
 EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
     ("pub_sub", "publisher"): "num_publisher",  # seed 003's publisher ends up sending Num
     ("pub_sub", "subscriber"): "num_subscriber",
+    ("service", "add_two_int"): "add_two_ints_server",  # seed 003's targets (CMakeLists.txt)
+    ("service", "client"): "add_two_ints_client",
 }
 # ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
 # and what does their job here.

@@ -127,7 +127,7 @@ def test_topic_list_type_info_and_node_list(publisher):
     # --spin-time seconds; -v waits (up to --timeout) for the endpoints' node names, which
     # discovery sends later. The commands only look: they run at once, as in six terminals
     # (and each must hide the others' nodes).
-    listed, typed, type_name, info, nodes, node_info = at_once(
+    listed, typed, type_name, info, nodes, node_info, found = at_once(
         ok,
         ("rostopic", "list"),
         ("rostool", "topic", "list", "-t", "--spin-time", "5"),
@@ -135,8 +135,10 @@ def test_topic_list_type_info_and_node_list(publisher):
         ("rostool", "topic", "info", "/ros_tutorial_msg", "-v", "--timeout", "30"),
         ("rosnode", "list"),
         ("rostool", "node", "info", "/topic_publisher"),
+        ("rostopic", "find", "ros_tutorials_topic/MsgTutorial"),  # the book's type name
     )
     assert "/ros_tutorial_msg" in listed.split()
+    assert "/ros_tutorial_msg" in found.split()
     assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in typed
     assert type_name.strip() == "ros_tutorials_interfaces/msg/MsgTutorial"
     assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
