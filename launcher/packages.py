@@ -96,6 +96,41 @@ def _has_main(source_file: Path) -> bool:
     return any(isinstance(node, ast.FunctionDef) and node.name == "main" for node in tree.body)
 
 
+def _declared_parameters(source_file: Path) -> set[str]:
+    """The parameter names a node module declares by a literal name (declare_parameter("x"))."""
+    try:
+        tree = ast.parse(source_file.read_text(encoding="utf-8"))
+    except (OSError, SyntaxError, UnicodeDecodeError):
+        return set()
+    return {
+        node.args[0].value
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr == "declare_parameter"
+        and node.args
+        and isinstance(node.args[0], ast.Constant)
+        and isinstance(node.args[0].value, str)
+    }
+
+
+def executables_declaring(parameter: str) -> list[tuple[str, str]]:
+    """(package, executable) of the executables whose node declares ``parameter``, read from
+    their source; one name per module, the console script's (the book's) where there is one."""
+    found: dict[str, tuple[str, str]] = {}
+    for package, directory in package_dirs().items():
+        for name, line in executables(package).items():
+            module = line[2] if line[1] == "-m" else ""
+            if not module.startswith(f"{package}."):
+                continue
+            short = module.rpartition(".")[2]
+            if module in found and name == short:
+                continue  # the console script's name wins over the module's
+            if parameter in _declared_parameters(directory / f"{short}.py"):
+                found[module] = (package, name)
+    return sorted(found.values())
+
+
 @cache
 def executables(package: str) -> dict[str, list[str]]:
     """Executable name -> command line, for one tutorial package ({} if unknown)."""
