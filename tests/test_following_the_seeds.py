@@ -37,6 +37,28 @@ def test_ros1_arguments_become_one_ros_args_block():
     assert translate_arguments(["-5", "3", "--timeout", "2"]) == ["-5", "3", "--timeout", "2"]
     with pytest.raises(ToolError, match="ROS 2 has no master"):
         translate_arguments(["__master:=http://localhost:11311"])
+    # ROS 1 took a relative namespace as global; its private ~name is ROS 2's ~/name.
+    assert translate_arguments(["__ns:=r1", "~x:=y"]) == [
+        "--ros-args", "-r", "__ns:=/r1", "-r", "~/x:=y",
+    ]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "arg,message",
+    [
+        ("__name:=pub-1", "__name:=pub-1: 'pub-1' is not a valid node name (letters, digits"),
+        ("__name:=", "__name:=: an empty name is not a valid node name"),
+        ("__name:=1st", "'1st' is not a valid node name"),
+        ("__ns:=r-1", "'/r-1' is not a valid namespace"),
+        ("ros_tutorial_msg:=bad-name", "'bad-name' is not a valid topic or service name"),
+        ("_bad-param:=1", "'bad-param' is not a valid parameter name"),
+    ],
+)
+def test_rosrun_refuses_a_bad_ros1_name_in_one_line_before_the_node_starts(arg, message):
+    result = finished("rosrun", "ros_tutorials_topic", "topic_publisher", arg)
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and message in result.stderr
+    assert "lexeme" not in result.stderr and "Traceback" not in result.stderr
 
 
 def test_the_seeds_package_names_find_this_projects_executables():
