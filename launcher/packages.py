@@ -41,6 +41,7 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
     "roscpp_tutorials": _TOPIC_AND_SERVICE,  # seed 001 (talker, listener, add_two_ints_*)
     "rospy_tutorials": _TOPIC_AND_SERVICE,
     "pub_sub": "ros_tutorials_topic",  # seed 003
+    "service": "ros_tutorials_service",  # seed 003's AddTwoInts package
     "my_package": (*_TOPIC_AND_SERVICE, "ros_tutorials_parameter"),  # seed 004
     # turtlesim's nodes: rosidl's generated module is already called `turtlesim`.
     "turtlesim": "ros_tutorials_turtlesim",  # seeds 001-004
@@ -49,6 +50,8 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
 EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
     ("pub_sub", "publisher"): "num_publisher",  # seed 003's publisher ends up sending Num
     ("pub_sub", "subscriber"): "num_subscriber",
+    ("service", "add_two_int"): "add_two_ints_server",  # seed 003's targets (CMakeLists.txt)
+    ("service", "client"): "add_two_ints_client",
 }
 # ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
 # and what does their job here.
@@ -91,6 +94,41 @@ def _has_main(source_file: Path) -> bool:
     except (OSError, SyntaxError, UnicodeDecodeError):
         return False
     return any(isinstance(node, ast.FunctionDef) and node.name == "main" for node in tree.body)
+
+
+def _declared_parameters(source_file: Path) -> set[str]:
+    """The parameter names a node module declares by a literal name (declare_parameter("x"))."""
+    try:
+        tree = ast.parse(source_file.read_text(encoding="utf-8"))
+    except (OSError, SyntaxError, UnicodeDecodeError):
+        return set()
+    return {
+        node.args[0].value
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr == "declare_parameter"
+        and node.args
+        and isinstance(node.args[0], ast.Constant)
+        and isinstance(node.args[0].value, str)
+    }
+
+
+def executables_declaring(parameter: str) -> list[tuple[str, str]]:
+    """(package, executable) of the executables whose node declares ``parameter``, read from
+    their source; one name per module, the console script's (the book's) where there is one."""
+    found: dict[str, tuple[str, str]] = {}
+    for package, directory in package_dirs().items():
+        for name, line in executables(package).items():
+            module = line[2] if line[1] == "-m" else ""
+            if not module.startswith(f"{package}."):
+                continue
+            short = module.rpartition(".")[2]
+            if module in found and name == short:
+                continue  # the console script's name wins over the module's
+            if parameter in _declared_parameters(directory / f"{short}.py"):
+                found[module] = (package, name)
+    return sorted(found.values())
 
 
 @cache

@@ -12,7 +12,15 @@ import sys
 
 from ros_tutorials_common.bounded import InputError, read_line
 from rostool.errors import ToolError
-from rostool.typenames import KIND_NAMES, KINDS, definition_path, interface_index, parse_type_name
+from rostool.typenames import (
+    KIND_NAMES,
+    KINDS,
+    definition_path,
+    interface_index,
+    interface_package,
+    list_hint,
+    parse_type_name,
+)
 
 PRIMITIVE_TYPES = {
     "bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16",
@@ -79,8 +87,10 @@ def show(type_name: str, ros1_style: bool = False, kinds: tuple[str, ...] = KIND
 
 def list_types(kinds: tuple[str, ...] = KINDS, package: str | None = None) -> list[str]:
     index = interface_index()
-    if package is not None and package not in index:
-        raise ToolError(f"unknown interface package '{package}'")
+    if package is not None:
+        package = interface_package(package, index)
+        if package not in index:
+            raise ToolError(f"unknown interface package '{package}'; {list_hint(kinds)}")
     packages = [package] if package else sorted(index)
     return [
         f"{pkg}/{name}" for pkg in packages for name in index[pkg] if name.split("/")[0] in kinds

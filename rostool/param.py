@@ -229,7 +229,8 @@ def nodes_with_parameters(graph: Graph) -> list[str]:
     """The nodes in the graph that offer parameter services (after discovery settles)."""
     graph.settle()
     services = graph.service_types()
-    return [name for name in graph.node_names() if f"{name}/list_parameters" in services]
+    names = dict.fromkeys(graph.node_names())  # two nodes of one name: list it once
+    return [name for name in names if f"{name}/list_parameters" in services]
 
 
 def get_command(graph: Graph, node: str, name: str) -> None:

@@ -8,7 +8,8 @@ habits need translating:
 - One global parameter server: ROS 2 has none, every parameter belongs to a node. A ROS 1
   name is looked up: ``/service_server/calculation_method`` names the node; a bare
   ``/calculation_method`` is found on whichever node declares it (if several do, the
-  command says so and asks for the node).
+  command says so and asks for the node). A node's name, or any namespace of nodes (``/``),
+  stands for the parameters under it, as in ROS 1's tree: ``rosparam get /service_server``.
 
 Commands with no ROS 2 meaning (``rosnode kill``, ``rosservice uri``, ...) say so in one
 line and name the ROS 2 way.
@@ -24,6 +25,7 @@ from typing import Any
 
 import yaml
 
+from launcher import packages
 from ros_tutorials_common.cli import positive_int, positive_rate
 from rostool import interface, node, param, service, topic
 from rostool.cli import common_options, run_parsed
@@ -67,16 +69,30 @@ def values_from_args(args: Sequence[str]) -> Any:
     return values
 
 
-# rosparam: ROS 1 names onto (node, parameter).
+# rosparam: ROS 1 names onto (node, parameter), or onto the nodes of a namespace.
+
+# How many running nodes an error names.
+NODES_NAMED = 4
 
 
-def resolve_parameter(graph: Graph, name: str) -> tuple[str, str]:
-    """'/calculation_method' -> ('/service_server', 'calculation_method'), waiting for it."""
+def _under(node_name: str, namespace: str) -> bool:
+    """Whether a node is in a namespace: '/' holds every node, a node's name holds itself."""
+    return namespace == "/" or node_name == namespace or node_name.startswith(namespace + "/")
+
+
+def resolve_parameter(
+    graph: Graph, name: str, namespaces: bool = False
+) -> list[tuple[str, str | None]]:
+    """A ROS 1 name, waiting for it: '/calculation_method' -> [('/service_server',
+    'calculation_method')]; with ``namespaces``, a node's name or a namespace of nodes ('/')
+    -> [(node, None), ...], as ROS 1's parameter tree held a node's parameters under it."""
     name = "/" + name.strip("/")
     known: dict[str, list[str]] = {}
 
-    def find() -> list[tuple[str, str]]:
+    def find() -> list[tuple[str, str | None]]:
         nodes = param.nodes_with_parameters(graph)
+        if namespaces and (under := [(n, None) for n in nodes if _under(n, name)]):
+            return under
         for node_name in sorted(nodes, key=len, reverse=True):
             if name.startswith(node_name + "/"):  # the name says which node
                 return [(node_name, name[len(node_name) + 1 :])]
@@ -85,14 +101,36 @@ def resolve_parameter(graph: Graph, name: str) -> tuple[str, str]:
                 known[node_name] = param.names(graph, node_name)
         return [(n, name[1:]) for n in nodes if name[1:] in known[n]]
 
-    matches = graph.wait_for(find, f"no node declares a parameter '{name[1:]}'")
-    if len(matches) > 1:
+    what = (
+        "no node with parameters is running"
+        if name == "/"
+        else (f"no node declares a parameter '{name[1:]}'")
+    )
+    try:
+        matches = graph.wait_for(find, what)
+    except ToolError as error:
+        raise ToolError(f"{error}{_not_found_hint(graph, name[1:])}") from None
+    if len(matches) > 1 and matches[0][1] is not None:
         holders = ", ".join(node_name for node_name, _ in matches)
         raise ToolError(
             f"parameter '{name[1:]}' is declared by several nodes ({holders}); "
             f"name one, e.g. {matches[0][0]}/{name[1:]}"
         )
-    return matches[0]
+    return matches
+
+
+def _not_found_hint(graph: Graph, name: str) -> str:
+    """Which nodes are running, and which executables of this project declare the name."""
+    running = graph.node_names()
+    shown = ", ".join(running[:NODES_NAMED]) + (
+        f" and {len(running) - NODES_NAMED} more" if len(running) > NODES_NAMED else ""
+    )
+    hint = f"; nodes running: {shown}" if running else "; no node is running"
+    declaring = packages.executables_declaring(name) if name and "/" not in name else []
+    if declaring:
+        runs = " or ".join(f"`rosrun {pkg} {exe}`" for pkg, exe in declaring)
+        hint += f"; {runs} declares it"
+    return hint
 
 
 def _value_text(value: Any) -> str:
@@ -101,22 +139,63 @@ def _value_text(value: Any) -> str:
     return str(value).lower() if isinstance(value, bool) else str(value)
 
 
-def rosparam_list(graph: Graph) -> None:
+def _namespace_arg(namespace: str | None) -> str:
+    return "/" + (namespace or "").strip("/")
+
+
+def rosparam_list(graph: Graph, namespace: str | None = None) -> None:
+    """`rosparam list [NAMESPACE]`: /node/parameter names, those under NAMESPACE if given."""
+    namespace = _namespace_arg(namespace)
     for node_name in param.nodes_with_parameters(graph):
+        if not (_under(node_name, namespace) or namespace.startswith(node_name + "/")):
+            continue  # ask only the nodes that can hold a name in the namespace
         for name in param.names(graph, node_name):
-            print(f"{node_name}/{name}")
+            if _under(f"{node_name}/{name}", namespace):
+                print(f"{node_name}/{name}")
 
 
 def rosparam_get(graph: Graph, name: str) -> None:
-    node_name, param_name = resolve_parameter(graph, name)
+    matches = resolve_parameter(graph, name, namespaces=True)
+    if matches[0][1] is None:  # a namespace: its nodes' parameters, as a YAML dict
+        tree = _parameter_tree(graph, [node_name for node_name, _ in matches], name)
+        graph.finish()
+        print(yaml.safe_dump(tree, default_flow_style=False).rstrip())
+        return
+    node_name, param_name = matches[0]
     _, value = param.get_values(graph, node_name, [param_name])[param_name]
     graph.finish()
     print(_value_text(value))
 
 
+def _parameter_tree(graph: Graph, nodes: list[str], namespace: str) -> dict[str, Any]:
+    """{parameter: value} of one node named by its namespace; of several, nested by the
+    parts of their names below the namespace ({service_server: {calculation_method: 1}})."""
+    namespace = _namespace_arg(namespace)
+    tree: dict[str, Any] = {}
+    for node_name in nodes:
+        values = param.get_values(graph, node_name, param.names(graph, node_name))
+        branch = tree
+        for part in node_name[len(namespace) :].strip("/").split("/"):
+            if part:
+                branch = branch.setdefault(part, {})
+        branch.update({key: value for key, (_, value) in values.items()})
+    return tree
+
+
 def rosparam_set(graph: Graph, name: str, value: str) -> None:
-    node_name, param_name = resolve_parameter(graph, name)
-    param.set_values(graph, node_name, {param_name: parse_yaml(value)})
+    matches = resolve_parameter(graph, name, namespaces=True)
+    node_name, param_name = matches[0]
+    parsed = parse_yaml(value)
+    if param_name is not None:
+        param.set_values(graph, node_name, {param_name: parsed})
+    elif len(matches) == 1 and node_name == "/" + name.strip("/") and isinstance(parsed, dict):
+        param.set_values(graph, node_name, parsed)  # ROS 1's `rosparam set /node '{a: 1}'`
+    else:
+        raise ToolError(
+            f"{'/' + name.strip('/')} is a node's namespace, not a parameter; name one, e.g. "
+            f"{node_name}/PARAM (`rosparam list {node_name}` lists them), or set several with "
+            f"`rosparam set {node_name} '{{PARAM: VALUE}}'`"
+        )
 
 
 def rosparam_dump(graph: Graph, path: str | None) -> None:
@@ -281,10 +360,11 @@ def rosparam_parser() -> argparse.ArgumentParser:
     name_help = "/node/parameter, or /parameter if one node declares it"
 
     p = sub.add_parser("list", parents=[common], help="list /node/parameter names")
-    p.set_defaults(run=lambda graph, a: rosparam_list(graph))
+    p.add_argument("namespace", nargs="?", help="only the names under it (a node: its own)")
+    p.set_defaults(run=lambda graph, a: rosparam_list(graph, a.namespace))
 
     p = sub.add_parser("get", parents=[common], help="print a value")
-    p.add_argument("name", help=name_help)
+    p.add_argument("name", help=name_help + "; a node or namespace: all its parameters")
     p.set_defaults(run=lambda graph, a: rosparam_get(graph, a.name))
 
     p = sub.add_parser("set", parents=[common], help="set a value")

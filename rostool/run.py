@@ -12,18 +12,20 @@ exit status are the executable's own.
 The ROS 1 argument forms the seeds use are translated to ROS 2's:
 
     __name:=NAME    ->  --ros-args -r __node:=NAME
-    __ns:=/NS       ->  --ros-args -r __ns:=/NS
+    __ns:=/NS       ->  --ros-args -r __ns:=/NS   (a relative NS gets its leading '/')
     from:=to        ->  --ros-args -r from:=to
     _param:=value   ->  --ros-args -p param:=value   (a private parameter; '/' becomes '.')
 
 Arguments after `--ros-args` (up to `--`) are ROS 2 arguments already and pass unchanged, as
 do the program's own arguments (`rosrun ros_tutorials_service service_client 2 3`).
+A name that ROS cannot take (`__name:=pub-1`) is refused in one line, before the node starts.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from collections.abc import Sequence
 
@@ -42,22 +44,51 @@ NO_ROS2_MEANING = {
 }
 
 
+# A part of a ROS name (node, namespace, topic, parameter), as ROS 1 and ROS 2 both allow it.
+_TOKEN = r"[A-Za-z_][A-Za-z0-9_]*"
+_RULE = "letters, digits and underscores, not starting with a digit"
+
+
+def _check(arg: str, value: str, what: str, pattern: str, parts: str = "") -> str:
+    """value if it matches; else ToolError naming the argument, the bad name and the rule
+    (so that rcl never prints its own "Couldn't parse remap rule ... lexeme")."""
+    if not re.fullmatch(pattern, value):
+        shown = f"'{value}'" if value else "an empty name"
+        raise ToolError(f"{arg}: {shown} is not a valid {what} ({parts}{_RULE})")
+    return value
+
+
 def ros1_argument(arg: str) -> list[str] | None:
-    """The ROS 2 rule for one ROS 1 `name:=value` argument; None if it is not one."""
+    """The ROS 2 rule for one ROS 1 `name:=value` argument; None if it is not one.
+
+    The names are checked here: a bad one is one line (ToolError) before the node starts.
+    """
     name, colon_equals, value = arg.partition(":=")
     if not colon_equals or not name or "=" in name or name.startswith("-"):
         return None  # not a ROS 1 argument: the program's own
     if name == "__name":
-        return ["-r", f"__node:={value}"]
+        return ["-r", f"__node:={_check(arg, value, 'node name', _TOKEN)}"]
     if name == "__ns":
-        return ["-r", f"__ns:={value}"]
+        # ROS 1 took a relative namespace (`__ns:=r1`) as global; ROS 2 wants the '/'.
+        namespace = "/" + value.strip("/")
+        parts = "names separated by '/', each of "
+        _check(arg, namespace, "namespace", f"/|(/{_TOKEN})+", parts)
+        return ["-r", f"__ns:={namespace}"]
     if name in NO_ROS2_MEANING:
         raise ToolError(f"{arg}: {NO_ROS2_MEANING[name]}")
     if name.startswith("__"):
         raise ToolError(f"{arg}: unknown special argument (ROS 1 knew __name, __ns, __log, ...)")
     if name.startswith("_"):
-        return ["-p", f"{name[1:].replace('/', '.')}:={value}"]
-    return ["-r", f"{name}:={value}"]
+        param = name[1:].replace("/", ".")
+        parts = "parts separated by '.', each of "
+        _check(arg, param, "parameter name", rf"{_TOKEN}(\.{_TOKEN})*", parts)
+        return ["-p", f"{param}:={value}"]
+    # ROS 1's private `~name` is ROS 2's `~/name`.
+    names = [re.sub(r"^~(?=[^/])", "~/", side) for side in (name, value)]
+    topic = rf"~|(~/|/)?{_TOKEN}(/{_TOKEN})*"
+    for side in names:
+        _check(arg, side, "topic or service name", topic, "parts separated by '/', each of ")
+    return ["-r", f"{names[0]}:={names[1]}"]
 
 
 def translate_arguments(args: Sequence[str]) -> list[str]:

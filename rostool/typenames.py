@@ -12,11 +12,11 @@ import importlib
 from pathlib import Path
 
 from launcher import ament
-from launcher.packages import PACKAGE_ALIASES
+from launcher.packages import resolve_package
 from rostool.errors import ToolError
 
-# The seeds define their messages in their own package (pub_sub/Num, my_package/UserRecord);
-# here they all live in one interface package.
+# The seeds define their messages in their own package (pub_sub/Num, my_package/UserRecord,
+# ros_tutorials_topic/MsgTutorial); here they all live in one interface package.
 SEED_INTERFACES = "ros_tutorials_interfaces"
 
 KINDS = ("msg", "srv", "action")
@@ -33,6 +33,20 @@ def interface_index() -> dict[str, list[str]]:
             if extension in KINDS and stem not in names:
                 names.append(stem)
     return index
+
+
+def interface_package(package: str, index: dict[str, list[str]]) -> str:
+    """The interface package a package name stands for: itself if it has interfaces, else
+    for a package of this project or a seed's name for one (launcher.packages'
+    resolve_package: ros_tutorials_topic, pub_sub, service, ...) the one interface package."""
+    if package not in index and resolve_package(package):
+        return SEED_INTERFACES
+    return package
+
+
+def list_hint(kinds: tuple[str, ...]) -> str:
+    tool = {("msg",): "rosmsg list", ("srv",): "rossrv list"}.get(kinds, "rostool interface list")
+    return f"`{tool}` shows every {'/'.join(KIND_NAMES[kind] for kind in kinds)} type"
 
 
 def parse_type_name(name: str, kinds: tuple[str, ...] = KINDS) -> tuple[str, str, str]:
@@ -52,24 +66,42 @@ def parse_type_name(name: str, kinds: tuple[str, ...] = KINDS) -> tuple[str, str
         expected = " or ".join(f"'pkg/{kind}/Name'" for kind in kinds)
         raise ToolError(f"invalid type name '{name}': expected {expected}")
     index = interface_index()
-    if package in PACKAGE_ALIASES and package not in index:
-        package = SEED_INTERFACES
-    packages = [package] if package else sorted(index)
-    matches = [
+    named = package
+    if package:
+        package = interface_package(package, index)
+    matches = _matches(index, [package] if package else sorted(index), kinds, base)
+    what = "/".join(KIND_NAMES[kind] for kind in kinds)
+    if not matches:
+        elsewhere = _matches(index, sorted(index), kinds, base) if package else []
+        if elsewhere:  # the right name in another package: say where it is
+            found = " or ".join(f"{pkg}/{kind}/{base}" for pkg, kind, base in elsewhere)
+            raise ToolError(f"unknown {what} type '{name}'; did you mean {found}?")
+        if package and package not in index:
+            raise ToolError(
+                f"unknown {what} type '{name}': no interface package '{package}'; "
+                + list_hint(kinds)
+            )
+        if package != named:
+            raise ToolError(
+                f"unknown {what} type '{name}': {named}'s types are in {package}, which has "
+                f"no {what} '{base}'; " + list_hint(kinds)
+            )
+        raise ToolError(f"unknown {what} type '{name}'; " + list_hint(kinds))
+    if len(matches) > 1 and package is None:
+        found = ", ".join("/".join(match) for match in matches)
+        raise ToolError(f"type name '{name}' is ambiguous: {found}; name the package")
+    return matches[0]
+
+
+def _matches(
+    index: dict[str, list[str]], packages: list[str], kinds: tuple[str, ...], base: str
+) -> list[tuple[str, str, str]]:
+    return [
         (pkg, kind, base)
         for pkg in packages
         for kind in kinds
         if f"{kind}/{base}" in index.get(pkg, [])
     ]
-    what = "/".join(KIND_NAMES[kind] for kind in kinds)
-    if not matches:
-        if package and package not in index:
-            raise ToolError(f"unknown {what} type '{name}': no interface package '{package}'")
-        raise ToolError(f"unknown {what} type '{name}'")
-    if len(matches) > 1 and package is None:
-        found = ", ".join("/".join(match) for match in matches)
-        raise ToolError(f"type name '{name}' is ambiguous: {found}; name the package")
-    return matches[0]
 
 
 def load_type(name: str, kinds: tuple[str, ...] = KINDS) -> type:

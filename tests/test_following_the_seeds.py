@@ -37,6 +37,28 @@ def test_ros1_arguments_become_one_ros_args_block():
     assert translate_arguments(["-5", "3", "--timeout", "2"]) == ["-5", "3", "--timeout", "2"]
     with pytest.raises(ToolError, match="ROS 2 has no master"):
         translate_arguments(["__master:=http://localhost:11311"])
+    # ROS 1 took a relative namespace as global; its private ~name is ROS 2's ~/name.
+    assert translate_arguments(["__ns:=r1", "~x:=y"]) == [
+        "--ros-args", "-r", "__ns:=/r1", "-r", "~/x:=y",
+    ]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "arg,message",
+    [
+        ("__name:=pub-1", "__name:=pub-1: 'pub-1' is not a valid node name (letters, digits"),
+        ("__name:=", "__name:=: an empty name is not a valid node name"),
+        ("__name:=1st", "'1st' is not a valid node name"),
+        ("__ns:=r-1", "'/r-1' is not a valid namespace"),
+        ("ros_tutorial_msg:=bad-name", "'bad-name' is not a valid topic or service name"),
+        ("_bad-param:=1", "'bad-param' is not a valid parameter name"),
+    ],
+)
+def test_rosrun_refuses_a_bad_ros1_name_in_one_line_before_the_node_starts(arg, message):
+    result = finished("rosrun", "ros_tutorials_topic", "topic_publisher", arg)
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and message in result.stderr
+    assert "lexeme" not in result.stderr and "Traceback" not in result.stderr
 
 
 def test_the_seeds_package_names_find_this_projects_executables():
@@ -54,6 +76,10 @@ def test_the_seeds_package_names_find_this_projects_executables():
     # Seed 003's pub_sub publisher ends up sending Num: its name here is num_publisher.
     assert module("pub_sub", "publisher") == "ros_tutorials_topic.num_publisher"
     assert module("pub_sub", "subscriber") == "ros_tutorials_topic.num_subscriber"
+    # Seed 003's AddTwoInts package is called `service` (targets add_two_int and client).
+    assert module("service", "add_two_ints_server") == "ros_tutorials_service.add_two_ints_server"
+    assert module("service", "add_two_int") == "ros_tutorials_service.add_two_ints_server"
+    assert module("service", "client") == "ros_tutorials_service.add_two_ints_client"
     assert module("my_package", "talker.py") == "ros_tutorials_topic.talker"
     assert module("my_package", "dynamics_talker.py") == "ros_tutorials_parameter.talker"
     assert module("ros_tutorials_topic", "topic_publisher") == "ros_tutorials_topic.publisher"
@@ -195,6 +221,35 @@ def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
     assert finished("rosmsg", "show", "beginner_tutorials/AandB").stdout == "float32 a\nfloat32 b\n"
     result = finished("rossrv", "show", "my_package/AddTwoInts")  # seed 004
     assert result.stdout == "int64 a\nint64 b\n---\nint64 sum\n"
+    # Seed 003's service package, and seed 000's lesson packages (their types live in
+    # ros_tutorials_interfaces here).
+    assert finished("rossrv", "show", "service/AddTwoInts").stdout == result.stdout
+    assert "int32 data" in finished("rosmsg", "show", "ros_tutorials_topic/MsgTutorial").stdout
+    srv = finished("rossrv", "show", "ros_tutorials_service/SrvTutorial").stdout
+    assert srv == "int64 a\nint64 b\n---\nint64 result\n"
+    assert "MsgTutorial" in finished("rosmsg", "package", "ros_tutorials_topic").stdout
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (
+            ("rosmsg", "show", "ros_tutorials_topic/Nope"),
+            "ros_tutorials_topic's types are in ros_tutorials_interfaces, which has no message "
+            "'Nope'; `rosmsg list` shows every message type",
+        ),
+        (
+            ("rossrv", "show", "nope_pkg/AddTwoInts"),
+            "did you mean ros_tutorials_interfaces/srv/AddTwoInts?",
+        ),
+        (("rosmsg", "show", "nope_pkg/Nope"), "no interface package 'nope_pkg'; `rosmsg list`"),
+        (("rossrv", "show", "Nope"), "unknown service type 'Nope'; `rossrv list`"),
+    ],
+)
+def test_an_unknown_type_name_points_to_the_list_or_the_right_package(args, message):
+    result = finished(*args)
+    assert result.returncode == 1 and result.stderr.count("\n") == 1
+    assert message in result.stderr
 
 
 def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():

@@ -16,6 +16,7 @@ import time
 from pathlib import Path
 
 import pytest
+import yaml
 from helpers import BIN, TIMEOUT, at_once, fails, ok, ready, spin_until
 from helpers import run as tool
 from rclpy.node import Node
@@ -127,7 +128,7 @@ def test_topic_list_type_info_and_node_list(publisher):
     # --spin-time seconds; -v waits (up to --timeout) for the endpoints' node names, which
     # discovery sends later. The commands only look: they run at once, as in six terminals
     # (and each must hide the others' nodes).
-    listed, typed, type_name, info, nodes, node_info = at_once(
+    listed, typed, type_name, info, nodes, node_info, found = at_once(
         ok,
         ("rostopic", "list"),
         ("rostool", "topic", "list", "-t", "--spin-time", "5"),
@@ -135,8 +136,10 @@ def test_topic_list_type_info_and_node_list(publisher):
         ("rostool", "topic", "info", "/ros_tutorial_msg", "-v", "--timeout", "30"),
         ("rosnode", "list"),
         ("rostool", "node", "info", "/topic_publisher"),
+        ("rostopic", "find", "ros_tutorials_topic/MsgTutorial"),  # the book's type name
     )
     assert "/ros_tutorial_msg" in listed.split()
+    assert "/ros_tutorial_msg" in found.split()
     assert "/ros_tutorial_msg [ros_tutorials_interfaces/msg/MsgTutorial]" in typed
     assert type_name.strip() == "ros_tutorials_interfaces/msg/MsgTutorial"
     assert "Publisher count: 1" in info and "Node: /topic_publisher" in info
@@ -326,6 +329,7 @@ class TestAgainstOneParameterServer:
                 ("rosservice", "call", "/ros_tutorial_srv", "99999999999999999999", "1"),
                 "out of range for int64",
             ),
+            (("rosparam", "set", "/service_server", "2"), "/service_server is a node's namespace"),
             (("rosparam", "set", "/calculation_method", "9"), "out of range"),
             (("rosparam", "set", "/calculation_method", "two"), "Wrong parameter type"),
             (("rostool", "param", "get", "/service_server", "nope"), "has no parameter 'nope'"),
@@ -348,6 +352,29 @@ class TestAgainstOneParameterServer:
     )
     def test_errors_are_one_clear_line(self, unchanged_parameter_lesson, args, message):
         assert message in fails(*args)
+
+    def test_rosparam_namespaces_as_in_ros1(self, unchanged_parameter_lesson):
+        # ROS 1's `rosparam get /node` and `rosparam get /`: the parameters under the name.
+        node, everything, listed, nothing = at_once(
+            ok,
+            ("rosparam", "get", "/service_server"),
+            ("rosparam", "get", "/"),
+            ("rosparam", "list", "/service_server"),
+            ("rosparam", "list", "/nope"),
+        )
+        assert yaml.safe_load(node)["calculation_method"] == 1
+        assert yaml.safe_load(everything)["service_server"]["calculation_method"] == 1
+        assert "/service_server/calculation_method" in listed.split()
+        assert all(name.startswith("/service_server/") for name in listed.split())
+        assert nothing == ""
+
+
+def test_a_parameter_no_node_declares_names_the_running_nodes(service_lesson):
+    # Seed 000's `rosparam set /calculation_method 2` with the service lesson's server up.
+    line = fails("rosparam", "set", "/calculation_method", "2", "--timeout", "1")
+    assert "no node declares a parameter 'calculation_method'" in line
+    assert "nodes running: " in line and "/service_server" in line
+    assert "`rosrun ros_tutorials_parameter service_server_with_parameter` declares it" in line
 
 
 def test_a_parameter_on_several_nodes_asks_for_the_node(parameter_lesson, node_process):
