@@ -8,8 +8,11 @@ console script, as a learner types it.
 
 from __future__ import annotations
 
+import os
+import subprocess
+
 import pytest
-from helpers import fails, ok
+from helpers import BIN, fails, ok
 
 AANDB = "ros_tutorials_interfaces/AandB"
 
@@ -28,3 +31,34 @@ def test_a_float_written_without_a_dot_is_sent(node_process):
     ok("rostopic", "pub", "-1", "/chatter", AANDB, "1e-3", "2", "--timeout", "30")
     listener.wait_for_text("I heard: msg:a 0.001000, msg:b 2.000000")
     assert "a is a number" in fails("rostopic", "pub", "-1", "/t", AANDB, "x", "2")
+
+
+# A closed pipe (`rospack list | head`): every tool that prints leaves quietly.
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("rospack", "list"),
+        ("rospack", "find", "std_msgs"),
+        ("rosrun", "-h"),
+        ("roscore",),
+        ("rosmsg", "list"),
+        ("rostool", "interface", "list"),
+    ],
+)
+def test_a_closed_pipe_ends_a_tool_quietly(args):
+    reader, writer = os.pipe()
+    os.close(reader)  # the reader has gone before the tool prints: `| head` at its worst
+    try:
+        result = subprocess.run(
+            [str(BIN / args[0]), *args[1:]],
+            stdout=writer,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+        )
+    finally:
+        os.close(writer)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
