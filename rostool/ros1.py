@@ -256,6 +256,8 @@ def rosservice_parser() -> argparse.ArgumentParser:
 
 def _call(graph: Graph, args: argparse.Namespace) -> None:
     values = values_from_args(args.values)
+    if values is None:  # ROS 1 refused a call without its values: no silent default request
+        values = []
     service.call(graph, args.service, None, values, ros1_output=True)
 
 

@@ -62,3 +62,21 @@ def test_a_closed_pipe_ends_a_tool_quietly(args):
         os.close(writer)
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
+
+
+# Services: ROS 1's rosservice call wants the request's values.
+
+
+def test_rosservice_call_without_values_says_what_it_takes(node_process):
+    node_process("-m", "ros_tutorials_service.server").wait_for_text("ready srv server!")
+    line = fails("rosservice", "call", "/ros_tutorial_srv", "--timeout", "30")
+    assert "takes 2 value(s) (a b), got 0" in line
+    # ros2's spelling keeps its default: an empty request (a = b = 0).
+    out = ok(
+        "rostool",
+        "service",
+        "call",
+        "/ros_tutorial_srv",
+        "ros_tutorials_interfaces/srv/SrvTutorial",
+    )
+    assert "result=0" in out
