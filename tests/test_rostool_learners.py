@@ -12,25 +12,46 @@ import os
 import subprocess
 
 import pytest
-from helpers import BIN, fails, ok
+from helpers import BIN, fails, ok, spin_until
+from helpers import run as tool
+from rclpy.node import Node
 
 AANDB = "ros_tutorials_interfaces/AandB"
 
 
-# Values: a float field takes what Python's float() reads (YAML 1.1 reads 1e40 as text).
+def _in_graph(executor, condition, what: str) -> None:
+    """Wait until the graph, as a node of the test sees it, satisfies condition(node)."""
+    probe = Node("rostool_test_probe", context=executor.context)
+    executor.add_node(probe)
+    spin_until(executor, lambda: condition(probe), what=what)
 
 
-@pytest.mark.parametrize("values", [("{a: 1e40, b: 2}",), ("1e40", "2")])
-def test_a_float_written_without_a_dot_is_range_checked(values):
-    line = fails("rostopic", "pub", "-1", "/t", AANDB, *values, "--timeout", "1")
-    assert "a = 1e+40 is out of range for float32" in line
+# Two types on one topic: the seed's AandB talker beside the lesson's String listener.
 
 
-def test_a_float_written_without_a_dot_is_sent(node_process):
-    listener = node_process("-m", "ros_tutorials_topic.aandb_listener")
-    ok("rostopic", "pub", "-1", "/chatter", AANDB, "1e-3", "2", "--timeout", "30")
-    listener.wait_for_text("I heard: msg:a 0.001000, msg:b 2.000000")
-    assert "a is a number" in fails("rostopic", "pub", "-1", "/t", AANDB, "x", "2")
+def test_two_types_on_one_topic_are_all_shown(executor, node_process):
+    node_process("-m", "ros_tutorials_topic.aandb_talker")
+    node_process("-m", "ros_tutorials_topic.listener")
+    _in_graph(
+        executor,
+        lambda node: len(dict(node.get_topic_names_and_types()).get("/chatter", [])) == 2,
+        "both types on /chatter",
+    )
+    info = ok("rostopic", "info", "/chatter", "--timeout", "30")
+    lines = info.splitlines()
+    assert "Type: ros_tutorials_interfaces/msg/AandB" in lines
+    assert "Type: std_msgs/msg/String" in lines
+    assert "different types do not talk to each other" in info
+    assert "  Node: /talker" in lines and "  Node: /listener" in lines
+    assert "Publisher count: 1" in lines and "Subscription count: 1" in lines
+    assert "Type: std_msgs/msg/String" in ok("rostool", "topic", "info", "/chatter").splitlines()
+    # Publishing the talker's type reaches no one: the only subscriber wants a String.
+    result = tool("rostopic", "pub", "-1", "/chatter", AANDB, "1", "2", "--timeout", "3")
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.strip() == (
+        "warning: /chatter carries std_msgs/msg/String, not ros_tutorials_interfaces/msg/AandB: "
+        "the message will not reach its subscribers; publishing anyway"
+    )
 
 
 # A closed pipe (`rospack list | head`): every tool that prints leaves quietly.
