@@ -26,6 +26,10 @@ def _in_graph(executor, condition, what: str) -> None:
     spin_until(executor, lambda: condition(probe), what=what)
 
 
+def _talker_nodes(node: Node) -> int:
+    return [name for name, _ns in node.get_node_names_and_namespaces()].count("talker")
+
+
 # Two types on one topic: the seed's AandB talker beside the lesson's String listener.
 
 
@@ -52,6 +56,21 @@ def test_two_types_on_one_topic_are_all_shown(executor, node_process):
         "warning: /chatter carries std_msgs/msg/String, not ros_tutorials_interfaces/msg/AandB: "
         "the message will not reach its subscribers; publishing anyway"
     )
+
+
+# Two nodes of one name: the tools say so, as ros2's do.
+
+
+def test_two_nodes_of_one_name_are_pointed_out(executor, node_process):
+    node_process("-m", "ros_tutorials_topic.talker")
+    node_process("-m", "ros_tutorials_topic.talker")
+    _in_graph(executor, lambda node: _talker_nodes(node) == 2, "two /talker nodes")
+    listed = tool("rosnode", "list")
+    assert listed.returncode == 0 and listed.stdout.split().count("/talker") == 2
+    assert "nodes in the graph that share an exact name" in listed.stderr
+    info = tool("rosnode", "info", "/talker")
+    assert info.returncode == 0 and info.stdout.startswith("/talker\n")
+    assert 'There are 2 nodes in the graph with the exact name "/talker"' in info.stderr
 
 
 # A closed pipe (`rospack list | head`): every tool that prints leaves quietly.
