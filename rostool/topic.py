@@ -101,18 +101,48 @@ def _pick_field(data: object, field: str) -> object:
     return data
 
 
+def topic_and_field(graph: Graph, name: str) -> tuple[str, str | None]:
+    """ROS 1's `rostopic echo /topic/field`: a name that is not a topic but starts with one
+    names a field of it ('/ros_tutorial_msg/stamp/sec' -> '/ros_tutorial_msg', 'stamp.sec').
+
+    Waits (up to --timeout) for the topic or a topic that starts the name.
+    """
+    name = absolute_name(name).rstrip("/") or "/"
+    parts = name.split("/")
+
+    def find() -> tuple[str, str | None] | None:
+        topics = graph.topic_types()
+        if name in topics:
+            return name, None
+        for end in range(len(parts) - 1, 1, -1):  # the longest topic first
+            if "/".join(parts[:end]) in topics:
+                return "/".join(parts[:end]), ".".join(parts[end:])
+        return None
+
+    found = graph.wait_for(find, f"unknown topic '{name}': no publisher or subscriber seen")
+    if found[1] is not None:
+        graph.settle()  # a topic of the whole name may be running, not yet discovered
+        found = find() or found
+    return found
+
+
 def echo(
     graph: Graph,
     topic: str,
     type_name: str | None = None,
     count: int | None = None,
     field: str | None = None,
+    field_in_name: bool = False,
 ) -> None:
     """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C.
 
+    Only `field` of each (`--field stamp.sec`), or with field_in_name the field the name
+    selects as in ROS 1 (`/ros_tutorial_msg/stamp/sec`, see topic_and_field).
     With a count it is a one-shot command: Ctrl-C before the last message is "interrupted".
     """
     with until_stopped() if count is None else contextlib.nullcontext():
+        if field_in_name:
+            topic, field = topic_and_field(graph, topic)
         _echo(graph, absolute_name(topic), type_name, count, field)
 
 
@@ -120,6 +150,11 @@ def _echo(
     graph: Graph, topic: str, type_name: str | None, count: int | None, field: str | None
 ) -> None:
     msg_type = _message_type(graph, topic, type_name)
+    if field is not None:  # a field the type does not have: say so now, not at a message
+        try:
+            _pick_field(message_to_data(msg_type()), field)
+        except ToolError:
+            raise ToolError(f"{full_type_name(msg_type)} has no field '{field}'") from None
     received: deque = deque()
     # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
     subscription = AdaptiveSubscription(graph, msg_type, topic, lambda msg: received.append(msg))

@@ -73,6 +73,37 @@ def test_two_nodes_of_one_name_are_pointed_out(executor, node_process):
     assert 'There are 2 nodes in the graph with the exact name "/talker"' in info.stderr
 
 
+# ROS 1's `rostopic echo /topic/field`.
+
+
+def test_rostopic_echo_of_a_field(node_process):
+    node_process("-m", "ros_tutorials_topic.publisher").wait_for_text("send msg")
+    data = ok("rostopic", "echo", "/ros_tutorial_msg/data", "-n", "1", "--timeout", "30")
+    assert data.splitlines()[1] == "---" and int(data.splitlines()[0]) > 0
+    sec = ok("rostopic", "echo", "/ros_tutorial_msg/stamp/sec", "-n", "1", "--timeout", "30")
+    assert int(sec.splitlines()[0]) > 0
+    line = fails("rostopic", "echo", "/ros_tutorial_msg/nope", "-n", "1", "--timeout", "30")
+    assert line == "error: ros_tutorials_interfaces/msg/MsgTutorial has no field 'nope'"
+    line = fails("rostool", "topic", "echo", "/ros_tutorial_msg", "--field", "stamp.x", "--once")
+    assert line == "error: ros_tutorials_interfaces/msg/MsgTutorial has no field 'stamp.x'"
+
+
+# Values: a float field takes what Python's float() reads (YAML 1.1 reads 1e40 as text).
+
+
+@pytest.mark.parametrize("values", [("{a: 1e40, b: 2}",), ("1e40", "2")])
+def test_a_float_written_without_a_dot_is_range_checked(values):
+    line = fails("rostopic", "pub", "-1", "/t", AANDB, *values, "--timeout", "1")
+    assert "a = 1e+40 is out of range for float32" in line
+
+
+def test_a_float_written_without_a_dot_is_sent(node_process):
+    listener = node_process("-m", "ros_tutorials_topic.aandb_listener")
+    ok("rostopic", "pub", "-1", "/chatter", AANDB, "1e-3", "2", "--timeout", "30")
+    listener.wait_for_text("I heard: msg:a 0.001000, msg:b 2.000000")
+    assert "a is a number" in fails("rostopic", "pub", "-1", "/t", AANDB, "x", "2")
+
+
 # A closed pipe (`rospack list | head`): every tool that prints leaves quietly.
 
 
