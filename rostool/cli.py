@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import os
 import signal
 import sys
 from collections.abc import Callable, Sequence
@@ -21,7 +20,7 @@ import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
 from rostool import (
     action,
     console,
@@ -126,7 +125,7 @@ def _execute(
         status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        stdout_closed()
         status = 0
     except Exception:
         if rclpy.ok():

@@ -12,6 +12,7 @@ import signal
 import sys
 from collections.abc import Sequence
 
+from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.dds import apply_dds_defaults
 
 
@@ -52,6 +53,7 @@ def show_and_wait() -> None:
         pass
 
 
+@quiet_on_closed_pipe
 def roscore(argv: Sequence[str] | None = None) -> int:
     """The `roscore` command (console script)."""
     parser = argparse.ArgumentParser(

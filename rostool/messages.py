@@ -11,6 +11,7 @@ as YAML, the way ``ros2 topic echo`` shows messages.
 from __future__ import annotations
 
 import array
+import contextlib
 import importlib
 import math
 import re
@@ -145,6 +146,11 @@ def _convert_basic(value: Any, typename: str, path: str) -> Any:
             raise ToolError(f"{path} is a boolean (true or false), got {value!r}")
         return value
     if typename in ("float", "double", "long double"):
+        if isinstance(value, str):
+            # YAML 1.1 reads `1e40` and `1e-3` (no dot, or no sign in the exponent) as text;
+            # ROS 1's rostopic took them as numbers, as Python's float() does.
+            with contextlib.suppress(ValueError):
+                value = float(value)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ToolError(f"{path} is a number ({typename}), got {value!r}")
         value = float(value)

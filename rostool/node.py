@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
@@ -11,10 +12,23 @@ from rclpy.action.graph import (
 
 from rostool.graph import Graph, split_node_name
 
+# What `ros2 node list` and `ros2 node info` print (to stderr) for nodes of one name.
+DUPLICATES_WARNING = (
+    "WARNING: Be aware that there are nodes in the graph that share an exact name, "
+    "which can have unintended side effects."
+)
+INFO_DUPLICATES_WARNING = (
+    'There are {count} nodes in the graph with the exact name "{name}". '
+    "You are seeing information about only one of them."
+)
+
 
 def list_nodes(graph: Graph) -> None:
     graph.settle()
-    for name in graph.node_names():
+    names = graph.node_names()
+    if len(set(names)) < len(names):
+        print(DUPLICATES_WARNING, file=sys.stderr)
+    for name in names:
         print(name)
 
 
@@ -22,6 +36,9 @@ def info(graph: Graph, full_name: str) -> None:
     full_name = graph.wait_for_node(full_name)
     namespace, name = split_node_name(full_name)
     graph.settle()  # the node is known; let its endpoints arrive too
+    count = graph.node_names().count(full_name)
+    if count > 1:
+        print(INFO_DUPLICATES_WARNING.format(count=count, name=full_name), file=sys.stderr)
     node = graph.node
     sections = {
         "Subscribers": node.get_subscriber_names_and_types_by_node(name, namespace),

@@ -260,9 +260,9 @@ def rostopic_parser() -> argparse.ArgumentParser:
     p.set_defaults(run=lambda graph, a: topic.list_topics(graph, a.verbose))
 
     p = sub.add_parser("echo", parents=[common], help="print messages")
-    p.add_argument("topic")
+    p.add_argument("topic", help="a topic, or /topic/field for one field (/t/stamp/sec)")
     p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
-    p.set_defaults(run=lambda graph, a: topic.echo(graph, a.topic, count=a.n))
+    p.set_defaults(run=lambda graph, a: topic.echo(graph, a.topic, count=a.n, field_in_name=True))
 
     p = sub.add_parser("pub", parents=[common], help="publish a message")
     p.add_argument("topic")
@@ -335,6 +335,8 @@ def rosservice_parser() -> argparse.ArgumentParser:
 
 def _call(graph: Graph, args: argparse.Namespace) -> None:
     values = values_from_args(args.values)
+    if values is None:  # ROS 1 refused a call without its values: no silent default request
+        values = []
     service.call(graph, args.service, None, values, ros1_output=True)
 
 

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from launcher import ament, packages
+from ros_tutorials_common.cli import quiet_on_closed_pipe
 
 
 def all_packages() -> dict[str, Path]:
@@ -29,6 +30,7 @@ def find(name: str) -> Path:
     return packages.package_folder(name)
 
 
+@quiet_on_closed_pipe
 def rospack(argv: Sequence[str] | None = None) -> int:
     """The `rospack` command (console script): find and list."""
     parser = argparse.ArgumentParser(prog="rospack", description=__doc__.split("\n")[0])

@@ -31,6 +31,7 @@ from collections.abc import Sequence
 
 from launcher import packages
 from ros_tutorials_common import ctrl_c
+from ros_tutorials_common.cli import quiet_on_closed_pipe
 from rostool.errors import ToolError
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
@@ -140,6 +141,7 @@ def run(package: str, executable: str, args: Sequence[str]) -> None:
         raise ToolError(f"cannot run {command[0]}: {error.strerror}") from None
 
 
+@quiet_on_closed_pipe
 def rosrun(argv: Sequence[str] | None = None) -> int:
     """The `rosrun` command (console script)."""
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -42,16 +42,32 @@ def find(graph: Graph, type_name: str) -> None:
     print_names(graph, graph.topic_types, of_type=wanted)
 
 
+TYPES_DO_NOT_TALK = (
+    "note: this topic carries several types; publishers and subscribers of different "
+    "types do not talk to each other"
+)
+
+
 def info(graph: Graph, topic: str, verbose: bool = False) -> None:
     topic = absolute_name(topic)
-    type_name = graph.wait_for_topic_type(topic)
+    graph.wait_for_topic_type(topic)
+    # The first endpoint seen makes the topic known; let every other one arrive too (one of
+    # another type, an AandB talker beside a String listener, is the one a learner needs).
+    graph.settle()
     if verbose:
         # Endpoints are discovered before the names of their nodes: wait for those too.
         with contextlib.suppress(ToolError):  # after --timeout, print what is known
             graph.wait_for(lambda: _node_names_known(graph, topic), "")
     publishers = graph.node.get_publishers_info_by_topic(topic)
     subscriptions = graph.node.get_subscriptions_info_by_topic(topic)
-    print(f"Type: {type_name}")
+    types = sorted(
+        {e.topic_type for e in (*publishers, *subscriptions)}
+        | set(graph.topic_types().get(topic, []))
+    )
+    for type_name in types:  # one line each, as `ros2 topic info` when there are several
+        print(f"Type: {type_name}")
+    if len(types) > 1:
+        print(TYPES_DO_NOT_TALK)
     for title, endpoints in (("Publisher", publishers), ("Subscription", subscriptions)):
         print(f"{title} count: {len(endpoints)}")
         if not verbose:
@@ -59,6 +75,8 @@ def info(graph: Graph, topic: str, verbose: bool = False) -> None:
         for endpoint in endpoints:
             qos = endpoint.qos_profile
             print(f"  Node: {endpoint.node_namespace.rstrip('/')}/{endpoint.node_name}")
+            if len(types) > 1:
+                print(f"    Topic type: {endpoint.topic_type}")
             print(f"    Reliability: {qos.reliability.name}, Durability: {qos.durability.name}")
 
 
@@ -83,18 +101,48 @@ def _pick_field(data: object, field: str) -> object:
     return data
 
 
+def topic_and_field(graph: Graph, name: str) -> tuple[str, str | None]:
+    """ROS 1's `rostopic echo /topic/field`: a name that is not a topic but starts with one
+    names a field of it ('/ros_tutorial_msg/stamp/sec' -> '/ros_tutorial_msg', 'stamp.sec').
+
+    Waits (up to --timeout) for the topic or a topic that starts the name.
+    """
+    name = absolute_name(name).rstrip("/") or "/"
+    parts = name.split("/")
+
+    def find() -> tuple[str, str | None] | None:
+        topics = graph.topic_types()
+        if name in topics:
+            return name, None
+        for end in range(len(parts) - 1, 1, -1):  # the longest topic first
+            if "/".join(parts[:end]) in topics:
+                return "/".join(parts[:end]), ".".join(parts[end:])
+        return None
+
+    found = graph.wait_for(find, f"unknown topic '{name}': no publisher or subscriber seen")
+    if found[1] is not None:
+        graph.settle()  # a topic of the whole name may be running, not yet discovered
+        found = find() or found
+    return found
+
+
 def echo(
     graph: Graph,
     topic: str,
     type_name: str | None = None,
     count: int | None = None,
     field: str | None = None,
+    field_in_name: bool = False,
 ) -> None:
     """Print messages as YAML, each followed by '---'; `count` of them, or until Ctrl-C.
 
+    Only `field` of each (`--field stamp.sec`), or with field_in_name the field the name
+    selects as in ROS 1 (`/ros_tutorial_msg/stamp/sec`, see topic_and_field).
     With a count it is a one-shot command: Ctrl-C before the last message is "interrupted".
     """
     with until_stopped() if count is None else contextlib.nullcontext():
+        if field_in_name:
+            topic, field = topic_and_field(graph, topic)
         _echo(graph, absolute_name(topic), type_name, count, field)
 
 
@@ -102,6 +150,11 @@ def _echo(
     graph: Graph, topic: str, type_name: str | None, count: int | None, field: str | None
 ) -> None:
     msg_type = _message_type(graph, topic, type_name)
+    if field is not None:  # a field the type does not have: say so now, not at a message
+        try:
+            _pick_field(message_to_data(msg_type()), field)
+        except ToolError:
+            raise ToolError(f"{full_type_name(msg_type)} has no field '{field}'") from None
     received: deque = deque()
     # rclpy inspects the callback's signature, which a bound builtin like deque.append lacks.
     subscription = AdaptiveSubscription(graph, msg_type, topic, lambda msg: received.append(msg))
@@ -168,10 +221,27 @@ def pub(
     try:
         graph.wait_for(publisher.get_subscription_count, "no subscriber")
     except ToolError:
-        print(f"warning: no subscriber on {topic}; publishing anyway", file=sys.stderr)
+        print(f"warning: {_why_no_subscriber(graph, topic, msg_type)}", file=sys.stderr)
     _publish(graph, publisher, msg, rate, times, verbose)  # Ctrl-C before the last: interrupted
     # Reliable delivery of the last message before the process goes away.
     publisher.wait_for_all_acked(Duration(seconds=graph.timeout))
+
+
+def _why_no_subscriber(graph: Graph, topic: str, msg_type: type) -> str:
+    """No subscriber matched: say if those on the topic want another type (they never will).
+
+    ROS 1's rostopic published anyway (the subscriber refused the connection); so does this.
+    """
+    ours = full_type_name(msg_type)
+    others = sorted(
+        {s.topic_type for s in graph.node.get_subscriptions_info_by_topic(topic)} - {ours}
+    )
+    if others:
+        return (
+            f"{topic} carries {', '.join(others)}, not {ours}: the message will not reach "
+            "its subscribers; publishing anyway"
+        )
+    return f"no subscriber on {topic}; publishing anyway"
 
 
 def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:

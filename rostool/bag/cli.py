@@ -14,7 +14,7 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
-from ros_tutorials_common.cli import positive_int, positive_rate, positive_seconds
+from ros_tutorials_common.cli import positive_int, positive_rate, positive_seconds, stdout_closed
 from rostool.bag import info as bag_info
 from rostool.errors import ToolError
 
@@ -202,5 +202,5 @@ def _offline_only(command: str, argv: list[str]) -> int:
         print(f"error: {error}", file=sys.stderr)
         return 1
     except BrokenPipeError:
-        return 0
+        stdout_closed()
     return 0
