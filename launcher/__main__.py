@@ -25,7 +25,7 @@ from pathlib import Path
 from launcher import LaunchError, guardian, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
-from ros_tutorials_common.cli import positive_seconds
+from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 
 EXAMPLES = """\
 examples:
@@ -180,14 +180,19 @@ def format_args(infos: list[ArgInfo]) -> str:
     return "\n".join(lines)
 
 
+@quiet_on_closed_pipe  # `roslaunch --print FILE | head`
+def _print_and_end(text: str) -> int:
+    print(text)
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     options = build_parser().parse_intermixed_args(argv)
     try:
         names, args = split_words(options.words)
         path = find_launch_file(names)
         if options.show_args:
-            print(format_args(describe_args(path)))
-            return 0
+            return _print_and_end(format_args(describe_args(path)))
         launch = resolve(path, args, Options(allow_code=options.allow_code))
         specs = make_plan(launch, options.screen, options.sigterm_timeout, options.sigkill_timeout)
     except (LaunchError, RecursionError) as error:
@@ -202,8 +207,7 @@ def main(argv: list[str] | None = None) -> int:
     for warning in launch.warnings:  # at start, before the plan or the first process
         print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
-        print(format_plan(specs, launch.messages))
-        return 0
+        return _print_and_end(format_plan(specs, launch.messages))
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
     from launcher.supervise import Supervisor, make_log_dir
 

@@ -116,6 +116,8 @@ def test_a_float_written_without_a_dot_is_sent(node_process):
         ("roscore",),
         ("rosmsg", "list"),
         ("rostool", "interface", "list"),
+        ("roslaunch", "--print", "ros_tutorials_topic", "union.launch"),
+        ("roslaunch", "--show-args", "ros_tutorials_topic", "union.launch"),
     ],
 )
 def test_a_closed_pipe_ends_a_tool_quietly(args):
