@@ -172,11 +172,17 @@ def _quiet_unraisablehook(unraisable) -> None:
 
 
 def _deliver_again() -> None:
-    import threading
+    try:  # a bare thread: threading's would wait here for it to start, and be interrupted
+        _thread.start_new_thread(_interrupt_main_soon, ())
+    except KeyboardInterrupt:  # delivered while this hook still ran (a busy machine)
+        _thread.start_new_thread(_interrupt_main_soon, ())
 
-    again = threading.Timer(0.01, _thread.interrupt_main, (_signal.SIGINT,))
-    again.daemon = True
-    again.start()
+
+def _interrupt_main_soon() -> None:
+    import time
+
+    time.sleep(0.01)  # the hook has returned by then, and the program's code runs
+    _thread.interrupt_main(_signal.SIGINT)
 
 
 def _still_running() -> bool:
