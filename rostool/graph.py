@@ -28,6 +28,7 @@ import contextlib
 import os
 import signal
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -223,9 +224,13 @@ class Graph:
 
         From then on a Ctrl-C (the user answering the printed line, however late the
         process gets the CPU back) does not make the command "interrupted" (130): its exit
-        status stays 0 (see cli.execute). The counterpart of until_stopped.
+        status stays 0 (see cli.execute). The counterpart of until_stopped. Ctrl-C is ignored
+        from here on, before the answer is printed: a Ctrl-C that came between the printed
+        answer and cli.execute's own decision ended the command with 130 (seen under load).
         """
         self.finished = True
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
 
     def spin_once(self, timeout: float = POLL_PERIOD) -> None:
         self.executor.spin_once(timeout_sec=timeout)
