@@ -122,9 +122,14 @@ BOOK_EDGES = {
 @pytest.mark.parametrize("launch_file", list(BOOK_EDGES))
 def test_union_launch_graph_has_exactly_the_books_edges(node_process, tmp_path, launch_file):
     launcher = node_process("-m", "launcher", launch_file)
-    launcher.wait_for_output(
-        lambda lines: sum("recieve msg" in line for line in lines) >= 6, what="subscribers"
-    )
+    subscribers = {node for topic, node in BOOK_EDGES[launch_file] if "subscriber" in node}
+    for subscriber in subscribers:  # each one, not six lines of any: one may start later
+        launcher.wait_for_output(
+            lambda lines, tag=f"[{subscriber[1:]}]": any(
+                line.startswith(tag) and "recieve msg" in line for line in lines
+            ),
+            what=f"{subscriber} receiving",
+        )
     dot = subprocess.run(
         [str(BIN / "rostool"), "graph"], capture_output=True, text=True, timeout=TIMEOUT
     )
