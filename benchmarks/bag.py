@@ -39,7 +39,11 @@ def _cpu_seconds(pid: int) -> float:
 
 def _json_result(proc: subprocess.Popen, timeout: float = 120) -> dict:
     out, _ = proc.communicate(timeout=timeout)
-    return json.loads(out.strip().splitlines()[-1])
+    try:
+        return json.loads(out.strip().splitlines()[-1])
+    except (IndexError, ValueError):
+        tail = "\n".join(out.strip().splitlines()[-15:])
+        raise RuntimeError(f"{proc.args} ended without its result; it printed:\n{tail}") from None
 
 
 def _load(subscriber: list[str], ready: str) -> dict:
