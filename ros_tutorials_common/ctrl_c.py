@@ -116,6 +116,15 @@ def hold() -> None:
         _signal.pthread_sigmask(_signal.SIG_UNBLOCK, _SIGINT)
 
 
+# Set by a SIGINT handler of this project (ros_tutorials_common/ros/node_main.py) when
+# Ctrl-C raises KeyboardInterrupt.
+pressed = False
+# A KeyboardInterrupt raised in Python code that rclpy's C++ calls while it converts a value
+# (a message's __init__ inside take_message) comes out of pybind11 as this RuntimeError, the
+# KeyboardInterrupt gone (seen once: turtlesim's mimic stopped by Ctrl-C as a pose arrived).
+CONVERSION_FAILED = "Unable to convert call argument"
+
+
 def interrupted(error: BaseException | None) -> bool:
     """Whether an uncaught exception is how a Ctrl-C (or another stop) while starting shows:
     a KeyboardInterrupt, an error it caused (a C extension's "ImportError: initialization
@@ -128,6 +137,8 @@ def interrupted(error: BaseException | None) -> bool:
             return True
         name, text = type(error).__name__, str(error)
         if name in STOPPED_ROS or (name == "RCLError" and any(s in text for s in SHUT_DOWN)):
+            return True
+        if pressed and name == "RuntimeError" and text.startswith(CONVERSION_FAILED):
             return True
         error = error.__cause__ or error.__context__
     return False

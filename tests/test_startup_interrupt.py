@@ -164,6 +164,21 @@ def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
     assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
 
 
+def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
+    """A KeyboardInterrupt raised while rclpy's C++ converts a value (a message's __init__ in
+    take_message) comes out as pybind11's RuntimeError: a stop once Ctrl-C was pressed, and
+    an error (with its traceback) otherwise."""
+    converted = RuntimeError(
+        "Unable to convert call argument '0' to Python object (#define "
+        "PYBIND11_DETAILED_ERROR_MESSAGES or compile in debug mode for details)"
+    )
+    monkeypatch.setattr(ctrl_c, "pressed", False)
+    assert not ctrl_c.interrupted(converted)
+    monkeypatch.setattr(ctrl_c, "pressed", True)
+    assert ctrl_c.interrupted(converted)
+    assert not ctrl_c.interrupted(RuntimeError("another error"))
+
+
 def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are():
     """rclpy's Future.__del__ (and the executor's) fails on an object whose __init__ a Ctrl-C
     cut short ("Exception ignored in: <function Future.__del__ ...>"): said nothing of; other

@@ -35,6 +35,7 @@ from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 from rclpy.utilities import remove_ros_args
 
+from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults
 
 # The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
@@ -108,6 +109,7 @@ class _CtrlCOnceRosIsDown:
         options = get_current_signal_handlers_options()
         if options in (SignalHandlerOptions.SIGINT, SignalHandlerOptions.ALL):
             self.wait_until_down(self.WAIT)
+        ctrl_c.pressed = True  # what the KeyboardInterrupt may turn into is a stop too
         raise KeyboardInterrupt
 
 
