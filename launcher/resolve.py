@@ -159,12 +159,14 @@ class Scope:
     params: list[tuple[str, Any]] = field(default_factory=list)
     params_files: list[str] = field(default_factory=list)  # only inside a ROS 2 <node>
     env: dict[str, str | None] = field(default_factory=dict)
-    # The file's <arg>s declared so far, name -> line: shared by its groups, new per file.
+    # The <arg>s declared so far, name -> line: a group gets a copy, as in roslaunch (two
+    # sibling groups may each declare one name), an included file none.
     declared: dict[str, int] = field(default_factory=dict)
 
     def child(self, **changes: Any) -> Scope:
         copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
-                  "params_files": list(self.params_files), "env": dict(self.env)}  # fmt: skip
+                  "params_files": list(self.params_files), "env": dict(self.env),
+                  "declared": dict(self.declared)}  # fmt: skip
         return replace(self, **{**copies, **changes})
 
     @property
@@ -285,6 +287,11 @@ def describe_args(path: Path) -> list[ArgInfo]:
     return infos
 
 
+def _add_once(names: list[str], name: str) -> None:
+    if name not in names:
+        names.append(name)
+
+
 def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     """A parameter value from its text, typed as roslaunch and ros2 launch do."""
     name = element.attrs.get("name", "")
@@ -297,11 +304,11 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
             return float(text)
         if kind in ("bool", "boolean"):
             return to_bool(text, element, "")
-        if kind == "yaml":
-            return _load_yaml(text, element)
     except (ValueError, LaunchError):  # int('abc'), float('fast'), to_bool('yes please')
         what = {"int": "an int", "double": "a double"}.get(kind, "a bool (true, false, 1 or 0)")
         raise element.error(f"param {name!r}: {text!r} is not {what}") from None
+    if kind == "yaml":
+        return _load_yaml(text, element)  # its own error: what is wrong with the YAML
     if kind is not None:
         raise element.error(f"unknown parameter type {kind!r}; use str, int, double, bool, yaml")
     for convert in (int, float):
@@ -436,16 +443,19 @@ class Resolver:
             node.params = self._ros1_params(node, reached) + node.params
         # A parameter no node receives would be dropped without a word (ROS 1 kept every one
         # on its parameter server): one warning for each place that wrote such parameters.
-        unreached: dict[tuple[str, str], str] = {}
+        unreached: dict[tuple[str, str], list[str]] = {}  # (where, why) -> names
         for key, (name, where) in self.param_origin.items():
             if key not in reached:
-                unreached[(where, name)] = "ROS 2 has no parameter server; put it inside a <node>"
+                why = "ROS 2 has no parameter server; put it inside a <node>"
+                _add_once(unreached.setdefault((where, why), []), name)
         for entry, where in self.set_parameters:
             if not any(param is entry for node in self.nodes for param in node.params):
-                unreached[(where, entry[0])] = "no <node> follows it in its scope"
+                why = "no <node> follows it in its scope"
+                _add_once(unreached.setdefault((where, why), []), entry[0])
         warnings = [
-            f"{where}: param {name!r} is given to no node: {why}"
-            for (where, name), why in unreached.items()
+            f"{where}: param {', '.join(map(repr, names))} "
+            f"{'is' if len(names) == 1 else 'are'} given to no node: {why}"
+            for (where, why), names in unreached.items()
         ]
         return Launch(self.nodes, self.messages, warnings)
 

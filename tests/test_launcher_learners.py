@@ -74,6 +74,19 @@ def test_an_argument_declared_twice_is_refused_with_both_places(capsys, tmp_path
     )
 
 
+def test_sibling_groups_may_each_declare_an_argument(capsys, tmp_path):
+    """roslaunch gives each group a copy of the names declared so far: a name declared in
+    one group is not declared in the next, nor after the groups."""
+    path = ros1_file(
+        tmp_path,
+        '<group ns="g"><arg name="x" default="1"/></group>\n'
+        '<group ns="h"><arg name="x" default="2"/></group>\n'
+        '<arg name="x" default="3"/>\n' + NODE.format('<param name="x" value="$(arg x)"/>'),
+    )
+    status, lines, out = launch(capsys, str(path))
+    assert status == 0 and lines == [] and "param:   x = 3" in out
+
+
 def test_an_argument_declared_under_exclusive_conditions_is_accepted(capsys, tmp_path):
     path = ros1_file(
         tmp_path,
@@ -163,6 +176,12 @@ def test_a_param_of_the_wrong_type_says_so_in_ros_terms(capsys, tmp_path, kind, 
     assert refused(capsys, str(path)) == f"error: {path}:2: {expected}"
 
 
+def test_a_yaml_param_that_is_not_yaml_names_the_yaml_error(capsys, tmp_path):
+    path = ros1_file(tmp_path, NODE.format('<param name="x" type="yaml" value="{a: [1, 2"/>'))
+    line = refused(capsys, str(path))
+    assert line.startswith(f"error: {path}:2: ") and "YAML" in line and "bool" not in line
+
+
 # 6. unknown attributes are listed as the file's format spells them
 
 
@@ -220,6 +239,16 @@ def test_a_param_in_a_namespace_without_nodes_is_a_warning_the_others_reach_node
         "server; put it inside a <node>"
     ]
     assert "param:   shared = 1" in out and "param:   own = 3" in out
+
+
+def test_a_rosparam_block_that_reaches_no_node_is_one_warning(capsys, tmp_path):
+    path = ros1_file(tmp_path, '<rosparam ns="gains">p: 1\ni: 2\nd: 3</rosparam>')
+    status, lines, _ = launch(capsys, str(path))
+    assert status == 0
+    assert lines == [
+        f"warning: {path}:2: param '/gains/p', '/gains/i', '/gains/d' are given to no node: "
+        "ROS 2 has no parameter server; put it inside a <node>"
+    ]
 
 
 def test_a_set_parameter_with_no_node_after_it_is_one_warning(capsys, tmp_path):
