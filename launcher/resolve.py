@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import math
 import os
-import re
 import shlex
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
@@ -37,6 +36,7 @@ from ros_tutorials_common.bounded import (
     read_params_file,
     read_text,
 )
+from ros_tutorials_common.names import valid_remap_name
 
 # How many times in a row a respawning process may fail quickly before we give up.
 DEFAULT_RESPAWN_MAX_RETRIES = 10
@@ -183,17 +183,9 @@ def join_namespace(base: str, name: str) -> str:
     return "/" + "/".join(part for part in full.split("/") if part)
 
 
-# A ROS name as rcl's remap rules take it: parts of letters, digits and _ (not starting with a
-# digit) separated by single /, relative, absolute (/a) or private (~/a); the rule's "from" may
-# start with rostopic:// or rosservice://. No spaces, no {node}, no wildcards, no trailing /.
-_ROS_NAME = re.compile(r"(~/|/)?[A-Za-z_][A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*")
-_REMAP_PREFIX = re.compile(r"(rostopic|rosservice)://")
-
-
 def remap_problem(name: str, side: str) -> str | None:
     """Why rcl would refuse ``name`` as the ``side`` ("from" or "to") of a remap; else None."""
-    plain = _REMAP_PREFIX.sub("", name, count=1) if side == "from" else name
-    if _ROS_NAME.fullmatch(plain):
+    if valid_remap_name(name, side):
         return None
     return (
         f"remap {side}={name!r} is not a valid ROS name (parts of letters, digits and _, "

@@ -169,17 +169,26 @@ def _quiet_excepthook(kind, value, traceback) -> None:
 
 
 def _quiet_unraisablehook(unraisable) -> None:
-    if isinstance(unraisable.exc_value, KeyboardInterrupt):
-        if _still_running():
-            # The Ctrl-C came while a __del__ ran (rclpy's Future and Task have one, and the
-            # executor drops one per callback): Python cannot raise it from there, so it would
-            # be lost and the command would run on (`rostopic echo` ignored a Ctrl-C for 30 s
-            # under load). Deliver it again, a moment later, from a thread: raised from here
-            # (signal.raise_signal, interrupt_main) it would only end this hook.
-            _deliver_again()
-        return  # on the way out (atexit, module teardown): it is the exit already under way
+    try:
+        if isinstance(unraisable.exc_value, KeyboardInterrupt):
+            _quiet_keyboard_interrupt()
+            return
+    except KeyboardInterrupt:  # one more Ctrl-C while this hook ran
+        _quiet_keyboard_interrupt()
+        return
     if not cut_short(unraisable):
         _previous_unraisablehook(unraisable)
+
+
+def _quiet_keyboard_interrupt() -> None:
+    """A KeyboardInterrupt Python could not raise: on the way out (atexit, module teardown)
+    it is the exit already under way; while the program runs, it came while a __del__ ran
+    (rclpy's Future and Task have one, and the executor drops one per callback), and it
+    would be lost: the command would run on (`rostopic echo` ignored a Ctrl-C for 30 s under
+    load). Delivered again, a moment later, from a thread: raised from here
+    (signal.raise_signal, interrupt_main) it would only end this hook."""
+    if _still_running():
+        _deliver_again()
 
 
 def _deliver_again() -> None:

@@ -30,7 +30,7 @@ import sys
 from collections.abc import Sequence
 
 from launcher import packages
-from ros_tutorials_common import ctrl_c
+from ros_tutorials_common import ctrl_c, names
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 from rostool.errors import ToolError
 
@@ -45,9 +45,7 @@ NO_ROS2_MEANING = {
 }
 
 
-# A part of a ROS name (node, namespace, topic, parameter), as ROS 1 and ROS 2 both allow it.
-_TOKEN = r"[A-Za-z_][A-Za-z0-9_]*"
-_RULE = "letters, digits and underscores, not starting with a digit"
+_TOKEN, _RULE = names.TOKEN, names.RULE  # a part of a ROS name, as ROS 1 and ROS 2 allow it
 
 
 def _check(arg: str, value: str, what: str, pattern: str, parts: str = "") -> str:
@@ -85,11 +83,15 @@ def ros1_argument(arg: str) -> list[str] | None:
         _check(arg, param, "parameter name", rf"{_TOKEN}(\.{_TOKEN})*", parts)
         return ["-p", f"{param}:={value}"]
     # ROS 1's private `~name` is ROS 2's `~/name`.
-    names = [re.sub(r"^~(?=[^/])", "~/", side) for side in (name, value)]
-    topic = rf"~|(~/|/)?{_TOKEN}(/{_TOKEN})*"
-    for side in names:
-        _check(arg, side, "topic or service name", topic, "parts separated by '/', each of ")
-    return ["-r", f"{names[0]}:={names[1]}"]
+    source, target = (re.sub(r"^~(?=[^/])", "~/", side) for side in (name, value))
+    for side, which in ((source, "from"), (target, "to")):
+        if not names.valid_remap_name(side, which):  # the launcher's check, rcl's rules
+            shown = f"'{side}'" if side else "an empty name"
+            raise ToolError(
+                f"{arg}: {shown} is not a valid topic or service name "
+                f"(parts separated by '/', each of {_RULE})"
+            )
+    return ["-r", f"{source}:={target}"]
 
 
 def translate_arguments(args: Sequence[str]) -> list[str]:

@@ -52,6 +52,9 @@ def test_ros1_arguments_become_one_ros_args_block():
         ("__ns:=r-1", "'/r-1' is not a valid namespace"),
         ("ros_tutorial_msg:=bad-name", "'bad-name' is not a valid topic or service name"),
         ("_bad-param:=1", "'bad-param' is not a valid parameter name"),
+        ("~:=x", "'~' is not a valid topic or service name"),  # rcl refuses a bare ~
+        ("chatter:=~", "'~' is not a valid topic or service name"),
+        ("arostopic://b:=x", "'arostopic://b' is not a valid topic or service name"),
     ],
 )
 def test_rosrun_refuses_a_bad_ros1_name_in_one_line_before_the_node_starts(arg, message):
