@@ -328,13 +328,40 @@ def test_snapshot_service_writes_the_png(sim, probe, tmp_path):
     assert not answer.success and answer.message
 
 
+def _action_graph(node: Node, turtle: str) -> str:
+    """What the graph shows of a turtle's rotate_absolute: its services with their servers'
+    nodes, and its topics with their publisher and subscriber counts."""
+    prefix = f"/{turtle}/rotate_absolute/_action/"
+    services = {
+        name: [
+            f"{namespace.rstrip('/')}/{server}"
+            for server, namespace in node.get_node_names_and_namespaces()
+            if any(
+                found == name
+                for found, _ in node.get_service_names_and_types_by_node(server, namespace)
+            )
+        ]
+        for name, _ in node.get_service_names_and_types()
+        if name.startswith(prefix)
+    }
+    topics = {
+        f"{prefix}{topic}": (node.count_publishers(f"{prefix}{topic}"),
+                             node.count_subscribers(f"{prefix}{topic}"))
+        for topic in ("feedback", "status")
+    }  # fmt: skip
+    return f"services {services}; topics (publishers, subscribers) {topics}"
+
+
 class Rotation:
     """A rotate_absolute goal sent by the probe, its feedback, status and result."""
 
     def __init__(self, probe: Probe, theta: float, turtle: str = "turtle1") -> None:
         self.probe = probe
         self.client = ActionClient(probe.node, RotateAbsolute, f"/{turtle}/rotate_absolute")
-        spin_until(probe.executor, self.client.server_is_ready, what="rotate_absolute")
+        try:
+            spin_until(probe.executor, self.client.server_is_ready, what="rotate_absolute")
+        except pytest.fail.Exception:  # say which part of the action the graph lacks
+            pytest.fail(f"rotate_absolute never ready: {_action_graph(probe.node, turtle)}")
         self.feedback: list[float] = []
         future = self.client.send_goal_async(
             RotateAbsolute.Goal(theta=theta),
@@ -352,6 +379,9 @@ class Rotation:
 
 def test_rotate_absolute_succeeds_with_feedback(sim, probe):
     rotation = Rotation(probe, 1.0)
+    # ROS 2's names for the action's parts, served by the simulator's node
+    shown = _action_graph(probe.node, "turtle1")
+    assert "'/turtle1/rotate_absolute/_action/send_goal': ['/turtlesim']" in shown, shown
     status, delta = rotation.result()
     assert status == GoalStatus.STATUS_SUCCEEDED
     assert delta == pytest.approx(-1.0, abs=0.03)  # start minus end, as turtlesim reports
