@@ -14,6 +14,8 @@ from launcher import packages
 from rostool.errors import ToolError
 from rostool.run import translate_arguments
 
+ROOT = Path(__file__).resolve().parent.parent
+
 
 def count(lines: list[str], text: str) -> int:
     return sum(text in line for line in lines)
@@ -260,3 +262,24 @@ def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
     assert result.returncode == 1 and "Traceback" not in result.stderr
     assert "error: invalid ROS arguments:" in result.stderr
     assert "Couldn't parse remap rule" in result.stderr
+
+
+@pytest.mark.parametrize(
+    "command,expected",
+    [
+        (("roscd", "ros_tutorials_topic"), f"type: cd {ROOT / 'ros_tutorials_topic'}"),
+        (("roscd", "ros_tutorials_topic/launch"), f"cd {ROOT / 'ros_tutorials_topic/launch'}"),
+        (("roscd", "ros_tutorials_topic/src"), "ros_tutorials_topic (it has no src/ here)"),
+        (("roscd", "nope"), "unknown package 'nope'"),
+        (("roscd",), "usage: roscd PKG[/DIR]"),
+        (("rosed", "ros_tutorials_topic", "talker.py"), "ros_tutorials_topic/talker.py"),
+        (("catkin_make",), "run `make interfaces`"),
+        (("rqt",), "call services with `rosservice call`"),
+    ],
+)
+def test_ros1_shell_commands_say_what_to_type_instead(command, expected):
+    """roscd, rosed, catkin_make and rqt, typed as the seeds do: one line, exit 1, not
+    'command not found'."""
+    result = finished(*command)
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and expected in result.stderr, result.stderr

@@ -1,0 +1,76 @@
+"""ROS 1's shell commands that no program can be here: each says what to type instead.
+
+    roscd ros_tutorials_topic      error: roscd changes your shell's folder, which a program
+                                   cannot do; type: cd /.../ros_tutorials_topic
+    rosed PKG FILE                 the same for an editor: ${EDITOR:-nano} /.../FILE
+    catkin_make                    nothing to build: what to run after changing what
+    rqt                            a GUI tool this project does not have, and what does its job
+
+ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See the README's
+"Coming from ROS 1".
+"""
+
+from __future__ import annotations
+
+import shlex
+import sys
+from collections.abc import Sequence
+
+from launcher import packages
+from ros_tutorials_common.cli import quiet_on_closed_pipe
+
+
+def _folder(where: str) -> str:
+    """The folder of PKG[/DIR], as roscd took it (LookupError, one line, if unknown). A DIR
+    the package does not have here (seed 000's ros_tutorials_topic/src) is said and left out."""
+    package, _, below = where.partition("/")
+    folder = packages.package_folder(package)
+    if below and not (folder / below).is_dir():
+        return f"{shlex.quote(str(folder))} (it has no {below}/ here)"
+    return shlex.quote(str(folder / below if below else folder))
+
+
+def _args(argv: Sequence[str] | None) -> list[str]:
+    return list(sys.argv[1:] if argv is None else argv)
+
+
+def _say(message: str) -> int:
+    print(f"error: {message}", file=sys.stderr)
+    return 1  # it did not do what was typed
+
+
+@quiet_on_closed_pipe
+def roscd(argv: Sequence[str] | None = None) -> int:
+    args = _args(argv)
+    if len(args) != 1:
+        return _say("usage: roscd PKG[/DIR]; here: cd $(rospack find PKG)/DIR")
+    try:
+        folder = _folder(args[0])
+    except LookupError as error:
+        return _say(str(error))
+    return _say(f"roscd changes your shell's folder, which a program cannot do; type: cd {folder}")
+
+
+@quiet_on_closed_pipe
+def rosed(argv: Sequence[str] | None = None) -> int:
+    args = _args(argv)
+    if len(args) != 2:
+        return _say("usage: rosed PKG FILE; here: $EDITOR $(rospack find PKG)/FILE")
+    try:
+        folder = _folder(args[0])
+    except LookupError as error:
+        return _say(str(error))
+    return _say(f"rosed is a ROS 1 shell function; type: ${{EDITOR:-nano}} {folder}/{args[1]}")
+
+
+@quiet_on_closed_pipe
+def catkin_make(argv: Sequence[str] | None = None) -> int:
+    return _say(
+        "nothing to build here: the Python nodes run from their source; after changing a "
+        ".msg/.srv/.action file run `make interfaces`, after changing pyproject.toml `make setup`"
+    )
+
+
+@quiet_on_closed_pipe
+def rqt(argv: Sequence[str] | None = None) -> int:
+    return _say(f"rqt is a GUI tool this project does not have; {packages.MISSING_TOOLS['rqt']}")
