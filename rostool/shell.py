@@ -39,28 +39,37 @@ def _say(message: str) -> int:
     return 1  # it did not do what was typed
 
 
-@quiet_on_closed_pipe
-def roscd(argv: Sequence[str] | None = None) -> int:
+def _pointed(argv: Sequence[str] | None, count: int, usage: str, instead: str) -> int:
+    """The line for a command whose first argument names a package's folder: ``instead``
+    with {folder} and {args} filled in, or its usage, or the unknown package."""
     args = _args(argv)
-    if len(args) != 1:
-        return _say("usage: roscd PKG[/DIR]; here: cd $(rospack find PKG)/DIR")
+    if len(args) != count:
+        return _say(usage)
     try:
         folder = _folder(args[0])
     except LookupError as error:
         return _say(str(error))
-    return _say(f"roscd changes your shell's folder, which a program cannot do; type: cd {folder}")
+    return _say(instead.format(folder=folder, args=args))
+
+
+@quiet_on_closed_pipe
+def roscd(argv: Sequence[str] | None = None) -> int:
+    return _pointed(
+        argv,
+        1,
+        "usage: roscd PKG[/DIR]; here: cd $(rospack find PKG)/DIR",
+        "roscd changes your shell's folder, which a program cannot do; type: cd {folder}",
+    )
 
 
 @quiet_on_closed_pipe
 def rosed(argv: Sequence[str] | None = None) -> int:
-    args = _args(argv)
-    if len(args) != 2:
-        return _say("usage: rosed PKG FILE; here: $EDITOR $(rospack find PKG)/FILE")
-    try:
-        folder = _folder(args[0])
-    except LookupError as error:
-        return _say(str(error))
-    return _say(f"rosed is a ROS 1 shell function; type: ${{EDITOR:-nano}} {folder}/{args[1]}")
+    return _pointed(
+        argv,
+        2,
+        "usage: rosed PKG FILE; here: $EDITOR $(rospack find PKG)/FILE",
+        "rosed is a ROS 1 shell function; type: ${{EDITOR:-nano}} {folder}/{args[1]}",
+    )
 
 
 @quiet_on_closed_pipe
