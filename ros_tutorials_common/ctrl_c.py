@@ -117,8 +117,10 @@ def hold() -> None:
 
 
 # Set by a SIGINT handler of this project (ros_tutorials_common/ros/node_main.py) when
-# Ctrl-C raises KeyboardInterrupt.
+# Ctrl-C raises KeyboardInterrupt, and when rclpy's own handler had shut ROS down first (the
+# program then ends through ExternalShutdownException even without the KeyboardInterrupt).
 pressed = False
+ros_stopped = False
 # A KeyboardInterrupt raised in Python code that rclpy's C++ calls while it converts a value
 # (a message's __init__ inside take_message) comes out of pybind11 as this RuntimeError, the
 # KeyboardInterrupt gone (seen once: turtlesim's mimic stopped by Ctrl-C as a pose arrived).
@@ -187,8 +189,8 @@ def _quiet_keyboard_interrupt() -> None:
     would be lost: the command would run on (`rostopic echo` ignored a Ctrl-C for 30 s under
     load). Delivered again, a moment later, from a thread: raised from here
     (signal.raise_signal, interrupt_main) it would only end this hook."""
-    if _still_running():
-        _deliver_again()
+    if _still_running() and not ros_stopped:
+        _deliver_again()  # not where ROS is down: that program is ending already
 
 
 def _deliver_again() -> None:

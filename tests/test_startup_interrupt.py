@@ -164,6 +164,21 @@ def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
     assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
 
 
+def test_a_lost_ctrl_c_is_not_delivered_again_where_ros_is_down_already(monkeypatch):
+    """In a node whose Ctrl-C rclpy's handler answered by shutting ROS down, the program ends
+    through ExternalShutdownException; a KeyboardInterrupt delivered again would only come
+    after its except clause and end it by SIGINT instead of exit status 0."""
+    delivered = []
+    monkeypatch.setattr(ctrl_c, "_deliver_again", lambda: delivered.append(True))
+    lost = type("Unraisable", (), {"exc_value": KeyboardInterrupt(), "object": None})()
+    monkeypatch.setattr(ctrl_c, "ros_stopped", True)
+    ctrl_c._quiet_unraisablehook(lost)
+    assert delivered == []
+    monkeypatch.setattr(ctrl_c, "ros_stopped", False)  # a tool: only the KeyboardInterrupt
+    ctrl_c._quiet_unraisablehook(lost)
+    assert delivered == [True]
+
+
 def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
     """A KeyboardInterrupt raised while rclpy's C++ converts a value (a message's __init__ in
     take_message) comes out as pybind11's RuntimeError: a stop once Ctrl-C was pressed, and

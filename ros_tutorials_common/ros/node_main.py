@@ -108,7 +108,10 @@ class _CtrlCOnceRosIsDown:
     def __call__(self, signum: int, frame: object) -> None:
         options = get_current_signal_handlers_options()
         if options in (SignalHandlerOptions.SIGINT, SignalHandlerOptions.ALL):
-            self.wait_until_down(self.WAIT)
+            # ROS down: the program ends anyway (ExternalShutdownException), so a
+            # KeyboardInterrupt Python loses in a __del__ is not delivered again (ctrl_c.py),
+            # where it could only come after the program's own except and end it by SIGINT.
+            ctrl_c.ros_stopped = self.wait_until_down(self.WAIT)
         ctrl_c.pressed = True  # what the KeyboardInterrupt may turn into is a stop too
         raise KeyboardInterrupt
 
