@@ -20,6 +20,7 @@ import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
+from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
 from rostool import (
     action,
@@ -127,12 +128,17 @@ def _execute(
         # `rostool topic echo /t | head`: the reader left; leave quietly too.
         stdout_closed()
         status = 0
-    except Exception:
-        if rclpy.ok():
+    except Exception as error:
+        if ctrl_c.interrupted(error) and rclpy.ok():
+            # An error a Ctrl-C caused on its way up (the KeyboardInterrupt in its context:
+            # rclpy code cleaning up after it raised anew): the Ctrl-C it is.
+            status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
+        elif rclpy.ok():
             raise
-        # SIGTERM: rclpy's handler shut ROS down while the command was creating its node, a
-        # subscription or a timer, which then fails (RCLError "context is not valid").
-        status = EXIT_INTERRUPTED
+        else:
+            # SIGTERM: rclpy's handler shut ROS down while the command was creating its node,
+            # a subscription or a timer, which then fails (RCLError "context is not valid").
+            status = EXIT_INTERRUPTED
     finally:
         if status is not None:
             # Decided: from here on a Ctrl-C (the user answering the printed line while the

@@ -16,10 +16,12 @@ import time
 from pathlib import Path
 
 import pytest
+import rclpy
 import yaml
 from helpers import BIN, TIMEOUT, at_once, fails, ok, ready, spin_until
 from helpers import run as tool
 from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions
 
 from rostool import cli, ros1
 from rostool.ros1 import NO_ROS2_MEANING
@@ -567,3 +569,27 @@ def test_send_goal_notices_a_server_that_goes_away(node_process):
     assert goal.wait() == 1
     assert "went away before the goal finished" in goal.output
     assert "Traceback" not in goal.output
+
+
+def test_an_error_a_ctrl_c_caused_on_its_way_up_is_the_ctrl_c():
+    """rclpy code cleaning up after a KeyboardInterrupt can raise anew (the KeyboardInterrupt
+    then in the new error's context): the command ends as interrupted (130), no traceback."""
+
+    def interrupted_then_failed(graph) -> None:
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt:
+            raise RuntimeError("cleaning up after the interrupt failed") from None
+
+    def failed(graph) -> None:
+        raise RuntimeError("a real error")
+
+    previous = signal.getsignal(signal.SIGINT)
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ROS up, as in a command
+    try:  # _execute ignores Ctrl-C once the status is decided: give this process its own back
+        assert cli._execute(interrupted_then_failed, True, 1.0, None) == 130
+        with pytest.raises(RuntimeError, match="a real error"):
+            cli._execute(failed, True, 1.0, None)
+    finally:
+        rclpy.try_shutdown()
+        signal.signal(signal.SIGINT, previous)
