@@ -86,7 +86,7 @@ def resolve_parameter(
     """A ROS 1 name, waiting for it: '/calculation_method' -> [('/service_server',
     'calculation_method')]; with ``namespaces``, a node's name or a namespace of nodes ('/')
     -> [(node, None), ...], as ROS 1's parameter tree held a node's parameters under it."""
-    name = "/" + name.strip("/")
+    name = _absolute(name)
     known: dict[str, list[str]] = {}
 
     def find() -> list[tuple[str, str | None]]:
@@ -139,13 +139,14 @@ def _value_text(value: Any) -> str:
     return str(value).lower() if isinstance(value, bool) else str(value)
 
 
-def _namespace_arg(namespace: str | None) -> str:
-    return "/" + (namespace or "").strip("/")
+def _absolute(name: str | None) -> str:
+    """A ROS 1 name as written ('calculation_method/', '/', None) in its one absolute form."""
+    return "/" + (name or "").strip("/")
 
 
 def rosparam_list(graph: Graph, namespace: str | None = None) -> None:
     """`rosparam list [NAMESPACE]`: /node/parameter names, those under NAMESPACE if given."""
-    namespace = _namespace_arg(namespace)
+    namespace = _absolute(namespace)
     for node_name in param.nodes_with_parameters(graph):
         if not (_under(node_name, namespace) or namespace.startswith(node_name + "/")):
             continue  # ask only the nodes that can hold a name in the namespace
@@ -170,7 +171,7 @@ def rosparam_get(graph: Graph, name: str) -> None:
 def _parameter_tree(graph: Graph, nodes: list[str], namespace: str) -> dict[str, Any]:
     """{parameter: value} of one node named by its namespace; of several, nested by the
     parts of their names below the namespace ({service_server: {calculation_method: 1}})."""
-    namespace = _namespace_arg(namespace)
+    namespace = _absolute(namespace)
     tree: dict[str, Any] = {}
     for node_name in nodes:
         values = param.get_values(graph, node_name, param.names(graph, node_name))
@@ -188,11 +189,11 @@ def rosparam_set(graph: Graph, name: str, value: str) -> None:
     parsed = parse_yaml(value)
     if param_name is not None:
         param.set_values(graph, node_name, {param_name: parsed})
-    elif len(matches) == 1 and node_name == "/" + name.strip("/") and isinstance(parsed, dict):
+    elif len(matches) == 1 and node_name == _absolute(name) and isinstance(parsed, dict):
         param.set_values(graph, node_name, parsed)  # ROS 1's `rosparam set /node '{a: 1}'`
     else:
         raise ToolError(
-            f"{'/' + name.strip('/')} is a node's namespace, not a parameter; name one, e.g. "
+            f"{_absolute(name)} is a node's namespace, not a parameter; name one, e.g. "
             f"{node_name}/PARAM (`rosparam list {node_name}` lists them), or set several with "
             f"`rosparam set {node_name} '{{PARAM: VALUE}}'`"
         )
