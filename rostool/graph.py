@@ -42,7 +42,7 @@ from rclpy.action.graph import (
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
-from rclpy.signals import SignalHandlerOptions
+from rclpy.signals import SignalHandlerOptions, uninstall_signal_handlers
 
 from ros_tutorials_common.ros import init
 from rostool.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
@@ -208,6 +208,13 @@ class Graph:
         Closing is short, and one interrupted half-way would leave rclpy to complain at exit.
         """
         with ctrl_c_deferred():
+            if not self.node.context.ok():
+                # Shut down by SIGTERM: rclpy's signal thread may still be inside rcl_shutdown
+                # (the context reads "down" from its start), and destroying the node beside it
+                # is the likely cause of a rare SIGSEGV in destroy_node (`rosbag record -a`
+                # after closing its bag). Uninstalling rclpy's handlers first stops that thread
+                # (meant to wait for it; the crash is too rare to show the effect in a run).
+                uninstall_signal_handlers()
             self.discovery.close()
             self.executor.shutdown()
             self.node.destroy_node()
