@@ -24,7 +24,7 @@ from pathlib import Path
 from mcap.reader import make_reader
 
 from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, stop, wait_for_lines
-from rostool.bag.storage import BagReader, BagWriter, TopicInfo
+from ros2cmd.bag.storage import BagReader, BagWriter, TopicInfo
 
 SECONDS = 10.0
 ROSBAG = str(Path(sys.executable).parent / "rosbag")  # the installed command, as a user runs it

@@ -1,4 +1,4 @@
-"""Graph figures (issue 12): how long `rostool node list` / `topic list` take to give the
+"""Graph figures (issue 12): how long `ros2 node list` / `topic list` take to give the
 complete answer with union.launch and 20 more nodes running, beside the time discovery
 itself needs (a bare rclpy node that knows what to expect and waits until it sees it all);
 and how long the graph picture of 50 nodes and 100 topics takes."""
@@ -62,18 +62,18 @@ def lists(runs: int = 10) -> list[Row]:
         complete = {"node": 0, "topic": 0}
         for _ in range(runs):  # interleaved, so machine load hits all alike
             for verb, expected in (("node", EXPECTED_NODES), ("topic", EXPECTED_TOPICS)):
-                seconds, out = _timed([str(BIN / "rostool"), verb, "list"])
+                seconds, out = _timed([str(BIN / "ros2"), verb, "list"])
                 samples[verb].append(seconds)
                 complete[verb] += out.split() == expected
                 if out.split() != expected:  # say what differed: the table only counts
                     listed = set(out.split())
                     print(
-                        f"`rostool {verb} list` missed {sorted(set(expected) - listed)}, "
+                        f"`ros2 {verb} list` missed {sorted(set(expected) - listed)}, "
                         f"listed more: {sorted(listed - set(expected))}",
                         file=sys.stderr,
                     )
             samples["bare"].append(_timed(bare)[0])
-        graph_seconds = [_timed([str(BIN / "rostool"), "graph"])[0] for _ in range(3)]
+        graph_seconds = [_timed([str(BIN / "rqt_graph"), "--dot"])[0] for _ in range(3)]
     finally:
         for proc in procs:
             stop(proc)
@@ -83,7 +83,7 @@ def lists(runs: int = 10) -> list[Row]:
         s = samples[verb]
         rows.append(
             Row(
-                f"`rostool {verb} list`, union.launch + {EXTRA_NODES} nodes, start to exit, "
+                f"`ros2 {verb} list`, union.launch + {EXTRA_NODES} nodes, start to exit, "
                 f"p50/p99 of {runs} (complete: {complete[verb]}/{runs})",
                 f"{fmt_ms(p50(s))} / {fmt_ms(p99(s))}",
                 f"{fmt_ms(p50(base))} / {fmt_ms(p99(base))} (bare rclpy node seeing all)",
@@ -94,7 +94,7 @@ def lists(runs: int = 10) -> list[Row]:
         )
     rows.append(
         Row(
-            f"`rostool graph` (DOT), the same {len(EXPECTED_NODES)} nodes, median of 3",
+            f"`ros2 graph` (DOT), the same {len(EXPECTED_NODES)} nodes, median of 3",
             fmt_ms(p50(graph_seconds)),
         )
     )
@@ -103,7 +103,7 @@ def lists(runs: int = 10) -> list[Row]:
 
 def picture(runs: int = 5) -> list[Row]:
     """Layout and drawing alone (no ROS), for a made-up graph of 50 nodes and 100 topics."""
-    from rostool import graph_view
+    from ros2cmd import graph_view
 
     model = graph_view.example_model(50, 100)
     rows = []

@@ -38,9 +38,9 @@ exit code: 0 all ended cleanly, 1 a process failed or the launch could not start
 130 after Ctrl-C (143 after SIGTERM)."""
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog=program(),
+        prog=prog or program(),
         description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -87,8 +87,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def program() -> str:
-    """The launcher's name as the user typed it: roslaunch, or python -m launcher."""
-    return "roslaunch" if Path(sys.argv[0]).name == "roslaunch" else "python -m launcher"
+    """The launcher's name as the user typed it: roslaunch, ros2 launch, or python -m launcher."""
+    name = Path(sys.argv[0]).name
+    return {"roslaunch": "roslaunch", "ros2": "ros2 launch"}.get(name, "python -m launcher")
 
 
 def _shipped() -> dict[str, list[Path]]:
@@ -186,8 +187,14 @@ def _print_and_end(text: str) -> int:
     return 0
 
 
-def main(argv: list[str] | None = None) -> int:
-    options = build_parser().parse_intermixed_args(argv)
+def main(
+    argv: list[str] | None = None, program: str | None = None, standalone: bool | None = None
+) -> int:
+    """The launcher's command line. STANDALONE (default: no ARGV given) means this process is
+    the launcher (`roslaunch`, `ros2 launch`): it forks its guardian before starting."""
+    options = build_parser(program).parse_intermixed_args(argv)
+    if standalone is None:
+        standalone = argv is None
     try:
         names, args = split_words(options.words)
         path = find_launch_file(names)
@@ -216,7 +223,7 @@ def main(argv: list[str] | None = None) -> int:
     except LaunchError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
-    if argv is None:  # the program itself: from here on this process is the launcher's
+    if standalone:  # the program itself: from here on this process is the launcher's
         guardian.guard()  # guardian, and the launcher goes on in a child
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)

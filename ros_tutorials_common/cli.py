@@ -81,7 +81,7 @@ def _positive_number(text: str, what: str) -> float:
 
 
 def stdout_closed() -> None:
-    """The reader of our output has gone (`rostool topic list | head`): call this on
+    """The reader of our output has gone (`ros2 topic list | head`): call this on
     BrokenPipeError, then end with status 0, as ROS 1's tools and `ls | head` do.
 
     Standard output goes to /dev/null from here on, so that Python's flush of it at exit

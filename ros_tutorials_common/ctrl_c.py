@@ -40,7 +40,7 @@ import sys
 PACKAGES = frozenset(
     {
         "launcher",
-        "rostool",
+        "ros2cmd",
         "ros_tutorials_action",
         "ros_tutorials_common",
         "ros_tutorials_parameter",
@@ -70,7 +70,7 @@ def _module_is_ours(module: str) -> bool:
 
 def _script_is_ours(path: str) -> bool:
     """A file of this project (``python ros_tutorials_topic/talker.py``), or a console script
-    of this environment whose wrapper imports this project (``from rostool.ros1 import ...``)."""
+    of this environment whose wrapper imports this project (``from ros2cmd.ros1 import ...``)."""
     folder = os.path.dirname(os.path.abspath(path))
     if os.path.basename(folder) in PACKAGES:
         return True

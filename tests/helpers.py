@@ -24,11 +24,11 @@ import pytest
 from rclpy.executors import Executor
 from warm import Starter
 
-from rostool import wait
+from ros2cmd import wait
 
 T = TypeVar("T")
 TIMEOUT = 30.0
-# The console scripts (`rostool`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
+# The console scripts (`ros2`, `rosbag`, `rosrun`, ...) installed beside this interpreter.
 BIN = Path(sys.executable).parent
 # This pytest process's warm-start server (tests/warm.py), set by conftest's ros_domain.
 warm: Starter | None = None
@@ -60,7 +60,7 @@ def run(
     env: dict[str, str] | None = None,
     cold: bool = False,
 ) -> subprocess.CompletedProcess:
-    """Run a console script (`rostool`, `rosbag`, ...) to its end, as a learner types it.
+    """Run a console script (`ros2`, `rosbag`, ...) to its end, as a learner types it.
 
     Output is captured as text. A command of this project in this session's environment
     starts warm (tests/warm.py) unless cold is true.

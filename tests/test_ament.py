@@ -122,7 +122,7 @@ def test_a_user_set_prefix_path_is_searched_first_and_this_environment_after_it(
     assert (
         run_tool(["rosmsg", "show", "overlay_msgs/Reading"], user_set).stdout == "float64 value\n"
     )
-    listed = run_tool(["rostool", "interface", "packages"], user_set).stdout.split()
+    listed = run_tool(["ros2", "interface", "packages"], user_set).stdout.split()
     assert "overlay_msgs" in listed and "std_msgs" in listed
 
     # Unset, or set to nothing: this environment alone.

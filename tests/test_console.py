@@ -1,4 +1,4 @@
-"""rqt_console / `rostool console`, rqt_logger_level / `rostool log level`, roslaunch-logs."""
+"""rqt_console / `ros2 console`, rqt_logger_level / `ros2 log level`, roslaunch-logs."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from helpers import NodeProcess
 
-from rostool.log import latest_launch_folder
+from ros2cmd.log import latest_launch_folder
 
 BIN = Path(sys.executable).parent
 LINE = re.compile(r"^\[(\d\d:\d\d:\d\d\.\d{3})\] \[(\w+)\] \[([\w.]+)\]: (.*)$")
@@ -43,7 +43,7 @@ def talkers(node_process):
 
 
 def test_console_filters_by_node_and_text(node_process, talkers):
-    lines = finished(tool(node_process, "rostool", "console", "--node", "/talker", "-n", "5"))
+    lines = finished(tool(node_process, "rqt_console", "--node", "/talker", "-n", "5"))
     assert len(lines) == 5
     for line in lines:
         _time, level, logger, message = LINE.match(line).groups()
@@ -60,7 +60,7 @@ def test_console_filters_by_level(node_process):
         "-m", "ros_tutorials_parameter.server", "--ros-args", "-p", "calculation_method:=4"
     )
     server.wait_for_output(lambda lines: any("ready srv server!" in x for x in lines))
-    console = tool(node_process, "rostool", "console", "--level", "warn", "-n", "1")
+    console = tool(node_process, "rqt_console", "--level", "warn", "-n", "1")
     # A warning logged before the console subscribed is not shown: call until it prints one.
     deadline = time.monotonic() + 60
     while console.process.poll() is None and time.monotonic() < deadline:
@@ -76,7 +76,7 @@ def test_console_since_includes_what_rosout_still_holds(node_process, talkers):
     talker, _ = talkers
     before = heard(talker, "hello world")
     lines = finished(
-        tool(node_process, "rostool", "console", "--node", "talker", "--since", "10", "-n", "1")
+        tool(node_process, "rqt_console", "--node", "talker", "--since", "10", "-n", "1")
     )
     numbers = [int(m.group(1)) for m in map(re.compile(r"hello world (\d+)").search, lines) if m]
     assert numbers, lines
@@ -91,7 +91,7 @@ def _stamped(lines: list[str], text: str) -> list[float]:
 
 def test_logger_level_change_takes_effect_in_the_nodes_output(node_process, talkers):
     talker, _ = talkers
-    assert finished(tool(node_process, "rostool", "log", "level", "/talker"))[-1].startswith(
+    assert finished(tool(node_process, "rqt_logger_level", "/talker"))[-1].startswith(
         "/talker: UNSET"
     )
     lines = finished(tool(node_process, "rqt_logger_level", "/talker", "warn"))
@@ -100,7 +100,7 @@ def test_logger_level_change_takes_effect_in_the_nodes_output(node_process, talk
     # While WARN, the talker's INFO lines stop: watch for a second and a half of its life.
     count = heard(talker, "hello world")
     talker.wait_for_output(lambda lines: time.time() - quiet_from > 1.5, timeout=10)
-    lines = finished(tool(node_process, "rostool", "log", "level", "/talker", "info"))
+    lines = finished(tool(node_process, "rqt_logger_level", "/talker", "info"))
     assert lines[-1] == "/talker: INFO"
     talker.wait_for_output(
         lambda lines: heard(talker, "hello world") > count + 3, what="INFO again"
@@ -124,10 +124,10 @@ def test_logger_level_errors_are_one_clear_line(node_process, ros_domain):
         (("/plain", "warn"), "does not serve /plain/set_logger_levels"),
         (("/nobody", "--timeout", "1"), "unknown node '/nobody'"),
     ):
-        proc = NodeProcess(str(BIN / "rostool"), "log", "level", *args)
+        proc = NodeProcess(str(BIN / "rqt_logger_level"), *args)
         assert proc.wait() == 1
         assert len(proc.lines) == 1 and message in proc.lines[0], proc.output
-    bad = NodeProcess(str(BIN / "rostool"), "log", "level", "/plain", "loud")
+    bad = NodeProcess(str(BIN / "rqt_logger_level"), "/plain", "loud")
     assert bad.wait() == 2 and "invalid choice: 'loud'" in bad.output
 
 

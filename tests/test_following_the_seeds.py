@@ -11,8 +11,8 @@ import pytest
 from helpers import finished, script
 
 from launcher import packages
-from rostool.errors import ToolError
-from rostool.run import translate_arguments
+from ros2cmd.errors import ToolError
+from ros2cmd.run import translate_arguments
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -91,9 +91,9 @@ def test_the_seeds_package_names_find_this_projects_executables():
     with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
         packages.command("beginner_tutorials", "nope")
     # ROS 1's `rosrun rqt_graph rqt_graph`: a tool of this project, named twice.
-    assert packages.command("rostool", "rostool")[2] == "rostool.cli"
-    with pytest.raises(packages.UnknownExecutable, match="unknown package 'rostool'"):
-        packages.command("rostool", "rosrun")
+    assert packages.command("ros2", "ros2")[2] == "ros2cmd.cli"
+    with pytest.raises(packages.UnknownExecutable, match="unknown package 'ros2'"):
+        packages.command("ros2", "rosrun")
 
 
 # -- rosrun, roslaunch, roscore as processes ---------------------------------------------------
@@ -114,7 +114,7 @@ def test_rosrun_unknown_names_say_the_candidates_in_one_line():
     assert result.returncode == 1 and "ROS 2 has no master" in result.stderr
     assert "Traceback" not in result.stderr
     assert finished("rosrun", "-h").returncode == 0
-    assert finished("rostool", "run", "nope", "x").returncode == 1
+    assert finished("ros2", "run", "nope", "x").returncode == 1
 
 
 def test_rosrun_of_a_ros1_gui_tool_not_here_says_what_to_use_instead():
@@ -143,9 +143,9 @@ def test_rosrun_runs_the_seeds_talker_and_listener_with_ros1_arguments(node_proc
     assert listener.interrupt() == 0
 
 
-def test_rosrun_private_parameter_and_rostool_run(node_process):
+def test_rosrun_private_parameter_and_ros2cli_run(node_process):
     talker = node_process(
-        script("rostool"), "run", "my_package", "dynamics_talker.py", "_talker_str:=Goodbye"
+        script("ros2"), "run", "my_package", "dynamics_talker.py", "_talker_str:=Goodbye"
     )
     talker.wait_for_text("[dynamics_talker]: Goodbye", 2)
     assert talker.interrupt() == 0
@@ -163,7 +163,7 @@ def test_roslaunch_is_the_launcher_and_finds_the_seeds_launch_files():
     )
 
 
-@pytest.mark.parametrize("command", [("roscore",), ("rostool", "core")])
+@pytest.mark.parametrize("command", [("roscore",)])
 def test_roscore_explains_discovery_and_waits_for_ctrl_c(node_process, command):
     core = node_process(script(command[0]), *command[1:])
     lines = core.wait_for_output(

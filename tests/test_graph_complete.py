@@ -82,7 +82,7 @@ def test_topic_list_is_complete_in_every_run(union_launch):
     )
 
 
-@pytest.mark.parametrize("command", [["rosnode", "list"], ["rostool", "node", "list"]])
+@pytest.mark.parametrize("command", [["rosnode", "list"], ["ros2", "node", "list"]])
 def test_node_list_command_is_complete(union_launch, command):
     for output in _runs(*command, runs=3):
         assert set(output.split()) >= set(UNION_NODES), output

@@ -1,4 +1,4 @@
-"""rqt_graph / `rostool graph`: the book's union.launch pictures, and a layout that stays readable.
+"""rqt_graph / `ros2 graph`: the book's union.launch pictures, and a layout that stays readable.
 
 The layout is checked without ROS on a generated graph of 50 nodes and 100 topics: no two
 labels overlap, every label fits its shape, namespace frames are disjoint or nested and their
@@ -8,6 +8,7 @@ with and without groups, gives exactly the book's edges.
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -17,15 +18,15 @@ from pathlib import Path
 import pytest
 from helpers import TIMEOUT, NodeProcess
 
-from rostool import graph_view
-from rostool.graph_view import (
+from ros2cmd import graph_view
+from ros2cmd.graph_view import (
     GROUP_LABEL,
     PAD_X,
     GraphModel,
     layout,
     monospace_measure,
 )
-from rostool.graph_view import example_model as generated_model
+from ros2cmd.graph_view import example_model as generated_model
 
 BIN = Path(sys.executable).parent
 
@@ -131,11 +132,15 @@ def test_union_launch_graph_has_exactly_the_books_edges(node_process, tmp_path, 
             what=f"{subscriber} receiving",
         )
     dot = subprocess.run(
-        [str(BIN / "rostool"), "graph"], capture_output=True, text=True, timeout=TIMEOUT
+        [str(BIN / "rqt_graph")],
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+        env={**os.environ, "DISPLAY": "", "WAYLAND_DISPLAY": ""},
     )
     assert dot.returncode == 0, dot.stderr
     assert dot_edges(dot.stdout) == BOOK_EDGES[launch_file]
-    assert "rosout" not in dot.stdout and "_rostool" not in dot.stdout
+    assert "rosout" not in dot.stdout and "_ros2cli" not in dot.stdout
     grouped = "cluster" in dot.stdout
     assert grouped == (launch_file == "union.launch")
     everything = subprocess.run(
@@ -156,7 +161,7 @@ def test_union_launch_graph_has_exactly_the_books_edges(node_process, tmp_path, 
     ],
 )
 def test_an_output_that_cannot_be_written_is_one_clear_line(ros_domain, output, message):
-    proc = NodeProcess(str(BIN / "rostool"), "graph", "-o", output)
+    proc = NodeProcess(str(BIN / "rqt_graph"), "-o", output)
     assert proc.wait() == 1
     assert proc.lines[-1].startswith("error: ") and message in proc.lines[-1], proc.output
     assert "Traceback" not in proc.output

@@ -11,7 +11,7 @@ import threading
 import pytest
 from helpers import TIMEOUT
 from test_hardening_launcher import BOMB
-from test_rostool import BIN, fails, ok, tool
+from test_ros2 import BIN, fails, ok, tool
 
 
 class TestAgainstOneParameterServer:
@@ -22,11 +22,11 @@ class TestAgainstOneParameterServer:
         assert "does not fit a ROS integer (int64)" in line
         assert ok("rosparam", "get", "/calculation_method").strip() == "1"  # nothing changed
 
-    def test_rostool_param_set_an_integer_beyond_int64_is_one_line(
+    def test_ros2cli_param_set_an_integer_beyond_int64_is_one_line(
         self, unchanged_parameter_lesson
     ):
         line = fails(
-            "rostool",
+            "ros2",
             "param",
             "set",
             "/service_server",
@@ -45,7 +45,7 @@ class TestAgainstOneParameterServer:
 def test_a_number_into_a_string_field_is_refused():
     line = fails("rostopic", "pub", "-1", "/chatter", "std_msgs/String", "{data: 5}")
     assert "data is a string, got 5 (int)" in line and "quote it" in line
-    line = fails("rostool", "topic", "pub", "/chatter", "std_msgs/msg/String", "{data: true}")
+    line = fails("ros2", "topic", "pub", "/chatter", "std_msgs/msg/String", "{data: true}")
     assert "data is a string" in line
 
 
@@ -60,14 +60,14 @@ def test_a_yaml_alias_bomb_on_the_command_line_is_refused():
     assert len(bomb) < 600
     line = fails("rostopic", "pub", "-1", "/chatter", "std_msgs/String", bomb)
     assert "once its aliases are expanded" in line
-    line = fails("rostool", "topic", "pub", "/chatter", "std_msgs/msg/String", BOMB)
+    line = fails("ros2", "topic", "pub", "/chatter", "std_msgs/msg/String", BOMB)
     assert "once its aliases are expanded" in line
 
 
 def test_rosparam_load_dev_zero_is_refused_within_the_size_limit():
     line = fails("rosparam", "load", "/dev/zero")
     assert line == "error: /dev/zero is larger than 1 MiB; refusing to read it"
-    line = fails("rostool", "param", "load", "/service_server", "/dev/zero")
+    line = fails("ros2", "param", "load", "/service_server", "/dev/zero")
     assert "larger than 1 MiB" in line
 
 

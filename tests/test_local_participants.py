@@ -17,13 +17,13 @@ from helpers import run, spin_until
 from rclpy.context import Context
 from rclpy.node import Node
 
-from ros_tutorials_common import dds
-from rostool.local_participants import (
+from ros2cmd.local_participants import (
     heard_from_all,
     local_participants,
     process_of,
     unexplained,
 )
+from ros_tutorials_common import dds
 
 
 def _prefix(pid: int, participant: int = 0) -> bytes:

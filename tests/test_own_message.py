@@ -97,7 +97,7 @@ def test_a_new_message_from_the_readme_builds_and_is_used_by_a_node(tmp_path, no
         definition
     )
     shown = run(
-        [str(BIN / "rostool"), "interface", "show", "ros_tutorials_interfaces/msg/Greeting"], env
+        [str(BIN / "ros2"), "interface", "show", "ros_tutorials_interfaces/msg/Greeting"], env
     )
     assert shown == definition
 

@@ -1,4 +1,4 @@
-"""Params files as ROS 2 reads them (`rostool param load`, `rosparam load`), against real nodes.
+"""Params files as ROS 2 reads them (`ros2 param load`, `rosparam load`), against real nodes.
 
 Two parameter-lesson servers run: /service_server and /ns/service_server. A params file gives
 a node every entry that matches its full name (``/ns/node`` or ``ns/node``, ``/**`` any node,
@@ -18,7 +18,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
-from test_rostool import _ready, fails, ok
+from test_ros2 import _ready, fails, ok
 
 SERVERS = ("/service_server", "/ns/service_server")
 
@@ -77,7 +77,7 @@ def params_file(tmp_path, name: str, entries: dict[str, int]) -> str:
 def test_a_wildcard_file_sets_any_node(two_servers, probe, tmp_path):
     anyone = params_file(tmp_path, "any.yaml", {"/**": 3})
     for node in SERVERS:
-        out = ok("rostool", "param", "load", node, anyone)
+        out = ok("ros2", "param", "load", node, anyone)
         assert out.strip() == "Set parameter calculation_method successful"
         assert probe.get(node) == 3
     # ROS 1's rosparam load needs nodes named in the file: '/**' alone names none.
@@ -86,19 +86,19 @@ def test_a_wildcard_file_sets_any_node(two_servers, probe, tmp_path):
 
 def test_a_namespaced_entry_is_for_that_node_only(two_servers, probe, tmp_path):
     only_ns = params_file(tmp_path, "ns.yaml", {"/ns/service_server": 4})
-    line = fails("rostool", "param", "load", "/service_server", only_ns)
+    line = fails("ros2", "param", "load", "/service_server", only_ns)
     assert line == f"error: {only_ns} has no entry that matches /service_server"
     assert probe.get("/service_server") == 1  # untouched: the entry is /ns's
-    ok("rostool", "param", "load", "/ns/service_server", only_ns)
+    ok("ros2", "param", "load", "/ns/service_server", only_ns)
     assert probe.get("/ns/service_server") == 4
 
     # Both forms of a full name (with and without the leading slash), after '/**': they win.
     mixed = params_file(
         tmp_path, "mixed.yaml", {"/**": 3, "ns/service_server": 2, "/service_server": 4}
     )
-    ok("rostool", "param", "load", "/ns/service_server", mixed)
+    ok("ros2", "param", "load", "/ns/service_server", mixed)
     assert probe.get("/ns/service_server") == 2
-    ok("rostool", "param", "load", "/service_server", mixed)
+    ok("ros2", "param", "load", "/service_server", mixed)
     assert probe.get("/service_server") == 4
 
     # rosparam load: every node the file names gets the entries that match it.
@@ -114,14 +114,14 @@ def test_an_entry_without_ros__parameters_is_refused_before_any_node_is_touched(
     _ready(node_process("-m", "ros_tutorials_parameter.server"))
     path = tmp_path / "flat.yaml"
     path.write_text("/**:\n  ros__parameters:\n    calculation_method: 3\n/ns/service_server: 4\n")
-    line = fails("rostool", "param", "load", "/service_server", str(path))
+    line = fails("ros2", "param", "load", "/service_server", str(path))
     assert "'/ns/service_server' has no 'ros__parameters:' mapping" in line
     assert probe.get("/service_server") == 1
 
 
 def test_describe_shows_the_declared_range(node_process):
     _ready(node_process("-m", "ros_tutorials_parameter.server", "--ros-args", "-r", "__ns:=/ns"))
-    out = ok("rostool", "param", "describe", "/ns/service_server", "calculation_method")
+    out = ok("ros2", "param", "describe", "/ns/service_server", "calculation_method")
     assert out.splitlines() == [
         "Parameter name: calculation_method",
         "  Type: integer",
@@ -131,7 +131,7 @@ def test_describe_shows_the_declared_range(node_process):
         "    Max value: 4",
         "    Step: 1",
     ]
-    line = fails("rostool", "param", "describe", "/ns/service_server", "nope")
+    line = fails("ros2", "param", "describe", "/ns/service_server", "nope")
     assert line == "error: node '/ns/service_server' has no parameter 'nope'"
 
 
@@ -152,5 +152,5 @@ def test_load_gives_a_node_what_it_takes_from_the_file_at_start(node_process, pr
     assert at_start == {"/service_server": 2, "/ns/service_server": 3}
     for node in SERVERS:
         probe.set(node, 1)
-        ok("rostool", "param", "load", node, str(path))
+        ok("ros2", "param", "load", node, str(path))
         assert probe.get(node) == at_start[node], node

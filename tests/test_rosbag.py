@@ -1,4 +1,4 @@
-"""rosbag / rostool bag: record real lesson nodes, read the bag independently, play it back.
+"""rosbag / ros2 bag: record real lesson nodes, read the bag independently, play it back.
 
 The topic lesson's publisher and the parameter lesson's talker run as processes; `rosbag
 record` (the installed console script) records them. The bag is read back with `rosbags`,
@@ -193,7 +193,7 @@ def test_info_reads_the_seed_fields(lesson_bag) -> None:
     assert "types:       ros_tutorials_interfaces/msg/MsgTutorial [RIHS01_" in text or (
         "std_msgs/msg/String [RIHS01_" in text
     )
-    result = run("rostool", "bag", "info", str(folder))
+    result = run("ros2", "bag", "info", str(folder))
     assert result.returncode == 0, result.stderr
     text = result.stdout
     assert f"Files:             {folder.name}_0.mcap" in text
@@ -269,7 +269,7 @@ def test_play_topics_remap_offset_and_rate(lesson_bag, context, executor) -> Non
     renamed = _Collector(node, String, "/chatter_again")
     original = _Collector(node, MsgTutorial, "/ros_tutorial_msg")
     player = rostool_play = NodeProcess(
-        str(BIN / "rostool"), "bag", "play", str(folder),
+        str(BIN / "ros2"), "bag", "play", str(folder),
         "--topics", "/chatter",
         "--remap", "/chatter:=/chatter_again",
         "--start-offset", "1",
@@ -343,7 +343,7 @@ def test_seed_004_steps_as_printed(ros_domain, tmp_path) -> None:
     def in_folder(*argv: str) -> NodeProcess:  # the command, run from tmp_path
         code = (
             f"import os, sys; os.chdir({str(tmp_path)!r}); sys.argv = {['rosbag', *argv]!r}; "
-            "from rostool.bag.cli import rosbag; sys.exit(rosbag())"
+            "from ros2cmd.bag.cli import rosbag; sys.exit(rosbag())"
         )
         return NodeProcess("-c", code)
 

@@ -1,4 +1,4 @@
-"""rosbag / rostool bag with files that are not what they should be, and ROS 2's own bags.
+"""rosbag / ros2 bag with files that are not what they should be, and ROS 2's own bags.
 
 Bags written by ROS 2's rosbag2 itself (tests/data/ros2_bags) open and play here; a type
 not installed here is a warning for its topic. Every bad input ends with one clear line and
@@ -30,9 +30,9 @@ from rclpy.serialization import serialize_message
 from rosbags.rosbag2 import Reader
 from std_msgs.msg import String
 
-from rostool.bag import definitions, storage
-from rostool.bag.storage import BagError, BagReader, BagWriter, TopicInfo
-from rostool.errors import ToolError
+from ros2cmd.bag import definitions, storage
+from ros2cmd.bag.storage import BagError, BagReader, BagWriter, TopicInfo
+from ros2cmd.errors import ToolError
 
 ROS2_BAGS = Path(__file__).parent / "data" / "ros2_bags"
 
@@ -88,7 +88,7 @@ def test_a_bag_written_by_ros2_plays_here(ros_domain, context, executor) -> None
         recorded = [
             m.data for _s, c, m in make_reader(stream).iter_messages() if c.topic == "/topic"
         ]
-    result = run("rostool", "bag", "info", str(bag))
+    result = run("ros2", "bag", "info", str(bag))
     assert result.returncode == 0, result.stderr
     assert "Topic: /topic | Type: std_msgs/msg/String | Count: 10 | Serialization Format: cdr" in (
         result.stdout
@@ -132,12 +132,12 @@ def test_missing_foreign_and_metadata_less_bags_are_refused(tmp_path, small_bag)
     bare = tmp_path / "bare"
     bare.mkdir()
     shutil.copy(small_bag / "small_0.mcap", bare)
-    error = fails("rostool", "bag", "info", str(bare))
+    error = fails("ros2", "bag", "info", str(bare))
     assert "has no metadata.yaml" in error and "small_0.mcap" in error  # names the way out
     # ... whose MCAP file alone still opens
-    assert run("rostool", "bag", "info", str(bare / "small_0.mcap")).returncode == 0
+    assert run("ros2", "bag", "info", str(bare / "small_0.mcap")).returncode == 0
     assert "not a bag folder" in fails("rosbag", "reindex", str(bare / "small_0.mcap"))
-    assert "does not exist" in fails("rostool", "bag", "reindex", str(tmp_path / "nothing"))
+    assert "does not exist" in fails("ros2", "bag", "reindex", str(tmp_path / "nothing"))
     foreign = tmp_path / "notes.mcap"
     foreign.write_text("these are not the bytes you are looking for\n" * 10)
     assert "is not an MCAP file" in fails("rosbag", "info", str(foreign))
@@ -185,7 +185,7 @@ def test_info_reads_the_summary_not_the_messages(tmp_path, small_bag) -> None:
         if data[index : index + 7] == b"/words ":  # the messages' text, in the chunk
             data[index : index + 7] = b"XXXXXXX"
     path.write_bytes(bytes(data))
-    result = run("rostool", "bag", "info", str(folder))
+    result = run("ros2", "bag", "info", str(folder))
     assert result.returncode == 0, result.stderr
     assert "Messages:          50" in result.stdout
     # Reading the messages does notice (the chunk's CRC): one clear line.
@@ -197,7 +197,7 @@ def test_an_existing_output_is_never_overwritten(ros_domain, tmp_path) -> None:
     existing.mkdir()
     (existing / "keep.txt").write_text("mine")
     assert "already exists" in fails("rosbag", "record", "/chatter", "-O", str(existing))
-    assert "already exists" in fails("rostool", "bag", "record", "/chatter", "-o", str(existing))
+    assert "already exists" in fails("ros2", "bag", "record", "/chatter", "-o", str(existing))
     assert [p.name for p in existing.iterdir()] == ["keep.txt"]
     with pytest.raises(BagError, match="already exists"):
         BagWriter(existing)
@@ -208,13 +208,13 @@ def test_an_existing_output_is_never_overwritten(ros_domain, tmp_path) -> None:
     [
         ("rosbag", "play", "BAG", "-r", "0"),
         ("rosbag", "play", "BAG", "--rate", "-2"),
-        ("rostool", "bag", "play", "BAG", "--rate", "abc"),
-        ("rostool", "bag", "play", "BAG", "--rate", "nan"),
+        ("ros2", "bag", "play", "BAG", "--rate", "abc"),
+        ("ros2", "bag", "play", "BAG", "--rate", "nan"),
         ("rosbag", "play", "BAG", "--start-offset", "-1"),
         ("rosbag", "record", "/chatter", "--duration", "0"),
         ("rosbag", "record", "/chatter", "--duration", "-5"),
         ("rosbag", "record", "/chatter", "--duration", "soon"),
-        ("rostool", "bag", "record", "/chatter", "--max-messages", "0"),
+        ("ros2", "bag", "record", "/chatter", "--max-messages", "0"),
     ],
 )
 def test_invalid_rates_and_durations_are_usage_errors(args, small_bag) -> None:
@@ -267,7 +267,7 @@ def test_a_full_disk_while_recording(ros_domain, tmp_path) -> None:
     disk.mkdir()
     out.mkdir()
     publisher = NodeProcess(
-        str(BIN / "rostool"), "topic", "pub", "/big", "std_msgs/msg/String",
+        str(BIN / "ros2"), "topic", "pub", "/big", "std_msgs/msg/String",
         "{data: " + "x" * 8000 + "}", "-r", "50",
     )  # fmt: skip
     try:

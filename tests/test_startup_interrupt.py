@@ -125,7 +125,7 @@ def test_other_programs_of_the_environment_keep_pythons_ctrl_c(ros_domain: int):
 def test_which_command_lines_are_this_projects():
     python = sys.executable
     assert ctrl_c.is_project_command([python, "-m", "launcher", "union.launch"])
-    assert ctrl_c.is_project_command([python, "-X", "dev", "-mrostool", "topic", "list"])
+    assert ctrl_c.is_project_command([python, "-X", "dev", "-mros2cmd", "topic", "list"])
     assert ctrl_c.is_project_command([python, str(ROOT / "ros_tutorials_topic" / "talker.py")])
     assert ctrl_c.is_project_command([python, str(BIN / "rostopic"), "list"])
     assert not ctrl_c.is_project_command([python, "-m", "pytest"])

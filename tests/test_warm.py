@@ -15,7 +15,7 @@ def test_project_commands_start_warm_and_others_cold(ros_domain):
     assert warm is not None and warm.ready(), "the warm-start server did not start"
     assert warm.eligible([str(BIN / "rostopic"), "list"], os.environ)
     assert warm.eligible(["-m", "ros_tutorials_topic.publisher"], os.environ)
-    assert warm.eligible(["-m", "rostool", "topic", "list"], {**os.environ, "DISPLAY": ""})
+    assert warm.eligible(["-m", "ros2cmd", "topic", "list"], {**os.environ, "DISPLAY": ""})
     assert not warm.eligible(["-m", "launcher", "union.launch"], os.environ)
     assert not warm.eligible([str(BIN / "roslaunch"), "union.launch"], os.environ)
     assert not warm.eligible([str(BIN / "cmake"), "--version"], os.environ)
@@ -29,7 +29,7 @@ def test_project_commands_start_warm_and_others_cold(ros_domain):
     [
         ["rostopic", "echo"],  # a usage error: argparse's message, exit 2
         ["rosmsg", "show", "std_msgs/String"],  # output, exit 0
-        ["rostool", "interface", "show", "no_such_pkg/msg/Nope"],  # one error line, exit 1
+        ["ros2", "interface", "show", "no_such_pkg/msg/Nope"],  # one error line, exit 1
     ],
 )
 def test_a_warm_command_prints_and_exits_as_a_cold_one(ros_domain, args):

@@ -41,11 +41,11 @@ from collections.abc import Mapping, Sequence
 PRELOAD = (
     "rclpy",
     "rclpy.action",
-    "rostool.cli",
-    "rostool.ros1",
-    "rostool.rospack",
-    "rostool.rqt",
-    "rostool.bag.cli",
+    "ros2cmd.cli",
+    "ros2cmd.ros1",
+    "ros2cmd.rospack",
+    "ros2cmd.rqt",
+    "ros2cmd.bag.cli",
     "ros_tutorials_topic",
     "ros_tutorials_service",
     "ros_tutorials_parameter",
@@ -260,7 +260,7 @@ class Starter:
 
     # Variables no module of this project reads when imported, only when it runs: a command
     # with other values of these still starts warm (pytest names each test; turtlesim, the
-    # GUI stand-ins and rostool log look for a display and the log folder at run time, and
+    # GUI stand-ins and ros2 log look for a display and the log folder at run time, and
     # SDL sets SDL_VIDEODRIVER in the test's own process when an in-process turtlesim draws).
     RUN_TIME_ONLY = (
         "PYTEST_CURRENT_TEST",

@@ -9,7 +9,7 @@ A lesson's main() reads::
 ros_tutorials_common/dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends
 the program with one clear line and exit status 1 instead of a traceback from rclpy.init.
 ``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
-steps at once for the tools (rostool, benchmarks), where rclpy.init is not the lesson.
+steps at once for the tools (ros2, benchmarks), where rclpy.init is not the lesson.
 
 ``ros_args`` also orders the two things a Ctrl-C does (``_CtrlCOnceRosIsDown``): rclpy's signal
 handler shuts ROS down in a thread of its own, and Python raises KeyboardInterrupt in the main

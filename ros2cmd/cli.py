@@ -1,0 +1,164 @@
+"""`ros2 VERB COMMAND ...`: the command line, and how every command runs and fails.
+
+The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
+in its own module (topic.py, service.py, ...) and registers its commands here; `ros2 launch`
+is the launcher's own command line (launcher/__main__.py). A command is a function of the
+graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
+a bad name prints one line and exits 1, Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the
+verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with a rate or latched), for which it
+is the normal end: 0 (see graph.until_stopped).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import signal
+import sys
+from collections.abc import Callable, Sequence
+
+import rclpy
+from rclpy.exceptions import NameValidationException
+from rclpy.executors import ExternalShutdownException
+
+from ros2cmd import action, interface, node, param, run, service, topic
+from ros2cmd.errors import ToolError
+from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
+from ros2cmd.wait import Interrupted
+from ros_tutorials_common import ctrl_c
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
+
+
+def common_options() -> argparse.ArgumentParser:
+    """Options every graph command takes (added to each command so they go after it)."""
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument(
+        "--timeout",
+        type=positive_seconds,
+        default=DEFAULT_TIMEOUT,
+        help=f"seconds to wait for what the command names to appear (default {DEFAULT_TIMEOUT:g})",
+    )
+    common.add_argument(
+        "--spin-time",
+        type=positive_seconds,
+        help="seconds a list waits for discovery (default: until every participant's "
+        "announced nodes and endpoints are seen, "
+        f"at most {MAX_SETTLE_TIME:g})",
+    )
+    return common
+
+
+# `ros2 launch` is the launcher: its own parser, options and process (see main()).
+LAUNCH_HELP = "Run a launch file"
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="ros2",
+        description="ros2 is an extensible command-line tool for ROS 2.",
+        epilog="Call `ros2 <command> -h` for more detailed usage.",
+    )
+    verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
+    common = common_options()
+    from ros2cmd.bag.cli import register as register_bag  # it uses this module: import late
+
+    verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
+    for register in (
+        action.register,
+        register_bag,
+        interface.register,
+        node.register,
+        param.register,
+        run.register,
+        service.register,
+        topic.register,
+    ):
+        register(verbs, common)
+    verbs._choices_actions.sort(key=lambda choice: choice.dest)  # ros2cli lists them a-z
+    return parser
+
+
+def execute(
+    command: Callable[[Graph | None], None],
+    offline: bool = False,
+    timeout: float = DEFAULT_TIMEOUT,
+    spin_time: float | None = None,
+) -> int:
+    """Run one command with a graph node (unless offline); map failures to exit codes.
+
+    Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
+    DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
+    SIGINT (a shell shows 130) after the command had printed its answer.
+    """
+    try:
+        return _execute(command, offline, timeout, spin_time)
+    except KeyboardInterrupt:  # while an error line was being printed
+        return EXIT_INTERRUPTED
+
+
+def _execute(
+    command: Callable[[Graph | None], None],
+    offline: bool,
+    timeout: float,
+    spin_time: float | None,
+) -> int:
+    graph = None
+    status = None  # the exit status, once decided
+    try:
+        if not offline:
+            graph = Graph(timeout, spin_time)
+        command(graph)
+        status = 0
+    except ToolError as error:
+        print(f"error: {error}", file=sys.stderr)
+        status = 1
+    except NameValidationException as error:
+        print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
+        status = 1
+    except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
+        status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
+    except BrokenPipeError:
+        # `ros2 topic echo /t | head`: the reader left; leave quietly too.
+        stdout_closed()
+        status = 0
+    except Exception as error:
+        if ctrl_c.interrupted(error) and rclpy.ok():
+            # An error a Ctrl-C caused on its way up (the KeyboardInterrupt in its context:
+            # rclpy code cleaning up after it raised anew): the Ctrl-C it is.
+            status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
+        elif rclpy.ok():
+            raise
+        else:
+            # SIGTERM: rclpy's handler shut ROS down while the command was creating its node,
+            # a subscription or a timer, which then fails (RCLError "context is not valid").
+            status = EXIT_INTERRUPTED
+    finally:
+        if status is not None:
+            # Decided: from here on a Ctrl-C (the user answering the printed line while the
+            # node closes and Python shuts down, however late the process gets the CPU back)
+            # does not turn a command that did its job into "interrupted". (Not when an
+            # exception goes on up, such as argparse's exit: the caller's Ctrl-C stays.)
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+        if graph is not None:
+            with contextlib.suppress(KeyboardInterrupt):  # only if nothing was decided
+                graph.close()
+    return status
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    words = list(sys.argv[1:] if argv is None else argv)
+    if words[:1] == ["launch"]:
+        from launcher.__main__ import main as launch
+
+        return launch(words[1:], program="ros2 launch", standalone=argv is None)
+    return run_parsed(build_parser().parse_args(words))
+
+
+def run_parsed(args: argparse.Namespace) -> int:
+    """Run the command a parser chose (ros2's, or a ROS 1 tool's in ros1.py)."""
+    return execute(
+        lambda graph: args.run(graph, args),
+        offline=getattr(args, "offline", False),
+        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
+        spin_time=getattr(args, "spin_time", None),
+    )

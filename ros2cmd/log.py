@@ -1,0 +1,113 @@
+"""`ros2 log level` (and `rqt_logger_level`), `ros2 log folder` (and `roslaunch-logs`).
+
+A running node's logger level is shown and changed through ROS 2 Jazzy's logger services,
+``<node>/get_logger_levels`` and ``<node>/set_logger_levels`` (rcl_interfaces), which a node
+serves when created with ``Node(..., enable_logger_service=True)``; every node of this
+project is. The node's logger is named after it: ``/ns1/topic_publisher`` logs as
+``ns1.topic_publisher``.
+
+    ros2 log level                              every node that serves them, and its level
+    ros2 log level /ns1/topic_publisher         one node's level
+    ros2 log level /ns1/topic_publisher debug   change it; the node logs DEBUG lines now
+    ros2 log folder                             the latest launch's log folder
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+from pathlib import Path
+
+from rcl_interfaces.msg import LoggerLevel
+from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
+
+from ros2cmd.console import LEVELS, logger_name
+from ros2cmd.errors import ToolError
+from ros2cmd.graph import Graph
+
+LEVEL_NAMES = {LoggerLevel.LOG_LEVEL_UNKNOWN: "UNSET", **{v: k.upper() for k, v in LEVELS.items()}}
+GET, SET = "get_logger_levels", "set_logger_levels"
+
+
+def _service(graph: Graph, node: str, which: str) -> str:
+    """The node's logger service, or a clear error if the node does not serve it."""
+    full_name = graph.wait_for_node(node)
+    name = f"{full_name}/{which}"
+    graph.settle()
+    if name not in graph.service_types():
+        raise ToolError(
+            f"node '{full_name}' does not serve {name}: it was created without "
+            "enable_logger_service=True, so its logger level cannot be changed from outside"
+        )
+    return name
+
+
+def get_level(graph: Graph, node: str) -> str:
+    """The node's logger level: DEBUG, INFO, ..., or UNSET (then its default, INFO, applies)."""
+    client = graph.node.create_client(GetLoggerLevels, _service(graph, node, GET))
+    request = GetLoggerLevels.Request(names=[logger_name(node)])
+    response = graph.call(client, request, f"cannot get the logger level of '{node}'")
+    level = response.levels[0].level if response.levels else LoggerLevel.LOG_LEVEL_UNKNOWN
+    return LEVEL_NAMES.get(level, str(level))
+
+
+def set_level(graph: Graph, node: str, level: str) -> None:
+    client = graph.node.create_client(SetLoggerLevels, _service(graph, node, SET))
+    request = SetLoggerLevels.Request(
+        levels=[LoggerLevel(name=logger_name(node), level=LEVELS[level])]
+    )
+    response = graph.call(client, request, f"cannot set the logger level of '{node}'")
+    result = response.results[0] if response.results else None
+    if result is None or not result.successful:
+        reason = result.reason if result is not None else "no answer for the logger"
+        raise ToolError(f"'{node}' refused logger level {level.upper()}: {reason}")
+
+
+def level_command(graph: Graph, node: str | None, level: str | None) -> None:
+    if node is None:
+        graph.settle()
+        services = graph.service_types()
+        for full_name in graph.node_names():
+            if f"{full_name}/{GET}" in services:
+                print(f"{full_name}: {_described(get_level(graph, full_name))}")
+        return
+    if level is not None:
+        set_level(graph, node, level)
+    full_name = "/" + node.strip("/")
+    print(f"{full_name}: {_described(get_level(graph, full_name))}")
+
+
+def _described(level: str) -> str:
+    if level == "UNSET":
+        return "UNSET (the default applies: INFO, unless started with --log-level)"
+    return level
+
+
+def latest_launch_folder(base: Path | None = None) -> Path:
+    """The newest `launch_<date>_<pid>` folder the launcher made (see launcher/supervise.py)."""
+    if base is None:
+        base = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
+    try:
+        folders = [p for p in base.iterdir() if p.is_dir() and p.name.startswith("launch_")]
+    except OSError:
+        folders = []
+    if not folders:
+        raise ToolError(f"no launch logs in {base} (the launcher writes launch_<date>_<pid> there)")
+    return max(folders, key=lambda p: (p.stat().st_mtime, p.name))
+
+
+def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    parser = verbs.add_parser("log", help="logs: a node's logger level, the launch log folder")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    p = sub.add_parser("level", parents=[common], help="show or change a node's logger level")
+    add_level_arguments(p)
+    p.set_defaults(run=lambda graph, a: level_command(graph, a.node, a.level))
+
+    p = sub.add_parser("folder", help="print the latest launch's log folder (roslaunch-logs)")
+    p.set_defaults(run=lambda graph, a: print(latest_launch_folder()), offline=True)
+
+
+def add_level_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("node", nargs="?", help="e.g. /ns1/topic_publisher (default: all nodes)")
+    parser.add_argument("level", nargs="?", type=str.lower, choices=list(LEVELS))

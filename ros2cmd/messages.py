@@ -1,0 +1,206 @@
+"""Messages to and from the YAML a user types, e.g. ``'{a: 10, b: 5}'``.
+
+Filling a message walks its fields with the type information every generated class
+carries (``get_fields_and_field_types()`` and ``SLOT_TYPES``), so a wrong field name or a
+value out of range for the field gets a clear one-line error before anything is sent.
+The ROS 1 tools also give values by position (``rosservice call /srv 10 5``): a list of
+values fills the fields in order. Printing turns a message into plain data and dumps it
+as YAML, the way ``ros2 topic echo`` shows messages.
+"""
+
+from __future__ import annotations
+
+import array
+import contextlib
+import importlib
+import math
+import re
+from typing import Any
+
+import yaml
+from rclpy.clock import Clock
+from rosidl_parser.definition import (
+    AbstractGenericString,
+    AbstractNestedType,
+    Array,
+    BasicType,
+    BoundedSequence,
+    NamespacedType,
+)
+
+from ros2cmd.errors import ToolError
+from ros2cmd.typenames import full_type_name
+from ros_tutorials_common.bounded import InputError, load_yaml
+
+# Value ranges of the integer types, by their IDL names as SLOT_TYPES spells them.
+INTEGER_RANGES: dict[str, tuple[int, int]] = {}
+for _bits in (8, 16, 32, 64):
+    INTEGER_RANGES[f"int{_bits}"] = (-(2 ** (_bits - 1)), 2 ** (_bits - 1) - 1)
+    INTEGER_RANGES[f"uint{_bits}"] = (0, 2**_bits - 1)
+for _alias, _name in {
+    "short": "int16",
+    "long": "int32",
+    "long long": "int64",
+    "unsigned short": "uint16",
+    "unsigned long": "uint32",
+    "unsigned long long": "uint64",
+    "octet": "uint8",  # .msg `byte`
+    "char": "uint8",  # .msg `char`
+    "wchar": "uint16",
+}.items():
+    INTEGER_RANGES[_alias] = INTEGER_RANGES[_name]
+FLOAT32_MAX = 3.4028234663852886e38
+
+
+# `linear: x: 0.2`: block YAML (`linear:` newline `  x: 0.2`) whose line breaks were lost, as
+# seed 004 prints its rostopic pub examples. Not YAML; read as {linear: {x: 0.2}}.
+_FLATTENED_BLOCK = re.compile(r"\s*(?:[A-Za-z_]\w*\s*:\s+){2,}[^:{}\[\],]+")
+
+
+def parse_yaml(text: str) -> Any:
+    """Parse the YAML a user typed; a syntax error becomes one line saying where."""
+    try:
+        return load_yaml(text, "the YAML")  # bounded: no alias bomb, at most 1 MiB
+    except InputError as error:
+        raise ToolError(str(error)) from None
+    except yaml.YAMLError as error:
+        if _FLATTENED_BLOCK.fullmatch(text):
+            *keys, value = (part.strip() for part in text.split(":"))
+            return parse_yaml("".join(f"{{{key}: " for key in keys) + value + "}" * len(keys))
+        mark = getattr(error, "problem_mark", None)
+        where = f" at column {mark.column + 1}" if mark else ""
+        problem = getattr(error, "problem", None) or str(error).splitlines()[0]
+        raise ToolError(f"invalid YAML {text!r}{where}: {problem}") from None
+
+
+def fill_message(msg: Any, values: Any, path: str = "") -> Any:
+    """Set msg's fields from a dict (by name) or a list (in order); return msg."""
+    fields = list(msg.get_fields_and_field_types())
+    slot_types = dict(zip(fields, msg.SLOT_TYPES, strict=True))
+    where = f"{path} ({full_type_name(type(msg))})" if path else full_type_name(type(msg))
+    if values is None:
+        return msg
+    if isinstance(values, list):
+        if len(values) != len(fields):
+            raise ToolError(
+                f"{where} takes {len(fields)} value(s) ({' '.join(fields) or 'none'}), "
+                f"got {len(values)}"
+            )
+        values = dict(zip(fields, values, strict=True))
+    if not isinstance(values, dict):
+        if len(fields) != 1:
+            raise ToolError(f"{where} needs a mapping of its fields ({', '.join(fields)})")
+        values = {fields[0]: values}  # `rostopic pub /t std_msgs/String hello`
+    for name, value in values.items():
+        if name not in slot_types:
+            raise ToolError(
+                f"'{name}' is not a field of {where} (fields: {', '.join(fields) or 'none'})"
+            )
+        field_path = f"{path}.{name}" if path else name
+        current = getattr(msg, name)
+        setattr(msg, name, _convert(value, slot_types[name], current, field_path))
+    return msg
+
+
+def _convert(value: Any, slot_type: Any, current: Any, path: str) -> Any:
+    if isinstance(slot_type, NamespacedType):
+        if _is_time(slot_type) and value == "now":
+            return Clock().now().to_msg()
+        return fill_message(current, value, path)
+    if isinstance(slot_type, AbstractNestedType):  # arrays and sequences
+        if not isinstance(value, list):
+            raise ToolError(f"{path} is a list; give it as [...], got {value!r}")
+        if isinstance(slot_type, Array) and len(value) != slot_type.size:
+            raise ToolError(f"{path} takes exactly {slot_type.size} items, got {len(value)}")
+        if isinstance(slot_type, BoundedSequence) and len(value) > slot_type.maximum_size:
+            raise ToolError(
+                f"{path} takes at most {slot_type.maximum_size} items, got {len(value)}"
+            )
+        item_type = slot_type.value_type
+        items = []
+        for i, item in enumerate(value):
+            template = None
+            if isinstance(item_type, NamespacedType):
+                template = _message_class(item_type)()
+            items.append(_convert(item, item_type, template, f"{path}[{i}]"))
+        return items
+    if isinstance(slot_type, AbstractGenericString):
+        if not isinstance(value, str):  # YAML read `5` as a number, `true` as a boolean
+            raise ToolError(
+                f"{path} is a string, got {value!r} ({type(value).__name__}); "
+                f"quote it to send text: '{{{path.rsplit('.', 1)[-1]}: \"{value}\"}}'"
+            )
+        text = value
+        maximum = getattr(slot_type, "maximum_size", None)
+        if maximum is not None and len(text) > maximum:
+            raise ToolError(f"{path} takes at most {maximum} characters, got {len(text)}")
+        return text
+    if isinstance(slot_type, BasicType):
+        return _convert_basic(value, slot_type.typename, path)
+    raise ToolError(f"{path}: unsupported field type {slot_type!r}")
+
+
+def _convert_basic(value: Any, typename: str, path: str) -> Any:
+    if typename == "boolean":
+        if not isinstance(value, bool):
+            raise ToolError(f"{path} is a boolean (true or false), got {value!r}")
+        return value
+    if typename in ("float", "double", "long double"):
+        if isinstance(value, str):
+            # YAML 1.1 reads `1e40` and `1e-3` (no dot, or no sign in the exponent) as text;
+            # ROS 1's rostopic took them as numbers, as Python's float() does.
+            with contextlib.suppress(ValueError):
+                value = float(value)
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ToolError(f"{path} is a number ({typename}), got {value!r}")
+        value = float(value)
+        if typename == "float" and math.isfinite(value) and abs(value) > FLOAT32_MAX:
+            raise ToolError(f"{path} = {value!r} is out of range for float32")
+        return value
+    low, high = INTEGER_RANGES[typename]
+    if typename in ("char", "octet") and isinstance(value, str) and len(value) == 1:
+        value = ord(value)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ToolError(f"{path} is an integer ({_ros_int_name(typename)}), got {value!r}")
+    if not low <= value <= high:
+        raise ToolError(
+            f"{path} = {value} is out of range for {_ros_int_name(typename)} ({low} to {high})"
+        )
+    return bytes([value]) if typename == "octet" else value
+
+
+def _ros_int_name(typename: str) -> str:
+    return {"octet": "byte", "char": "char"}.get(typename, typename)
+
+
+def _is_time(slot_type: NamespacedType) -> bool:
+    return tuple(slot_type.namespaces) == ("builtin_interfaces", "msg") and slot_type.name == "Time"
+
+
+def _message_class(slot_type: NamespacedType) -> type:
+    module = importlib.import_module(".".join(slot_type.namespaces))
+    return getattr(module, slot_type.name)
+
+
+def message_to_data(msg: Any) -> Any:
+    """A message as plain dicts, lists and scalars, fields in definition order."""
+    if hasattr(msg, "get_fields_and_field_types"):
+        return {
+            name: message_to_data(getattr(msg, name)) for name in msg.get_fields_and_field_types()
+        }
+    if isinstance(msg, (list, tuple, array.array)) or type(msg).__name__ == "ndarray":
+        return [message_to_data(item) for item in msg]
+    if isinstance(msg, bytes):
+        return list(msg) if len(msg) != 1 else msg[0]
+    if hasattr(msg, "item"):  # numpy scalars from fixed-size arrays
+        return msg.item()
+    return msg
+
+
+def message_to_yaml(msg: Any) -> str:
+    """A message as ``ros2 topic echo`` prints it (block-style YAML, definition order)."""
+    data = message_to_data(msg)
+    if not data:
+        return "{}"
+    text = yaml.safe_dump(data, default_flow_style=False, sort_keys=False, allow_unicode=True)
+    return text.rstrip()

@@ -1,0 +1,69 @@
+"""The ROS 1 GUI tools the seeds use, in their spellings: rqt_graph, rqt_console,
+rqt_logger_level, and roslaunch-logs. Each runs the same code as its `ros2` verb.
+
+    rqt_graph                   a window where there is a display, else DOT on stdout
+    rqt_console                 ros2 console
+    rqt_logger_level [NODE [LEVEL]]   ros2 log level
+    roslaunch-logs              ros2 log folder
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections.abc import Sequence
+
+from ros2cmd import console, graph_view, log
+from ros2cmd.cli import common_options, execute
+from ros2cmd.graph import DEFAULT_TIMEOUT, Graph
+
+
+def _parser(prog: str, description: str) -> argparse.ArgumentParser:
+    return argparse.ArgumentParser(prog=prog, description=description, parents=[common_options()])
+
+
+def _execute(args: argparse.Namespace, run, offline: bool = False) -> int:
+    return execute(
+        lambda graph: run(graph, args),
+        offline=offline,
+        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
+        spin_time=getattr(args, "spin_time", None),
+    )
+
+
+def rqt_graph(argv: Sequence[str] | None = None) -> int:
+    parser = _parser("rqt_graph", "The running graph: a window, or DOT/SVG/PNG (ros2 graph)")
+    graph_view.add_arguments(parser)
+    args = parser.parse_args(argv)
+    if not args.output and not args.window:
+        if os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
+            args.window = True
+        else:
+            print("no display: printing DOT (-o graph.svg writes a picture)", file=sys.stderr)
+    return _execute(args, graph_view.run)
+
+
+def rqt_console(argv: Sequence[str] | None = None) -> int:
+    parser = _parser("rqt_console", "The live /rosout log lines (ros2 console)")
+    console.add_arguments(parser)
+    return _execute(parser.parse_args(argv), console.run)
+
+
+def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
+    parser = _parser("rqt_logger_level", "Show or change node logger levels (ros2 log level)")
+    log.add_level_arguments(parser)
+    args = parser.parse_args(argv)
+    return _execute(args, lambda graph, a: log.level_command(graph, a.node, a.level))
+
+
+def roslaunch_logs(argv: Sequence[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="roslaunch-logs", description="Print the folder of the latest launch's logs"
+    )
+    args = parser.parse_args(argv)
+
+    def run(_graph: Graph | None, _args: argparse.Namespace) -> None:
+        print(log.latest_launch_folder())
+
+    return _execute(args, run, offline=True)

@@ -1,0 +1,186 @@
+"""`rosrun PKG EXECUTABLE [ARGS]` (and `ros2 run ...`): start one executable of this project.
+
+    rosrun ros_tutorials_topic topic_publisher
+    rosrun beginner_tutorials talker __name:=my_talker chatter:=other
+    rosrun ros_tutorials_parameter dynamics_talker _talker_str:=Goodbye
+
+PKG and EXECUTABLE are the seeds' names, looked up in the launcher's package table
+(launcher/packages.py, the one place that turns them into a command line). The process is
+replaced by the executable (as ROS 1's rosrun does with `exec`), so its output, Ctrl-C and
+exit status are the executable's own.
+
+The ROS 1 argument forms the seeds use are translated to ROS 2's:
+
+    __name:=NAME    ->  --ros-args -r __node:=NAME
+    __ns:=/NS       ->  --ros-args -r __ns:=/NS   (a relative NS gets its leading '/')
+    from:=to        ->  --ros-args -r from:=to
+    _param:=value   ->  --ros-args -p param:=value   (a private parameter; '/' becomes '.')
+
+Arguments after `--ros-args` (up to `--`) are ROS 2 arguments already and pass unchanged, as
+do the program's own arguments (`rosrun ros_tutorials_service service_client 2 3`).
+A name that ROS cannot take (`__name:=pub-1`) is refused in one line, before the node starts.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import sys
+from collections.abc import Sequence
+
+from launcher import packages
+from ros2cmd.errors import ToolError
+from ros_tutorials_common import ctrl_c, names
+from ros_tutorials_common.cli import quiet_on_closed_pipe
+
+USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
+# ROS 1 special keys with no ROS 2 meaning, and what to do instead.
+NO_ROS2_MEANING = {
+    "__master": "ROS 2 has no master; nodes find each other by DDS discovery "
+    "(same ROS_DOMAIN_ID, see `roscore`)",
+    "__ip": "ROS 2 has no XML-RPC address; DDS picks the network interfaces",
+    "__hostname": "ROS 2 has no XML-RPC address; DDS picks the network interfaces",
+    "__log": "ROS 2 names its log files itself; set ROS_LOG_DIR for the folder",
+}
+
+
+_TOKEN, _RULE = names.TOKEN, names.RULE  # a part of a ROS name, as ROS 1 and ROS 2 allow it
+
+
+def _check(arg: str, value: str, what: str, pattern: str, parts: str = "") -> str:
+    """value if it matches; else ToolError naming the argument, the bad name and the rule
+    (so that rcl never prints its own "Couldn't parse remap rule ... lexeme")."""
+    if not re.fullmatch(pattern, value):
+        shown = f"'{value}'" if value else "an empty name"
+        raise ToolError(f"{arg}: {shown} is not a valid {what} ({parts}{_RULE})")
+    return value
+
+
+def ros1_argument(arg: str) -> list[str] | None:
+    """The ROS 2 rule for one ROS 1 `name:=value` argument; None if it is not one.
+
+    The names are checked here: a bad one is one line (ToolError) before the node starts.
+    """
+    name, colon_equals, value = arg.partition(":=")
+    if not colon_equals or not name or "=" in name or name.startswith("-"):
+        return None  # not a ROS 1 argument: the program's own
+    if name == "__name":
+        return ["-r", f"__node:={_check(arg, value, 'node name', _TOKEN)}"]
+    if name == "__ns":
+        # ROS 1 took a relative namespace (`__ns:=r1`) as global; ROS 2 wants the '/'.
+        namespace = "/" + value.strip("/")
+        parts = "names separated by '/', each of "
+        _check(arg, namespace, "namespace", f"/|(/{_TOKEN})+", parts)
+        return ["-r", f"__ns:={namespace}"]
+    if name in NO_ROS2_MEANING:
+        raise ToolError(f"{arg}: {NO_ROS2_MEANING[name]}")
+    if name.startswith("__"):
+        raise ToolError(f"{arg}: unknown special argument (ROS 1 knew __name, __ns, __log, ...)")
+    if name.startswith("_"):
+        param = name[1:].replace("/", ".")
+        parts = "parts separated by '.', each of "
+        _check(arg, param, "parameter name", rf"{_TOKEN}(\.{_TOKEN})*", parts)
+        return ["-p", f"{param}:={value}"]
+    # ROS 1's private `~name` is ROS 2's `~/name`.
+    source, target = (re.sub(r"^~(?=[^/])", "~/", side) for side in (name, value))
+    for side, which in ((source, "from"), (target, "to")):
+        if not names.valid_remap_name(side, which):  # the launcher's check, rcl's rules
+            shown = f"'{side}'" if side else "an empty name"
+            raise ToolError(
+                f"{arg}: {shown} is not a valid topic or service name "
+                f"(parts separated by '/', each of {_RULE})"
+            )
+    return ["-r", f"{source}:={target}"]
+
+
+def translate_arguments(args: Sequence[str]) -> list[str]:
+    """The program's arguments with the ROS 1 forms turned into one `--ros-args` block."""
+    out: list[str] = []
+    rules: list[str] = []
+    in_ros_args = False
+    for arg in args:
+        if in_ros_args:
+            out.append(arg)
+            in_ros_args = arg != "--"
+        elif arg == "--ros-args":
+            out.append(arg)
+            in_ros_args = True
+        else:
+            rule = ros1_argument(arg)
+            if rule is None:
+                out.append(arg)
+            else:
+                rules += rule
+    if rules:
+        # Inside an open --ros-args block the rules can simply follow.
+        out += rules if in_ros_args else ["--ros-args", *rules]
+    return out
+
+
+def command_line(package: str, executable: str, args: Sequence[str]) -> list[str]:
+    """The full command line rosrun runs; ToolError if the names or arguments are wrong."""
+    try:
+        command = packages.command(package, executable)
+    except packages.UnknownExecutable as error:
+        raise ToolError(str(error)) from None
+    return [*command, *translate_arguments(args)]
+
+
+def run(package: str, executable: str, args: Sequence[str]) -> None:
+    """Replace this process by the executable (returns only by raising ToolError)."""
+    command = command_line(package, executable, args)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    held = ctrl_c.starts_project_command(command)
+    if held:  # until the executable can end quietly on Ctrl-C (see ctrl_c.py)
+        ctrl_c.block_sigint()
+    try:
+        os.execv(command[0], command)
+    except OSError as error:
+        if held:
+            ctrl_c.unblock_sigint()
+        raise ToolError(f"cannot run {command[0]}: {error.strerror}") from None
+
+
+@quiet_on_closed_pipe
+def rosrun(argv: Sequence[str] | None = None) -> int:
+    """The `rosrun` command (console script)."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] in (["-h"], ["--help"]):
+        print(USAGE)
+        print(__doc__.split("\n", 2)[2].strip("\n"))
+        return 0
+    try:
+        if not argv:
+            raise ToolError(f"{USAGE}; packages: {packages.known_package_names()}")
+        if len(argv) == 1:
+            known = packages.resolve_package(argv[0])
+            names = sorted({name for pkg in known for name in packages.executables(pkg)})
+            if not names:
+                # ROS 1's tools are packages of one executable: `rosrun rqt_graph rqt_graph`.
+                # command() raises the one-line error for a tool that is not here.
+                packages.command(argv[0], argv[0])
+                names = [argv[0]]
+            raise ToolError(f"{USAGE}; {argv[0]} has: {', '.join(names)}")
+        run(argv[0], argv[1], argv[2:])
+    except (ToolError, packages.UnknownExecutable) as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    return 0  # not reached: run() replaces this process
+
+
+def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    """`ros2 run PKG EXECUTABLE [ARGS ...]`."""
+    parser = verbs.add_parser(
+        "run",
+        help="run an executable of this project (like ros2 run / rosrun)",
+        description="Run an executable of this project by package and executable name. "
+        "ROS 1 arguments (__name:=, __ns:=, from:=to, _param:=value) are translated.",
+    )
+    parser.add_argument("package", metavar="PKG")
+    parser.add_argument("executable", metavar="EXECUTABLE")
+    parser.add_argument("args", nargs=argparse.REMAINDER, metavar="ARGS")
+    parser.set_defaults(
+        offline=True, run=lambda _graph, args: run(args.package, args.executable, args.args)
+    )

@@ -1,5 +1,0 @@
-"""`python -m rostool ...` is the same as `rostool ...`."""
-
-from rostool.cli import main
-
-raise SystemExit(main())

@@ -1,5 +1,0 @@
-"""The one error type of rostool: a message for the user, printed as one line."""
-
-
-class ToolError(Exception):
-    """Something the user asked for cannot be done; str(error) says why, in one line."""
