@@ -22,7 +22,7 @@ import sys
 import traceback
 from pathlib import Path
 
-from launcher import LaunchError, guardian, packages
+from launcher import LaunchError, guardian, packages, parse
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
@@ -115,6 +115,9 @@ def find_launch_file(names: list[str]) -> Path:
         if elsewhere:  # seed 000 puts union.launch in the service package
             runs = "; ".join(f"{program()} {pkg} {name}" for pkg in elsewhere)
             raise LaunchError(f"{message}; {name} is in {', '.join(elsewhere)}: {runs}")
+        fmt = parse.NOT_YET.get(Path(name).suffix)
+        if fmt:  # `ros2 launch turtlesim multisim.launch.py`, as the ROS 2 tutorials type it
+            message += f" ({fmt} launch files are not supported yet)"
         raise LaunchError(f"{message}; it has: {have or 'none'}")
     if len(names) != 1:
         raise LaunchError(f"expected [PKG] FILE, got: {' '.join(names) or 'nothing'}")

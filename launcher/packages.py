@@ -71,6 +71,10 @@ class UnknownExecutable(LookupError):
     """No such package or executable; str() is one line naming the candidates."""
 
 
+class PackageNotFound(UnknownExecutable):
+    """command() was given a package name that names nothing runnable here."""
+
+
 class UnknownPackage(LookupError):
     """No package of that name in the ament index; str() is one line."""
 
@@ -203,7 +207,7 @@ def command(package: str, executable: str) -> list[str]:
             raise UnknownExecutable(
                 f"{package} is a GUI tool this project does not have; {MISSING_TOOLS[package]}"
             )
-        raise UnknownExecutable(
+        raise PackageNotFound(
             f"unknown package {package!r}; known packages: {known_package_names()}"
         )
     # The book's ROS 1 files sometimes name scripts with their suffix (type="talker.py").

@@ -35,8 +35,17 @@ class Element:
         return LaunchError(f"{self.where}: {message}")
 
 
+# The other two formats of ros2 launch, by file suffix (launch_ros reads .py and .yaml too).
+NOT_YET = {".py": "Python", ".yaml": "YAML", ".yml": "YAML"}
+
+
 def parse_file(path: Path) -> Element:
     """Parse one launch file; malformed XML raises LaunchError with file:line:column."""
+    if path.suffix in NOT_YET:
+        raise LaunchError(
+            f"{path}: {NOT_YET[path.suffix]} launch files are not supported yet; "
+            "this launcher runs XML launch files (ROS 1 .launch and ROS 2 .launch.xml)"
+        )
     try:
         data = read_bytes(path)  # at most 1 MiB
     except InputError as error:

@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import shlex
 import sys
 from collections.abc import Sequence
 
@@ -127,16 +128,33 @@ def command_line(package: str, executable: str, args: Sequence[str]) -> list[str
     return [*command, *translate_arguments(args)]
 
 
-def run(package: str, executable: str, args: Sequence[str]) -> None:
-    """Replace this process by the executable (returns only by raising ToolError)."""
+def ros2_command_line(package: str, executable: str, args: Sequence[str]) -> list[str]:
+    """command_line(), with ros2run's wording when a name is unknown."""
+    try:
+        packages.command(package, executable)
+    except packages.PackageNotFound as error:
+        raise ToolError(f"Package '{package}' not found ({error})") from None
+    except packages.UnknownExecutable as error:
+        raise ToolError(f"No executable found ({error})") from None
+    return command_line(package, executable, args)
+
+
+def run(package: str, executable: str, args: Sequence[str], prefix: str | None = None) -> None:
+    """Replace this process by the executable, started through PREFIX (a command line such
+    as 'gdb -ex run --args') if given. Returns only by raising ToolError."""
     command = command_line(package, executable, args)
+    _exec(command, shlex.split(prefix) if prefix else [])
+
+
+def _exec(command: list[str], prefix: list[str]) -> None:
+    command = [*prefix, *command]
     sys.stdout.flush()
     sys.stderr.flush()
-    held = ctrl_c.starts_project_command(command)
+    held = not prefix and ctrl_c.starts_project_command(command)
     if held:  # until the executable can end quietly on Ctrl-C (see ctrl_c.py)
         ctrl_c.block_sigint()
     try:
-        os.execv(command[0], command)
+        os.execvp(command[0], command)
     except OSError as error:
         if held:
             ctrl_c.unblock_sigint()
@@ -171,16 +189,28 @@ def rosrun(argv: Sequence[str] | None = None) -> int:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    """`ros2 run PKG EXECUTABLE [ARGS ...]`."""
+    """`ros2 run [--prefix PREFIX] package_name executable_name ...`, as ros2run has it."""
     parser = verbs.add_parser(
         "run",
-        help="run an executable of this project (like ros2 run / rosrun)",
-        description="Run an executable of this project by package and executable name. "
-        "ROS 1 arguments (__name:=, __ns:=, from:=to, _param:=value) are translated.",
+        help="Run a package specific executable",
+        description="Run a package specific executable",
     )
-    parser.add_argument("package", metavar="PKG")
-    parser.add_argument("executable", metavar="EXECUTABLE")
-    parser.add_argument("args", nargs=argparse.REMAINDER, metavar="ARGS")
-    parser.set_defaults(
-        offline=True, run=lambda _graph, args: run(args.package, args.executable, args.args)
+    parser.add_argument(
+        "--prefix",
+        help="Prefix command, which should go before the executable. Command must be wrapped "
+        "in quotes if it contains spaces (e.g. --prefix 'gdb -ex run --args').",
     )
+    parser.add_argument("package_name", help="Name of the ROS package")
+    parser.add_argument("executable_name", help="Name of the executable")
+    parser.add_argument(
+        "argv", nargs=argparse.REMAINDER, help="Pass arbitrary arguments to the executable"
+    )
+    parser.set_defaults(offline=True, run=_ros2_run)
+
+
+def _ros2_run(_graph: object, args: argparse.Namespace) -> None:
+    command = ros2_command_line(args.package_name, args.executable_name, args.argv)
+    prefix = shlex.split(args.prefix) if args.prefix is not None else []
+    if args.prefix is not None and not prefix:
+        raise ToolError("--prefix: an empty command")
+    _exec(command, prefix)
