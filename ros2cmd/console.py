@@ -1,4 +1,4 @@
-"""`ros2 console` (and `rqt_console`): the live /rosout in the terminal.
+"""`rqt_console` (also `ros2 run rqt_console rqt_console`): the live /rosout in the terminal.
 
 Every ROS 2 node sends its log lines to /rosout as rcl_interfaces/msg/Log (besides printing
 them), as ROS 1 nodes did. This prints them one a line, time, level, node (the logger name,
@@ -7,7 +7,7 @@ filters by level, node and text. /rosout is transient-local: each node keeps its
 (up to 1000, for 10 s) for subscribers that join later; ``--since SECONDS`` prints those of
 them that are at most that old before the live ones.
 
-    ros2 console --level warn --node /ns1/topic_publisher --text "msg = 1"
+    rqt_console --level warn --node /ns1/topic_publisher --text "msg = 1"
 """
 
 from __future__ import annotations
@@ -159,11 +159,3 @@ def run(graph: Graph, args: Any) -> None:
         args.count,
         False if args.no_colour else None,
     )
-
-
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    p = verbs.add_parser(
-        "console", parents=[common], help="the live /rosout log lines (like rqt_console)"
-    )
-    add_arguments(p)
-    p.set_defaults(run=run)

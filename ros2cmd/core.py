@@ -1,4 +1,4 @@
-"""`roscore` (and `ros2 core`): says why ROS 2 needs none, and waits until Ctrl-C.
+"""`roscore`: says why ROS 2 needs none, and waits until Ctrl-C.
 
 Every seed starts with `roscore` in a terminal of its own. ROS 2 has no master: this keeps
 that terminal busy, as the seeds' layout expects, and explains what takes its place.
@@ -62,9 +62,3 @@ def roscore(argv: Sequence[str] | None = None) -> int:
     parser.parse_args(sys.argv[1:] if argv is None else argv)
     show_and_wait()
     return 0
-
-
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    """`ros2 core`."""
-    parser = verbs.add_parser("core", help="say why ROS 2 needs no roscore, and wait until Ctrl-C")
-    parser.set_defaults(offline=True, run=lambda _graph, _args: show_and_wait())

@@ -1,4 +1,4 @@
-"""`ros2 graph` (and `rqt_graph`): the running graph as a picture, as rqt_graph draws it.
+"""`rqt_graph` (also `ros2 run rqt_graph rqt_graph`): the running graph as rqt_graph draws it.
 
 Nodes are boxes, topics ellipses, an arrow from each publisher to its topic and from the
 topic to each subscriber; nodes and topics of one namespace are grouped in a labelled frame.
@@ -6,9 +6,9 @@ As rqt_graph does by default, the tools' own nodes, /rosout and /parameter_event
 out (``--all`` shows the last two). Services are not drawn (rqt_graph does not either: a call
 is not a lasting connection).
 
-    ros2 graph                      DOT on stdout (for graphviz, if you have it)
-    ros2 graph -o graph.svg         an SVG picture (or .png, or .dot)
-    ros2 graph --window             a window that follows nodes as they come and go
+    rqt_graph                      DOT on stdout (for graphviz, if you have it)
+    rqt_graph -o graph.svg         an SVG picture (or .png, or .dot)
+    rqt_graph --window             a window that follows nodes as they come and go
     rqt_graph                          the window where there is a display, else DOT
 
 No graphviz here: the layout is this module's own, a layered one (Sugiyama's steps: break
@@ -556,14 +556,14 @@ def current_model(graph: Graph, groups: bool, all_topics: bool) -> GraphModel:
 def window(graph: Graph, groups: bool, all_topics: bool, refresh: float = 1.0) -> None:
     """A window showing the graph, redrawn as nodes and topics come and go, until closed."""
     if not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY"):
-        raise ToolError("no display for a window; write a file instead: ros2 graph -o g.svg")
+        raise ToolError("no display for a window; write a file instead: rqt_graph -o g.svg")
     pygame = _pygame(headless=False)
     try:
         pygame.display.init()
         screen = pygame.display.set_mode((900, 600), pygame.RESIZABLE)
     except pygame.error as error:
         raise ToolError(f"cannot open a window: {error}") from None
-    pygame.display.set_caption("ros2 graph")
+    pygame.display.set_caption("rqt_graph")
     font = pygame.font.Font(None, PNG_FONT_SIZE + 4)
     graph.settle()
     shown = None
@@ -621,11 +621,3 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--no-groups", action="store_true", help="do not frame namespaces")
     parser.add_argument("--all", action="store_true", help="show /rosout and /parameter_events too")
-
-
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    p = verbs.add_parser(
-        "graph", parents=[common], help="the graph as DOT, an SVG/PNG picture or a window"
-    )
-    add_arguments(p)
-    p.set_defaults(run=run)

@@ -1,4 +1,4 @@
-"""`ros2 log level` (and `rqt_logger_level`), `ros2 log folder` (and `roslaunch-logs`).
+"""`rqt_logger_level` and `roslaunch-logs`: a node's logger level, the launch log folder.
 
 A running node's logger level is shown and changed through ROS 2 Jazzy's logger services,
 ``<node>/get_logger_levels`` and ``<node>/set_logger_levels`` (rcl_interfaces), which a node
@@ -6,10 +6,10 @@ serves when created with ``Node(..., enable_logger_service=True)``; every node o
 project is. The node's logger is named after it: ``/ns1/topic_publisher`` logs as
 ``ns1.topic_publisher``.
 
-    ros2 log level                              every node that serves them, and its level
-    ros2 log level /ns1/topic_publisher         one node's level
-    ros2 log level /ns1/topic_publisher debug   change it; the node logs DEBUG lines now
-    ros2 log folder                             the latest launch's log folder
+    rqt_logger_level                              every node that serves them, and its level
+    rqt_logger_level /ns1/topic_publisher         one node's level
+    rqt_logger_level /ns1/topic_publisher debug   change it; the node logs DEBUG lines now
+    roslaunch-logs                                the latest launch's log folder
 """
 
 from __future__ import annotations
@@ -94,18 +94,6 @@ def latest_launch_folder(base: Path | None = None) -> Path:
     if not folders:
         raise ToolError(f"no launch logs in {base} (the launcher writes launch_<date>_<pid> there)")
     return max(folders, key=lambda p: (p.stat().st_mtime, p.name))
-
-
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("log", help="logs: a node's logger level, the launch log folder")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-
-    p = sub.add_parser("level", parents=[common], help="show or change a node's logger level")
-    add_level_arguments(p)
-    p.set_defaults(run=lambda graph, a: level_command(graph, a.node, a.level))
-
-    p = sub.add_parser("folder", help="print the latest launch's log folder (roslaunch-logs)")
-    p.set_defaults(run=lambda graph, a: print(latest_launch_folder()), offline=True)
 
 
 def add_level_arguments(parser: argparse.ArgumentParser) -> None:

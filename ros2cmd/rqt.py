@@ -1,10 +1,10 @@
 """The ROS 1 GUI tools the seeds use, in their spellings: rqt_graph, rqt_console,
-rqt_logger_level, and roslaunch-logs. Each runs the same code as its `ros2` verb.
+rqt_logger_level, and roslaunch-logs (ROS 2 runs them as `ros2 run rqt_graph rqt_graph`, ...).
 
     rqt_graph                   a window where there is a display, else DOT on stdout
-    rqt_console                 ros2 console
-    rqt_logger_level [NODE [LEVEL]]   ros2 log level
-    roslaunch-logs              ros2 log folder
+    rqt_console                 the live /rosout lines in the terminal
+    rqt_logger_level [NODE [LEVEL]]   show or change a node's logger level
+    roslaunch-logs              the latest launch's log folder
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ def _execute(args: argparse.Namespace, run, offline: bool = False) -> int:
 
 
 def rqt_graph(argv: Sequence[str] | None = None) -> int:
-    parser = _parser("rqt_graph", "The running graph: a window, or DOT/SVG/PNG (ros2 graph)")
+    parser = _parser("rqt_graph", "The running graph: a window, or DOT/SVG/PNG")
     graph_view.add_arguments(parser)
     args = parser.parse_args(argv)
     if not args.output and not args.window:
@@ -45,13 +45,13 @@ def rqt_graph(argv: Sequence[str] | None = None) -> int:
 
 
 def rqt_console(argv: Sequence[str] | None = None) -> int:
-    parser = _parser("rqt_console", "The live /rosout log lines (ros2 console)")
+    parser = _parser("rqt_console", "The live /rosout log lines")
     console.add_arguments(parser)
     return _execute(parser.parse_args(argv), console.run)
 
 
 def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
-    parser = _parser("rqt_logger_level", "Show or change node logger levels (ros2 log level)")
+    parser = _parser("rqt_logger_level", "Show or change node logger levels")
     log.add_level_arguments(parser)
     args = parser.parse_args(argv)
     return _execute(args, lambda graph, a: log.level_command(graph, a.node, a.level))

@@ -1,4 +1,4 @@
-"""rqt_console / `ros2 console`, rqt_logger_level / `ros2 log level`, roslaunch-logs."""
+"""rqt_console, rqt_logger_level, roslaunch-logs: the log lines, a node's level, the log folder."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""rqt_graph / `ros2 graph`: the book's union.launch pictures, and a layout that stays readable.
+"""rqt_graph: the book's union.launch pictures, and a layout that stays readable.
 
 The layout is checked without ROS on a generated graph of 50 nodes and 100 topics: no two
 labels overlap, every label fits its shape, namespace frames are disjoint or nested and their

@@ -260,7 +260,7 @@ class Starter:
 
     # Variables no module of this project reads when imported, only when it runs: a command
     # with other values of these still starts warm (pytest names each test; turtlesim, the
-    # GUI stand-ins and ros2 log look for a display and the log folder at run time, and
+    # GUI stand-ins and rqt_logger_level look for a display and the log folder at run time, and
     # SDL sets SDL_VIDEODRIVER in the test's own process when an in-process turtlesim draws).
     RUN_TIME_ONLY = (
         "PYTEST_CURRENT_TEST",
