@@ -14,12 +14,13 @@ PACKAGES := $(VENV)/.packages
 # A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
 PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config)
 CTRL_C := $(VENV)/.ctrl_c
+ENVIRONMENT := $(VENV)/.ros_environment
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test test-load lint bench clean interfaces
 
-setup: $(INTERFACES) $(PACKAGES) $(CTRL_C)
+setup: $(INTERFACES) $(PACKAGES) $(CTRL_C) $(ENVIRONMENT)
 
 $(INSTALLED): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -40,6 +41,12 @@ $(PACKAGES): $(INTERFACES) $(PACKAGE_SOURCES) tools/register_packages.py
 # file, and the console scripts started through `env --block-signal=INT`.
 $(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
 	$(PY) -c 'from ros_tutorials_common.ctrl_c import install; print(*install(), sep="\n")'
+	touch $@
+
+# `source .venv/bin/activate` sets ROS_VERSION, ROS_PYTHON_VERSION and ROS_DISTRO, as a ROS
+# install's setup.bash does (the official "Configuring environment" tutorial looks for them).
+$(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py
+	$(PY) tools/ros_environment.py
 	touch $@
 
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.
