@@ -48,6 +48,10 @@ def common_options() -> argparse.ArgumentParser:
     return common
 
 
+# The verbs that take a command (`ros2 topic list`), unlike `run` and `launch`.
+VERBS_WITH_COMMANDS = frozenset(
+    {"action", "bag", "daemon", "interface", "node", "param", "pkg", "service", "topic"}
+)
 # `ros2 launch` is the launcher: its own parser, options and process (see main()).
 LAUNCH_HELP = "Run a launch file"
 
@@ -151,7 +155,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         from launcher.__main__ import main as launch
 
         return launch(words[1:], program="ros2 launch", standalone=argv is None)
-    return run_parsed(build_parser().parse_args(words))
+    parser = build_parser()
+    if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
+        # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.
+        parser.parse_args([*words, "--help"])
+    return run_parsed(parser.parse_args(words))
 
 
 def run_parsed(args: argparse.Namespace) -> int:

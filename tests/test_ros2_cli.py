@@ -1,0 +1,29 @@
+"""`ros2` itself: its help lists ros2cli's verbs, `ros2` or `ros2 VERB` alone print help as
+ros2cli does, and a verb it does not have is a usage error naming the ones it has."""
+
+from __future__ import annotations
+
+from helpers import run
+
+
+def test_ros2_help_lists_the_verbs_of_ros2cli():
+    result = run("ros2", "-h")
+    assert result.returncode == 0 and result.stdout.startswith("usage: ros2 ")
+    assert "ros2 is an extensible command-line tool for ROS 2." in result.stdout
+    for verb in ("action", "bag", "interface", "launch", "node", "param", "run", "service"):
+        assert f"\n    {verb} " in result.stdout or f"\n    {verb}\n" in result.stdout, verb
+    assert "Call `ros2 <command> -h` for more detailed usage." in result.stdout
+
+
+def test_ros2_or_a_verb_alone_prints_its_help_and_ends_well():
+    alone = run("ros2")
+    assert alone.returncode == 0 and alone.stdout == run("ros2", "-h").stdout
+    topic = run("ros2", "topic")
+    assert topic.returncode == 0 and topic.stdout.startswith("usage: ros2 topic")
+    assert "echo" in topic.stdout and topic.stderr == ""
+
+
+def test_an_unknown_verb_is_a_usage_error_naming_the_verbs():
+    result = run("ros2", "topics", "list")
+    assert result.returncode == 2 and "Traceback" not in result.stderr
+    assert "invalid choice: 'topics'" in result.stderr and "'topic'" in result.stderr
