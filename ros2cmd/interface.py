@@ -167,7 +167,9 @@ def show(
             print(f"[{package}/{base}]:")
         print(definition_text(package, kind, base, indent="  ", comments=False))
     else:
-        print(*show_lines(package, kind, base, comments or all_comments, all_comments), sep="\n")
+        lines = show_lines(package, kind, base, comments or all_comments, all_comments)
+        if lines:  # an empty file (std_msgs/msg/Empty) prints nothing
+            print(*lines, sep="\n")
 
 
 def proto(type_name: str, quotes: bool = True) -> None:
@@ -211,11 +213,11 @@ def list_command(kinds: tuple[str, ...]) -> None:
 
 
 def package_command(package: str, kinds: tuple[str, ...] | None) -> None:
-    """`ros2 interface package PKG`: its types in the index's order, or kind by kind as
-    -m/-s/-a are given."""
-    names = list_types(KINDS, package) if kinds is None else []
+    """`ros2 interface package PKG`: its types, sorted (ros2interface's order is a set's),
+    or kind by kind as -m/-s/-a are given."""
+    names = list_types(KINDS, package, sort=True) if kinds is None else []
     for kind in kinds or ():
-        names += list_types((kind,), package)
+        names += list_types((kind,), package, sort=True)
     if names:
         print(*names, sep="\n")
 
