@@ -21,7 +21,7 @@ import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros2cmd import action, interface, node, param, run, service, topic
+from ros2cmd import action, interface, node, param, pkg, run, service, topic
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
@@ -73,6 +73,7 @@ def build_parser() -> argparse.ArgumentParser:
         interface.register,
         node.register,
         param.register,
+        pkg.register,
         run.register,
         service.register,
         topic.register,

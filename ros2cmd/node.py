@@ -1,4 +1,15 @@
-"""`ros2 node ...`: the nodes in the graph and what each one offers (like `ros2 node`)."""
+"""`ros2 node ...`: the nodes in the graph and what each one offers (ROS 2's ros2node).
+
+    ros2 node list [-a] [-c]          one full name a line, sorted; -a with hidden nodes,
+                                      -c only how many
+    ros2 node info /turtlesim [--include-hidden]
+
+`info` prints ros2node's block: the node's name, then `  Subscribers:`, `  Publishers:`,
+`  Service Servers:`, `  Service Clients:`, `  Action Servers:`, `  Action Clients:`, each
+followed by its `    /name: pkg/kind/Type` lines, or by an empty line when it has none (as
+ros2node prints it). Names with a hidden part (an action's `/_action/feedback` topic and
+`/_action/send_goal` service) are left out unless --include-hidden.
+"""
 
 from __future__ import annotations
 
@@ -10,7 +21,7 @@ from rclpy.action.graph import (
     get_action_server_names_and_types_by_node,
 )
 
-from ros2cmd.graph import Graph, split_node_name
+from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
 
 # What `ros2 node list` and `ros2 node info` print (to stderr) for nodes of one name.
 DUPLICATES_WARNING = (
@@ -23,22 +34,32 @@ INFO_DUPLICATES_WARNING = (
 )
 
 
-def list_nodes(graph: Graph) -> None:
+def node_names(graph: Graph, include_hidden: bool = False) -> list[str]:
+    """Every node's full name, sorted, a name once per node that has it."""
+    if not include_hidden:
+        return graph.node_names()
+    names = graph.node.get_node_names_and_namespaces()
+    return sorted(join_node_name(namespace, name) for name, namespace in names)
+
+
+def list_nodes(graph: Graph, include_hidden: bool = False, count: bool = False) -> None:
     graph.settle()
-    names = graph.node_names()
+    names = node_names(graph, include_hidden)
+    graph.finish()
+    if count:
+        print(len(names))
+        return
     if len(set(names)) < len(names):
         print(DUPLICATES_WARNING, file=sys.stderr)
     for name in names:
         print(name)
 
 
-def info(graph: Graph, full_name: str) -> None:
+def info(graph: Graph, full_name: str, include_hidden: bool = False) -> None:
     full_name = graph.wait_for_node(full_name)
     namespace, name = split_node_name(full_name)
     graph.settle()  # the node is known; let its endpoints arrive too
-    count = graph.node_names().count(full_name)
-    if count > 1:
-        print(INFO_DUPLICATES_WARNING.format(count=count, name=full_name), file=sys.stderr)
+    count = node_names(graph, include_hidden=True).count(full_name)
     node = graph.node
     sections = {
         "Subscribers": node.get_subscriber_names_and_types_by_node(name, namespace),
@@ -48,20 +69,39 @@ def info(graph: Graph, full_name: str) -> None:
         "Action Servers": get_action_server_names_and_types_by_node(node, name, namespace),
         "Action Clients": get_action_client_names_and_types_by_node(node, name, namespace),
     }
+    graph.finish()
+    if count > 1:
+        print(INFO_DUPLICATES_WARNING.format(count=count, name=full_name), file=sys.stderr)
     print(full_name)
     for title, endpoints in sections.items():
         print(f"  {title}:")
-        for endpoint, types in sorted(endpoints):
-            print(f"    {endpoint}: {', '.join(types)}")
+        shown = [
+            f"    {endpoint}: {', '.join(types)}"
+            for endpoint, types in sorted(endpoints)
+            if include_hidden or not is_hidden(endpoint)
+        ]
+        print(*shown, sep="\n")  # none: an empty line, as ros2node prints it
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("node", help="nodes: list, info")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    parser = verbs.add_parser("node", help="Various node related sub-commands")
+    sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the nodes in the graph")
-    p.set_defaults(run=lambda graph, a: list_nodes(graph))
+    p = sub.add_parser("list", parents=[common], help="Output a list of available nodes")
+    p.add_argument("-a", "--all", action="store_true", help="Display all nodes even hidden ones")
+    p.add_argument(
+        "-c",
+        "--count-nodes",
+        action="store_true",
+        help="Only display the number of nodes discovered",
+    )
+    p.set_defaults(run=lambda graph, a: list_nodes(graph, a.all, a.count_nodes))
 
-    p = sub.add_parser("info", parents=[common], help="what a node publishes, subscribes, offers")
-    p.add_argument("node")
-    p.set_defaults(run=lambda graph, a: info(graph, a.node))
+    p = sub.add_parser("info", parents=[common], help="Output information about a node")
+    p.add_argument("node_name", help="Node name to request information")
+    p.add_argument(
+        "--include-hidden",
+        action="store_true",
+        help="Display hidden topics, services, and actions as well",
+    )
+    p.set_defaults(run=lambda graph, a: info(graph, a.node_name, a.include_hidden))
