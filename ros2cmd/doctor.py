@@ -232,7 +232,7 @@ def _command_line(pid: int) -> str:
     words = [word for word in words if word]
     if not words:
         return "?"
-    text = " ".join([os.path.basename(words[0]), *words[1:]])
+    text = " ".join(" ".join([os.path.basename(words[0]), *words[1:]]).split())  # one line
     return text if len(text) <= 60 else text[:57] + "..."
 
 
