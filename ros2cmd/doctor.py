@@ -55,8 +55,8 @@ FREE_DOMAIN_TRIES = 3  # domains listened to at once for a free one (SUBNET)
 HELP = """\
 Checks this environment and the running system, and says what may stop ROS 2 from working:
 the Python and virtual environment of the ROS 2 Jazzy wheels, this project's packages in the
-ament index, the DDS settings (ROS_DOMAIN_ID,
-ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS, ROS_LOCALHOST_ONLY), the network interfaces,
+ament index, the DDS settings (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS,
+ROS_LOCALHOST_ONLY), the network interfaces,
 and in the running system: nodes that share a name, topics with a publisher and no
 subscriber or the reverse, incompatible QoS, and the DDS participants of other users or
 machines in this ROS_DOMAIN_ID (then it suggests a free domain id, one where nothing is heard:
