@@ -21,7 +21,7 @@ import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros2cmd import action, interface, node, param, pkg, run, service, topic
+from ros2cmd import action, doctor, interface, node, param, pkg, run, service, topic
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
@@ -70,6 +70,7 @@ def build_parser() -> argparse.ArgumentParser:
     for register in (
         action.register,
         register_bag,
+        doctor.register,
         interface.register,
         node.register,
         param.register,

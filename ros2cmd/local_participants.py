@@ -66,6 +66,20 @@ def local_participants(domain_id: int) -> Counter[int] | None:
     return expected
 
 
+def domain_processes(domain_id: int) -> tuple[bool, Counter[int]] | None:
+    """Whether any process on this machine holds a participant in the domain (whatever its
+    discovery range), and per process id (the full id, of those we may look at) how many.
+
+    None if the tables cannot be read. `ros2 doctor` asks it of its own domain and of the
+    domains it may suggest instead.
+    """
+    sockets = _discovery_sockets(domain_id)
+    if sockets is None:
+        return None
+    holders, _unowned = _holders(set(sockets))
+    return bool(sockets), holders
+
+
 def heard_from_all(expected: Counter[int], seen: set[bytes]) -> bool:
     """Whether the participants seen (GUID prefixes) include as many per process as expected."""
     found = Counter(process_of(prefix) for prefix in seen)
@@ -131,11 +145,19 @@ def _discovery_sockets(domain_id: int) -> dict[str, int] | None:
 
 def _owners(sockets: set[str]) -> Counter[int] | None:
     """Per process id, how many of these sockets it holds; None if one has no owner found."""
+    owners, unowned = _holders(sockets)
+    return None if unowned else owners
+
+
+def _holders(sockets: set[str]) -> tuple[Counter[int], set[str]]:
+    """Per process id, how many of these sockets it holds; and the sockets no owner was
+    found for (all of them without /proc)."""
     owners: Counter[int] = Counter()
+    sockets = set(sockets)
     try:
         processes = list(os.scandir("/proc"))
     except OSError:  # no /proc: nothing can be known
-        return None
+        return owners, sockets
     for entry in processes:
         if not sockets:
             break
@@ -153,4 +175,4 @@ def _owners(sockets: set[str]) -> Counter[int] | None:
             if target in sockets:
                 sockets.discard(target)
                 owners[int(entry.name)] += 1
-    return None if sockets else owners
+    return owners, sockets
