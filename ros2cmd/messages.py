@@ -368,7 +368,8 @@ def message_to_csv(
             value = value[:truncate_length] + (b"..." if isinstance(value, bytes) else "...")
         return str(value)
 
-    return ",".join(
-        text(getattr(msg, name), slot_type)
-        for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True)
-    )
+    line = ""
+    for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True):
+        # As ros2topic: no comma while the line is still empty (after an empty array).
+        line += ("," if line else "") + text(getattr(msg, name), slot_type)
+    return line
