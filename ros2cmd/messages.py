@@ -4,8 +4,11 @@ Filling a message walks its fields with the type information every generated cla
 carries (``get_fields_and_field_types()`` and ``SLOT_TYPES``), so a wrong field name or a
 value out of range for the field gets a clear one-line error before anything is sent.
 The ROS 1 tools also give values by position (``rosservice call /srv 10 5``): a list of
-values fills the fields in order. Printing turns a message into plain data and dumps it
-as YAML, the way ``ros2 topic echo`` shows messages.
+values fills the fields in order. As ros2cli reads them, ``header: "auto"`` and a Time given
+as ``"now"`` take the current time, and a key YAML 1.1 reads as a boolean (``off``, ``on``,
+``yes``, ``no``) names the field so spelled (turtlesim/srv/SetPen's ``off``). Printing is
+rosidl_runtime_py's: ``message_to_yaml`` and ``message_to_csv`` write what ``ros2 topic echo``
+shows (truncation, ``--no-arr``, ``--no-str``, ``--flow-style``).
 """
 
 from __future__ import annotations
