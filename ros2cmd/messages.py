@@ -4,8 +4,11 @@ Filling a message walks its fields with the type information every generated cla
 carries (``get_fields_and_field_types()`` and ``SLOT_TYPES``), so a wrong field name or a
 value out of range for the field gets a clear one-line error before anything is sent.
 The ROS 1 tools also give values by position (``rosservice call /srv 10 5``): a list of
-values fills the fields in order. Printing turns a message into plain data and dumps it
-as YAML, the way ``ros2 topic echo`` shows messages.
+values fills the fields in order. As ros2cli reads them, ``header: "auto"`` and a Time given
+as ``"now"`` take the current time, and a key YAML 1.1 reads as a boolean (``off``, ``on``,
+``yes``, ``no``) names the field so spelled (turtlesim/srv/SetPen's ``off``). Printing is
+rosidl_runtime_py's: ``message_to_yaml`` and ``message_to_csv`` write what ``ros2 topic echo``
+shows (truncation, ``--no-arr``, ``--no-str``, ``--flow-style``).
 """
 
 from __future__ import annotations
@@ -15,6 +18,8 @@ import contextlib
 import importlib
 import math
 import re
+import sys
+from collections.abc import Callable
 from typing import Any
 
 import yaml
@@ -22,10 +27,13 @@ from rclpy.clock import Clock
 from rosidl_parser.definition import (
     AbstractGenericString,
     AbstractNestedType,
+    AbstractString,
+    AbstractWString,
     Array,
     BasicType,
     BoundedSequence,
     NamespacedType,
+    UnboundedSequence,
 )
 
 from ros2cmd.errors import ToolError
@@ -73,8 +81,25 @@ def parse_yaml(text: str) -> Any:
         raise ToolError(f"invalid YAML {text!r}{where}: {problem}") from None
 
 
-def fill_message(msg: Any, values: Any, path: str = "") -> Any:
-    """Set msg's fields from a dict (by name) or a list (in order); return msg."""
+# PyYAML (YAML 1.1) reads these keys as booleans: `{off: 0}` arrives as {False: 0}. A message
+# field so named (turtlesim/srv/SetPen's `off`) is what the user meant.
+_BOOLEAN_KEYS = {
+    True: ("on", "yes", "y", "true", "On", "Yes", "Y", "True", "ON", "YES", "TRUE"),
+    False: ("off", "no", "n", "false", "Off", "No", "N", "False", "OFF", "NO", "FALSE"),
+}
+
+TimeSetter = Callable[[Any], None]
+
+
+def fill_message(
+    msg: Any, values: Any, path: str = "", stamps: list[TimeSetter] | None = None
+) -> Any:
+    """Set msg's fields from a dict (by name) or a list (in order); return msg.
+
+    As `ros2 topic pub` does, a std_msgs/Header given as "auto" and a builtin_interfaces/Time
+    given as "now" get the current time; with ``stamps`` given, a setter for each such field
+    is appended to it, so that a publisher can stamp every message it sends anew.
+    """
     fields = list(msg.get_fields_and_field_types())
     slot_types = dict(zip(fields, msg.SLOT_TYPES, strict=True))
     where = f"{path} ({full_type_name(type(msg))})" if path else full_type_name(type(msg))
@@ -91,22 +116,45 @@ def fill_message(msg: Any, values: Any, path: str = "") -> Any:
         if len(fields) != 1:
             raise ToolError(f"{where} needs a mapping of its fields ({', '.join(fields)})")
         values = {fields[0]: values}  # `rostopic pub /t std_msgs/String hello`
-    for name, value in values.items():
+    for key, value in values.items():
+        name = _field_name(key, fields)
         if name not in slot_types:
             raise ToolError(
                 f"'{name}' is not a field of {where} (fields: {', '.join(fields) or 'none'})"
             )
         field_path = f"{path}.{name}" if path else name
+        slot_type = slot_types[name]
         current = getattr(msg, name)
-        setattr(msg, name, _convert(value, slot_types[name], current, field_path))
+        if _is_type(slot_type, "std_msgs", "Header") and value == "auto":
+            current.stamp = Clock().now().to_msg()
+            if stamps is not None:
+                stamps.append(lambda stamp, header=current: setattr(header, "stamp", stamp))
+            continue
+        if _is_type(slot_type, "builtin_interfaces", "Time") and value == "now":
+            setattr(msg, name, Clock().now().to_msg())
+            if stamps is not None:
+                stamps.append(lambda stamp, owner=msg, name=name: setattr(owner, name, stamp))
+            continue
+        setattr(msg, name, _convert(value, slot_type, current, field_path, stamps))
     return msg
 
 
-def _convert(value: Any, slot_type: Any, current: Any, path: str) -> Any:
+def _field_name(key: Any, fields: list[str]) -> str:
+    """The field a key names: a key YAML read as a boolean names the field so spelled."""
+    if isinstance(key, bool):
+        named = [name for name in _BOOLEAN_KEYS[key] if name in fields]
+        if len(named) == 1:
+            return named[0]
+    return str(key)
+
+
+def _convert(
+    value: Any, slot_type: Any, current: Any, path: str, stamps: list[TimeSetter] | None = None
+) -> Any:
     if isinstance(slot_type, NamespacedType):
-        if _is_time(slot_type) and value == "now":
+        if _is_type(slot_type, "builtin_interfaces", "Time") and value == "now":
             return Clock().now().to_msg()
-        return fill_message(current, value, path)
+        return fill_message(current, value, path, stamps)
     if isinstance(slot_type, AbstractNestedType):  # arrays and sequences
         if not isinstance(value, list):
             raise ToolError(f"{path} is a list; give it as [...], got {value!r}")
@@ -173,8 +221,13 @@ def _ros_int_name(typename: str) -> str:
     return {"octet": "byte", "char": "char"}.get(typename, typename)
 
 
-def _is_time(slot_type: NamespacedType) -> bool:
-    return tuple(slot_type.namespaces) == ("builtin_interfaces", "msg") and slot_type.name == "Time"
+def _is_type(slot_type: Any, package: str, name: str) -> bool:
+    """Whether a field's type is the message package/msg/name."""
+    return (
+        isinstance(slot_type, NamespacedType)
+        and tuple(slot_type.namespaces) == (package, "msg")
+        and slot_type.name == name
+    )
 
 
 def _message_class(slot_type: NamespacedType) -> type:
@@ -197,10 +250,129 @@ def message_to_data(msg: Any) -> Any:
     return msg
 
 
-def message_to_yaml(msg: Any) -> str:
-    """A message as ``ros2 topic echo`` prints it (block-style YAML, definition order)."""
-    data = message_to_data(msg)
-    if not data:
-        return "{}"
-    text = yaml.safe_dump(data, default_flow_style=False, sort_keys=False, allow_unicode=True)
-    return text.rstrip()
+def message_to_yaml(
+    msg: Any,
+    *,
+    truncate_length: int | None = None,
+    no_arr: bool = False,
+    no_str: bool = False,
+    flow_style: bool = False,
+) -> str:
+    """A message as ``ros2 topic echo`` prints it (rosidl_runtime_py's message_to_yaml), without
+    the final line break: block-style YAML in definition order, or one flow-style line.
+
+    truncate_length shortens strings and arrays (``...`` after them), no_arr and no_str print
+    a summary instead of the array or string fields.
+    """
+    data = message_to_ordered(msg, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str)
+    text = yaml.dump(
+        data,
+        Dumper=_MessageDumper,
+        allow_unicode=True,
+        width=sys.maxsize,  # one value, one line, however long
+        default_flow_style=flow_style,
+        sort_keys=False,
+    )
+    return text.rstrip("\n")
+
+
+class _MessageDumper(yaml.SafeDumper):
+    """YAML as yaml.dump writes it for plain data (ros2 topic echo's output)."""
+
+
+def message_to_ordered(
+    msg: Any, *, truncate_length: int | None = None, no_arr: bool = False, no_str: bool = False
+) -> dict[str, Any]:
+    """A message as plain data, fields in definition order, as rosidl_runtime_py converts it:
+    bytes become text, numpy values Python numbers, nested messages dicts."""
+    return {
+        name: _plain(getattr(msg, name), slot_type, truncate_length, no_arr, no_str)
+        for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True)
+    }
+
+
+def _plain(
+    value: Any, slot_type: Any, truncate_length: int | None, no_arr: bool, no_str: bool
+) -> Any:
+    if isinstance(value, bytes):
+        text = "".join(chr(c) for c in value[:truncate_length])
+        cut = truncate_length is not None and len(value) > truncate_length
+        return text + "..." if cut else text
+    if isinstance(value, str):
+        if no_str:
+            return f"<string length: <{len(value)}>>"
+        if truncate_length is not None and len(value) > truncate_length:
+            return value[:truncate_length] + "..."
+        return value
+    if isinstance(value, (list, tuple, array.array)) or type(value).__name__ == "ndarray":
+        if no_arr and slot_type is not None:
+            return _array_summary(value, slot_type)
+        items = [_plain(item, None, truncate_length, no_arr, no_str) for item in value]
+        if truncate_length is not None and len(items) > truncate_length:
+            return [*items[:truncate_length], "..."]
+        return items
+    if hasattr(value, "get_fields_and_field_types"):
+        return message_to_ordered(
+            value, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str
+        )
+    if hasattr(value, "item"):  # numpy scalars from fixed-size arrays
+        return value.item()
+    return value
+
+
+def _type_name(slot_type: Any) -> str:
+    """A field type's name as --no-arr shows it: 'double', 'string', 'geometry_msgs/Point'."""
+    if isinstance(slot_type, BasicType):
+        return slot_type.typename
+    if isinstance(slot_type, AbstractString):
+        return "string"
+    if isinstance(slot_type, AbstractWString):
+        return "wstring"
+    if isinstance(slot_type, NamespacedType):
+        return "/".join(slot_type.namespaced_name())
+    return "unknown"
+
+
+def _array_summary(value: Any, slot_type: Any) -> str:
+    item = _type_name(slot_type.value_type)
+    if isinstance(slot_type, Array):
+        return f"<array type: {item}[{slot_type.size}]>"
+    if isinstance(slot_type, BoundedSequence):
+        return f"<sequence type: {item}[{slot_type.maximum_size}], length: {len(value)}>"
+    if isinstance(slot_type, UnboundedSequence):
+        return f"<sequence type: {item}, length: {len(value)}>"
+    return "unknown"
+
+
+def message_to_csv(
+    msg: Any, *, truncate_length: int | None = None, no_arr: bool = False, no_str: bool = False
+) -> str:
+    """A message as one line of comma-separated values (``ros2 topic echo --csv``)."""
+
+    def text(value: Any, slot_type: Any = None) -> str:
+        if isinstance(value, (list, tuple, array.array)) or type(value).__name__ == "ndarray":
+            if no_arr and slot_type is not None:
+                return _array_summary(value, slot_type)
+            parts = []
+            for i, item in enumerate(value):
+                if truncate_length is not None and i >= truncate_length:
+                    parts.append("...")
+                    break
+                parts.append(text(item))
+            return ",".join(parts)
+        if hasattr(value, "get_fields_and_field_types"):
+            return message_to_csv(
+                value, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str
+            )
+        if no_str and isinstance(value, str):
+            return f"<string length: <{len(value)}>>"
+        cut = truncate_length is not None and isinstance(value, (str, bytes))
+        if cut and len(value) > truncate_length:
+            value = value[:truncate_length] + (b"..." if isinstance(value, bytes) else "...")
+        return str(value)
+
+    line = ""
+    for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True):
+        # As ros2topic: no comma while the line is still empty (after an empty array).
+        line += ("," if line else "") + text(getattr(msg, name), slot_type)
+    return line

@@ -17,13 +17,22 @@ incompatible, rmw's event is reported in one line and the publishers are looked 
 
 from __future__ import annotations
 
+import argparse
 import sys
 import time
 from collections.abc import Callable
 from typing import Any
 
+from rclpy.duration import Duration
 from rclpy.event_handler import SubscriptionEventCallbacks
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.qos import (
+    DurabilityPolicy,
+    HistoryPolicy,
+    LivelinessPolicy,
+    QoSPresetProfiles,
+    QoSProfile,
+    ReliabilityPolicy,
+)
 
 CHECK_PERIOD = 0.2  # s between looks at the topic's publishers
 
@@ -130,3 +139,85 @@ class AdaptiveSubscription:
 
 def _same(a: QoSProfile, b: QoSProfile) -> bool:
     return (a.durability, a.reliability) == (b.durability, b.reliability)
+
+
+# The --qos-* options of `ros2 topic echo` and `pub`, as ros2topic has them.
+
+
+def add_qos_arguments(parser: argparse.ArgumentParser, verb: str, default_profile: str) -> None:
+    """--qos-profile (a preset: sensor_data, services_default, ...) and its overrides."""
+    profiles = QoSPresetProfiles.short_keys()
+    parser.add_argument(
+        "--qos-profile",
+        choices=profiles,
+        default=default_profile,
+        help=f"Quality of service preset profile to {verb} with (default: {default_profile})",
+    )
+    history = QoSPresetProfiles.get_from_short_key(default_profile).history.short_key
+    parser.add_argument(
+        "--qos-depth",
+        metavar="N",
+        type=int,
+        help=f"Queue size setting to {verb} with (overrides depth value of --qos-profile option)",
+    )
+    parser.add_argument(
+        "--qos-history",
+        choices=HistoryPolicy.short_keys(),
+        help=f"History of samples setting to {verb} with (overrides history value of "
+        f"--qos-profile option, default: {history})",
+    )
+    for name, policy in (("reliability", ReliabilityPolicy), ("durability", DurabilityPolicy)):
+        parser.add_argument(
+            f"--qos-{name}",
+            choices=policy.short_keys(),
+            help=f"Quality of service {name} setting to {verb} with (overrides {name} value "
+            "of --qos-profile option, default: Compatible profile with running endpoints )",
+        )
+    parser.add_argument(
+        "--qos-liveliness",
+        choices=LivelinessPolicy.short_keys(),
+        help=f"Quality of service liveliness setting to {verb} with (overrides liveliness "
+        "value of --qos-profile option",
+    )
+    parser.add_argument(
+        "--qos-liveliness-lease-duration-seconds",
+        type=float,
+        help=f"Quality of service liveliness lease duration setting to {verb} with "
+        "(overrides liveliness lease duration value of --qos-profile option",
+    )
+
+
+def qos_overridden(args: argparse.Namespace) -> bool:
+    """Whether any --qos-* option but the preset was given (echo then adapts nothing)."""
+    return any(
+        getattr(args, f"qos_{name}") is not None
+        for name in (
+            "depth",
+            "history",
+            "reliability",
+            "durability",
+            "liveliness",
+            "liveliness_lease_duration_seconds",
+        )
+    )
+
+
+def qos_from_args(args: argparse.Namespace) -> QoSProfile:
+    """The preset --qos-profile names, with the --qos-* overrides given applied."""
+    profile = QoSPresetProfiles.get_from_short_key(args.qos_profile)
+    if args.qos_history:
+        profile.history = HistoryPolicy.get_from_short_key(args.qos_history)
+    if args.qos_durability:
+        profile.durability = DurabilityPolicy.get_from_short_key(args.qos_durability)
+    if args.qos_reliability:
+        profile.reliability = ReliabilityPolicy.get_from_short_key(args.qos_reliability)
+    if args.qos_liveliness:
+        profile.liveliness = LivelinessPolicy.get_from_short_key(args.qos_liveliness)
+    lease = args.qos_liveliness_lease_duration_seconds
+    if lease is not None and lease >= 0:
+        profile.liveliness_lease_duration = Duration(seconds=lease)
+    if args.qos_depth is not None and args.qos_depth >= 0:
+        profile.depth = args.qos_depth
+    elif profile.durability == DurabilityPolicy.TRANSIENT_LOCAL and profile.depth == 0:
+        profile.depth = 1
+    return profile
