@@ -9,6 +9,8 @@ the Python classes are imported from PKG.msg, PKG.srv, PKG.action.
 from __future__ import annotations
 
 import importlib
+import os
+import sys
 from pathlib import Path
 
 from launcher import ament
@@ -45,7 +47,13 @@ def interface_package(package: str, index: dict[str, list[str]]) -> str:
 
 
 def list_hint(kinds: tuple[str, ...]) -> str:
-    tool = {("msg",): "rosmsg list", ("srv",): "rossrv list"}.get(kinds, "ros2 interface list")
+    """Where to look for the types that exist, in the spelling the user typed: the ROS 1
+    tools' (`rosmsg list`) or ros2's (`ros2 interface list -m`)."""
+    if os.path.basename(sys.argv[0]).startswith("ros2"):
+        flag = {("msg",): " -m", ("srv",): " -s", ("action",): " -a"}.get(kinds, "")
+        tool = f"ros2 interface list{flag}"
+    else:
+        tool = {("msg",): "rosmsg list", ("srv",): "rossrv list"}.get(kinds, "ros2 interface list")
     return f"`{tool}` shows every {'/'.join(KIND_NAMES[kind] for kind in kinds)} type"
 
 
