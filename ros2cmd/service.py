@@ -32,7 +32,14 @@ from rosidl_parser.definition import (
 from service_msgs.msg import ServiceEventInfo
 
 from ros2cmd.errors import ToolError
-from ros2cmd.graph import Graph, ServiceInfo, absolute_name, is_hidden, until_stopped
+from ros2cmd.graph import (
+    Graph,
+    ServiceInfo,
+    absolute_name,
+    is_hidden,
+    split_node_name,
+    until_stopped,
+)
 from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_rate
@@ -69,10 +76,15 @@ def list_services(
 
 
 def _wait_for_types(graph: Graph, service: str, include_hidden: bool = True) -> list[str]:
-    return graph.wait_for(
-        lambda: service_types(graph, include_hidden).get(service),
+    """The types of a service once a server or client of it is seen (ToolError after the
+    timeout). A hidden one is known only with include_hidden, as in ros2cli."""
+    types = graph.wait_for(
+        lambda: service_types(graph, include_hidden=True).get(service),
         f"unknown service '{service}': no server or client seen",
     )
+    if is_hidden(service) and not include_hidden:
+        raise ToolError(f"'{service}' is a hidden service; add --include-hidden-services")
+    return types
 
 
 def print_type(graph: Graph, service: str, include_hidden: bool = False) -> None:
@@ -106,8 +118,7 @@ def _nodes_with(graph: Graph, service: str) -> tuple[list[str], list[str]]:
     """The full names of the nodes that are clients and servers of a service."""
     clients, servers_ = [], []
     for full in graph.node_names():
-        namespace, _, name = full.rpartition("/")
-        namespace = namespace or "/"
+        namespace, name = split_node_name(full)
         try:
             served = graph.node.get_service_names_and_types_by_node(name, namespace)
             asked = graph.node.get_client_names_and_types_by_node(name, namespace)
@@ -195,11 +206,13 @@ def _wait_until_offered(graph: Graph, service: str, quiet: bool) -> str:
     if not quiet:
         try:
             return graph.wait_for(
-                lambda: graph.service_types().get(service), "", timeout=QUIET_WAIT
+                lambda: service_types(graph, include_hidden=True).get(service),
+                "",
+                timeout=QUIET_WAIT,
             )[0]
         except ToolError:
             print(WAITING, flush=True)
-    return graph.wait_for_service_type(service)
+    return _wait_for_types(graph, service)[0]
 
 
 # `ros2 service echo`: the events as rosidl_runtime_py converts messages (ros2cli's echo).
@@ -416,6 +429,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("type", parents=[common], help="Output a service's type")
     p.add_argument("service_name", help="Name of the ROS service (e.g. '/clear')")
+    hidden(p)
     p.set_defaults(run=lambda graph, a: print_type(graph, a.service_name, with_hidden(a)))
 
     p = sub.add_parser(
@@ -431,6 +445,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p = sub.add_parser("info", parents=[common], help="Print information about a service")
     p.add_argument("service_name", help="Name of the ROS service (e.g. '/add_two_ints')")
     p.add_argument("-v", "--verbose", action="store_true", help="also name the nodes")
+    hidden(p)
     p.set_defaults(run=lambda graph, a: info(graph, a.service_name, a.verbose, with_hidden(a)))
 
     p = sub.add_parser("call", parents=[common], help="Call a service")

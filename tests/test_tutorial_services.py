@@ -119,7 +119,8 @@ def test_the_services_page_against_turtlesim(turtlesim):
 
 
 def test_list_count_hidden_services_and_info_verbose(turtlesim):
-    listed, counted, hidden, hidden_before, verbose, found = at_once(
+    goal = "/turtle1/rotate_absolute/_action/send_goal"  # turtlesim's action: hidden services
+    listed, counted, hidden, hidden_before, verbose, found, hidden_type = at_once(
         ok,
         ("ros2", "service", "list"),
         ("ros2", "service", "list", "-c"),
@@ -127,11 +128,14 @@ def test_list_count_hidden_services_and_info_verbose(turtlesim):
         ("ros2", "service", "--include-hidden-services", "list"),
         ("ros2", "service", "info", "-v", "/spawn"),
         ("ros2", "service", "find", "-c", "std_srvs/srv/Empty"),
+        ("ros2", "service", "type", goal, "--include-hidden-services"),
     )
     assert int(counted) == len(listed.splitlines())
-    # turtlesim's action (turtle1/rotate_absolute) is served by hidden services.
-    goal = "/turtle1/rotate_absolute/_action/send_goal"
     assert goal not in listed.splitlines()
+    assert hidden_type == "turtlesim/action/RotateAbsolute_SendGoal\n"
+    assert fails("ros2", "service", "type", goal) == (
+        f"error: '{goal}' is a hidden service; add --include-hidden-services"
+    )
     assert goal in hidden.splitlines() and goal in hidden_before.splitlines()
     assert verbose == (
         "Type: turtlesim/srv/Spawn\nClients count: 0\nServices count: 1\n  Node: /turtlesim\n"
