@@ -387,9 +387,7 @@ def echo(
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser(
-        "service", help="Various service related sub-commands (list, type, find, info, call, echo)"
-    )
+    parser = verbs.add_parser("service", help="Various service related sub-commands")
     # As ros2cli: before the sub-command too (`ros2 service --include-hidden-services list`).
     parser.add_argument(
         "--include-hidden-services",
