@@ -24,6 +24,7 @@ from pathlib import Path
 
 from launcher import LaunchError, guardian, packages, parse
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
+from launcher.python_files import is_python_launch_file, not_supported
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 
@@ -201,6 +202,8 @@ def main(
     try:
         names, args = split_words(options.words)
         path = find_launch_file(names)
+        if is_python_launch_file(path):
+            raise LaunchError(not_supported(path))
         if options.show_args:
             return _print_and_end(format_args(describe_args(path)))
         launch = resolve(path, args, Options(allow_code=options.allow_code))

@@ -45,6 +45,9 @@ PACKAGE_ALIASES: dict[str, str | tuple[str, ...]] = {
     "my_package": (*_TOPIC_AND_SERVICE, "ros_tutorials_parameter"),  # seed 004
     # turtlesim's nodes: rosidl's generated module is already called `turtlesim`.
     "turtlesim": "ros_tutorials_turtlesim",  # seeds 001-004
+    # ROS 2's demos the Beginner CLI tutorials run (the service introspection demo).
+    "demo_nodes_cpp": "ros_tutorials_demo_nodes",
+    "demo_nodes_py": "ros_tutorials_demo_nodes",
 }
 # A seed executable whose name belongs to another lesson here: (seed package, name) -> name.
 EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {

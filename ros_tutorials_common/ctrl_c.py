@@ -43,6 +43,7 @@ PACKAGES = frozenset(
         "ros2cmd",
         "ros_tutorials_action",
         "ros_tutorials_common",
+        "ros_tutorials_demo_nodes",
         "ros_tutorials_parameter",
         "ros_tutorials_service",
         "ros_tutorials_topic",

@@ -245,7 +245,9 @@ def test_rosmsg_finds_the_seeds_messages_under_their_package_names():
         ),
         (
             ("rossrv", "show", "nope_pkg/AddTwoInts"),
-            "did you mean ros_tutorials_interfaces/srv/AddTwoInts?",
+            # example_interfaces (the introspection demo's) has one too, as in ROS 2
+            "did you mean example_interfaces/srv/AddTwoInts or "
+            "ros_tutorials_interfaces/srv/AddTwoInts?",
         ),
         (("rosmsg", "show", "nope_pkg/Nope"), "no interface package 'nope_pkg'; `rosmsg list`"),
         (("rossrv", "show", "Nope"), "unknown service type 'Nope'; `rossrv list`"),
