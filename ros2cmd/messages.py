@@ -267,7 +267,7 @@ def message_to_yaml(
     data = message_to_ordered(msg, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str)
     text = yaml.dump(
         data,
-        Dumper=_MessageDumper,
+        Dumper=MessageDumper,
         allow_unicode=True,
         width=sys.maxsize,  # one value, one line, however long
         default_flow_style=flow_style,
@@ -276,8 +276,19 @@ def message_to_yaml(
     return text.rstrip("\n")
 
 
-class _MessageDumper(yaml.SafeDumper):
-    """YAML as yaml.dump writes it for plain data (ros2 topic echo's output)."""
+class MessageDumper(yaml.SafeDumper):
+    """YAML as rosidl_runtime_py dumps a message (ros2 topic echo, ros2 service echo): its
+    mappings (OrderedDicts there) never take the flow style by themselves, so --flow-style
+    puts only the sequences in flow style (`client_gid: [1, 15, ...]`)."""
+
+
+MessageDumper.add_representer(
+    dict,
+    lambda dumper, data: yaml.MappingNode(
+        "tag:yaml.org,2002:map",
+        [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
+    ),
+)
 
 
 def message_to_ordered(

@@ -12,7 +12,6 @@ request or response), as YAML with the event type's name, once a client or serve
 from __future__ import annotations
 
 import argparse
-import array
 import sys
 import time
 from collections import deque
@@ -20,15 +19,6 @@ from typing import Any
 
 import yaml
 from rclpy.qos import qos_profile_services_default
-from rosidl_parser.definition import (
-    AbstractString,
-    AbstractWString,
-    Array,
-    BasicType,
-    BoundedSequence,
-    NamespacedType,
-    UnboundedSequence,
-)
 from service_msgs.msg import ServiceEventInfo
 
 from ros2cmd.errors import ToolError
@@ -40,7 +30,14 @@ from ros2cmd.graph import (
     split_node_name,
     until_stopped,
 )
-from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
+from ros2cmd.messages import (
+    MessageDumper,
+    fill_message,
+    message_to_csv,
+    message_to_ordered,
+    message_to_yaml,
+    parse_yaml,
+)
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_rate
 
@@ -218,116 +215,6 @@ def _wait_until_offered(graph: Graph, service: str, quiet: bool) -> str:
 # `ros2 service echo`: the events as rosidl_runtime_py converts messages (ros2cli's echo).
 
 
-def message_to_ordered(
-    msg: Any, *, truncate_length: int | None = None, no_arr: bool = False, no_str: bool = False
-) -> dict[str, Any]:
-    """A message as plain data, fields in definition order: bytes as text, numpy values as
-    Python numbers, nested messages as dicts; strings and arrays longer than truncate_length
-    cut (``...`` after them); with no_arr or no_str a summary instead of those fields."""
-    return {
-        name: _plain(getattr(msg, name), slot_type, truncate_length, no_arr, no_str)
-        for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True)
-    }
-
-
-def _plain(
-    value: Any, slot_type: Any, truncate_length: int | None, no_arr: bool, no_str: bool
-) -> Any:
-    if isinstance(value, bytes):
-        cut = truncate_length is not None and len(value) > truncate_length
-        return "".join(chr(c) for c in value[:truncate_length]) + ("..." if cut else "")
-    if isinstance(value, str):
-        if no_str:
-            return f"<string length: <{len(value)}>>"
-        if truncate_length is not None and len(value) > truncate_length:
-            return value[:truncate_length] + "..."
-        return value
-    if isinstance(value, (list, tuple, array.array)) or type(value).__name__ == "ndarray":
-        if no_arr and slot_type is not None:
-            return _array_summary(value, slot_type)
-        items = [_plain(item, None, truncate_length, no_arr, no_str) for item in value]
-        if truncate_length is not None and len(items) > truncate_length:
-            return [*items[:truncate_length], "..."]
-        return items
-    if hasattr(value, "get_fields_and_field_types"):
-        return message_to_ordered(
-            value, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str
-        )
-    if hasattr(value, "item"):  # numpy scalars from fixed-size arrays
-        return value.item()
-    return value
-
-
-def _type_name(slot_type: Any) -> str:
-    if isinstance(slot_type, BasicType):
-        return slot_type.typename
-    if isinstance(slot_type, AbstractString):
-        return "string"
-    if isinstance(slot_type, AbstractWString):
-        return "wstring"
-    if isinstance(slot_type, NamespacedType):
-        return "/".join(slot_type.namespaced_name())
-    return "unknown"
-
-
-def _array_summary(value: Any, slot_type: Any) -> str:
-    item = _type_name(slot_type.value_type)
-    if isinstance(slot_type, Array):
-        return f"<array type: {item}[{slot_type.size}]>"
-    if isinstance(slot_type, BoundedSequence):
-        return f"<sequence type: {item}[{slot_type.maximum_size}], length: {len(value)}>"
-    if isinstance(slot_type, UnboundedSequence):
-        return f"<sequence type: {item}, length: {len(value)}>"
-    return "unknown"
-
-
-def message_to_csv(
-    msg: Any, *, truncate_length: int | None = None, no_arr: bool = False, no_str: bool = False
-) -> str:
-    """A message as one line of comma-separated values (`--csv`)."""
-
-    def text(value: Any, slot_type: Any = None) -> str:
-        if isinstance(value, (list, tuple, array.array)) or type(value).__name__ == "ndarray":
-            if no_arr and slot_type is not None:
-                return _array_summary(value, slot_type)
-            parts = []
-            for i, item in enumerate(value):
-                if truncate_length is not None and i >= truncate_length:
-                    parts.append("...")
-                    break
-                parts.append(text(item))
-            return ",".join(parts)
-        if hasattr(value, "get_fields_and_field_types"):
-            return message_to_csv(
-                value, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str
-            )
-        if no_str and isinstance(value, str):
-            return f"<string length: <{len(value)}>>"
-        cut = truncate_length is not None and isinstance(value, (str, bytes))
-        if cut and len(value) > truncate_length:
-            value = value[:truncate_length] + (b"..." if isinstance(value, bytes) else "...")
-        return str(value)
-
-    return ",".join(
-        text(getattr(msg, name), slot_type)
-        for name, slot_type in zip(msg.get_fields_and_field_types(), msg.SLOT_TYPES, strict=True)
-    )
-
-
-class _EventDumper(yaml.SafeDumper):
-    """yaml.dump as ros2cli's echo calls it: mappings (its OrderedDicts) never in flow style
-    by themselves, sequences in flow style with --flow-style (`client_gid: [1, 15, ...]`)."""
-
-
-_EventDumper.add_representer(
-    dict,
-    lambda dumper, data: yaml.MappingNode(
-        "tag:yaml.org,2002:map",
-        [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
-    ),
-)
-
-
 def event_text(
     event: Any,
     *,
@@ -348,7 +235,7 @@ def event_text(
         info_data["event_type"] = EVENT_TYPES.get(info_data["event_type"], info_data["event_type"])
     text = yaml.dump(
         data,
-        Dumper=_EventDumper,
+        Dumper=MessageDumper,
         allow_unicode=True,
         width=sys.maxsize,
         default_flow_style=flow_style,
