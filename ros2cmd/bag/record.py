@@ -210,6 +210,10 @@ class Recorder:
                 continue
             if self.filter.take(topic, types):
                 self._subscribe(topic, types[0])
+
+    def discovery_round(self) -> None:
+        """rosbag2's discovery thread: look again, stop once every topic named is subscribed."""
+        self.discover()
         wanted = self.options.topics
         if wanted and len(self.subscriptions) == len(wanted) and not self.options.ros1:
             self.info("All requested topics are subscribed. Stopping discovery...")
@@ -369,15 +373,19 @@ def _run(
         # installed here; no split happens either): its line is kept for the page's output.
         recorder.info("Event publisher thread: Starting")
         recorder.info("Listening for topics...")
+        # What runs already is subscribed before "Recording...", as the page shows it: the
+        # graph first holds every participant running now (rosbag2 looks at once, and a
+        # topic its node has not discovered yet comes after that line).
+        graph.settle()
     recorder.discover()
     if not options.ros1:
         if options.start_paused:
             recorder.info("Wait for recording: Press SPACE to start.")
         else:
             recorder.info("Recording...")
-    recorder.discovering = recorder.discovering and not options.no_discovery
+    recorder.discovering = not options.no_discovery
     start = time.monotonic()
-    last_discovery = start
+    last_discovery = 0.0  # the discovery thread's first round comes at once
     while not (stop.signal_name or recorder.stop_reason):
         now = time.monotonic()
         if options.duration is not None and now - start >= options.duration:
@@ -385,7 +393,7 @@ def _run(
             break
         if recorder.discovering and now - last_discovery >= options.polling_interval:
             last_discovery = now
-            recorder.discover()
+            recorder.discovery_round()
         graph.spin_once(SPIN_PERIOD)
         recorder.drain()
         if keyboard.active and keyboard.wait(0) == "SPACE":
