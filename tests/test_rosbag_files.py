@@ -197,7 +197,10 @@ def test_an_existing_output_is_never_overwritten(ros_domain, tmp_path) -> None:
     existing.mkdir()
     (existing / "keep.txt").write_text("mine")
     assert "already exists" in fails("rosbag", "record", "/chatter", "-O", str(existing))
-    assert "already exists" in fails("ros2", "bag", "record", "/chatter", "-o", str(existing))
+    # ros2 bag's own line (ros2bag's validate_parsed_arguments), exit 1.
+    result = run("ros2", "bag", "record", "/chatter", "-o", str(existing))
+    assert result.returncode == 1
+    assert result.stderr == f"[ERROR] [ros2bag]: Output folder '{existing}' already exists.\n"
     assert [p.name for p in existing.iterdir()] == ["keep.txt"]
     with pytest.raises(BagError, match="already exists"):
         BagWriter(existing)

@@ -49,42 +49,66 @@ def offset_seconds(text: str) -> float:
     return value
 
 
-def _record_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
+# ROS 1's spelling: `rosbag record|play` (seed 004), ROS 1's options on the same code.
+
+
+def _ros1_record_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topics", nargs="*", metavar="TOPIC", help="topics to record")
     parser.add_argument("-a", "--all", action="store_true", help="all topics, also later ones")
     output = parser.add_mutually_exclusive_group()
     output.add_argument("-o", "--output", help="the bag's folder (default rosbag2_<date-time>)")
-    if ros1:
-        output.add_argument("-O", dest="output", help="the same as -o")
+    output.add_argument("-O", dest="output", help="the same as -o")
+    _limit_arguments(parser)
+    parser.set_defaults(run=_ros1_record)
+
+
+def _limit_arguments(parser: argparse.ArgumentParser) -> None:
+    """This project's own stops, in both spellings (rosbag2 has neither)."""
     parser.add_argument(
         "--duration", type=duration_seconds, help="stop after this long (seconds, or 30s, 5m, 2h)"
     )
     parser.add_argument("--max-messages", type=positive_int, help="stop after this many messages")
-    parser.set_defaults(run=lambda graph, a: _record(graph, a, ros1))
 
 
-def _record(graph: Any, args: argparse.Namespace, ros1: bool) -> None:
-    from ros2cmd.bag.record import record
+def _ros1_record(graph: Any, args: argparse.Namespace) -> None:
+    from ros2cmd.bag.record import RecordOptions, record
 
     if args.topics and args.all:
         raise ToolError("give topics or -a, not both")
-    record(graph, args.topics, args.all, args.output, args.duration, args.max_messages, ros1)
+    if not args.topics and not args.all:
+        raise ToolError("name the topics to record, or give -a for all of them")
+    options = RecordOptions(
+        topics=args.topics,
+        all_topics=args.all,
+        include_hidden_topics=bool(args.topics),  # a topic named is recorded, hidden or not
+        duration=args.duration,
+        max_messages=args.max_messages,
+        keyboard=False,
+        ros1=True,
+    )
+    record(graph, options, args.output)
 
 
-def _play_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
+def _ros1_play_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("bag", help="the bag's folder (or one .mcap file)")
     parser.add_argument("-r", "--rate", type=positive_rate, default=1.0, help="speed factor")
     parser.add_argument("-l", "--loop", action="store_true", help="play again and again")
     parser.add_argument("--topics", nargs="+", metavar="TOPIC", help="play only these")
     parser.add_argument(
-        *(["-s"] if ros1 else []),
+        "-s",
         "--start-offset",
-        *(["--start"] if ros1 else []),
+        "--start",
         dest="start_offset",
         type=offset_seconds,
         default=0.0,
         help="start this many seconds into the bag",
     )
+    _remap_argument(parser)
+    _wait_argument(parser)
+    parser.set_defaults(run=_ros1_play, offline=False)
+
+
+def _remap_argument(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "-m",
         "--remap",
@@ -93,34 +117,48 @@ def _play_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
         metavar="FROM:=TO",
         help="publish a topic under another name",
     )
+
+
+def _wait_argument(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--wait-for-subscribers",
         action="store_true",
         help="wait (up to --timeout) for a subscriber on each topic before publishing",
     )
-    parser.set_defaults(run=_play, offline=False)
 
 
-def _play(graph: Any, args: argparse.Namespace) -> None:
-    from ros2cmd.bag.play import PlayOptions, parse_remap, play
-    from ros2cmd.graph import until_stopped
+def _ros1_play(graph: Any, args: argparse.Namespace) -> None:
+    from ros2cmd.bag.play import PlayOptions
 
-    remaps = dict(parse_remap(text) for text in args.remap)
     options = PlayOptions(
         rate=args.rate,
         loop=args.loop,
         topics=args.topics,
         start_offset=args.start_offset,
-        remaps=remaps,
+        remaps=_remaps(args.remap),
         wait_for_subscribers=args.wait_for_subscribers,
+        ros1=True,
     )
+    _run_play(graph, args.bag, options)
+
+
+def _remaps(rules: list[str]) -> dict[str, str]:
+    from ros2cmd.bag.play import parse_remap
+
+    return dict(parse_remap(text) for text in rules)
+
+
+def _run_play(graph: Any, bag: str, options: Any) -> None:
+    from ros2cmd.bag.play import play
+    from ros2cmd.graph import until_stopped
+
     # SIGTERM like Ctrl-C: stop publishing, no traceback from a context shut down under us.
     signal.signal(signal.SIGTERM, signal.default_int_handler)
-    if args.loop:  # runs until Ctrl-C: that is its normal end
+    if options.loop and options.ros1:  # runs until Ctrl-C: that is its normal end
         with until_stopped():
-            play(graph, args.bag, options)
+            play(graph, bag, options)
         return
-    play(graph, args.bag, options)
+    play(graph, bag, options)
 
 
 def _reindex(path: str) -> None:
@@ -128,11 +166,6 @@ def _reindex(path: str) -> None:
 
     bag = reindex(path)
     print(f"Reindexed {path}: {bag.message_count} messages, metadata.yaml rewritten")
-
-
-def _info_arguments(parser: argparse.ArgumentParser, ros1: bool) -> None:
-    parser.add_argument("bag", help="the bag's folder (or one .mcap file)")
-    parser.set_defaults(run=lambda _graph, a: bag_info.print_info(a.bag, ros1), offline=True)
 
 
 def _timeout_option() -> argparse.ArgumentParser:
@@ -149,30 +182,45 @@ def _timeout_option() -> argparse.ArgumentParser:
     return option
 
 
-def _add_commands(sub: argparse._SubParsersAction, ros1: bool) -> None:
-    _record_arguments(sub.add_parser("record", help="record topics into a new bag"), ros1)
-    _info_arguments(sub.add_parser("info", help="what a bag holds"), ros1)
+def _add_reindex(sub: argparse._SubParsersAction) -> None:
     reindex = sub.add_parser(
         "reindex", help="give an unfinished recording its summary and metadata.yaml"
     )
     reindex.add_argument("bag", help="the bag's folder")
     reindex.set_defaults(run=lambda _graph, a: _reindex(a.bag), offline=True)
-    play_parser = sub.add_parser(
-        "play", parents=[_timeout_option()], help="publish a bag's messages"
+
+
+def _add_ros1_commands(sub: argparse._SubParsersAction) -> None:
+    _ros1_record_arguments(sub.add_parser("record", help="record topics into a new bag"))
+    info = sub.add_parser("info", help="what a bag holds")
+    info.add_argument("bag", help="the bag's folder (or one .mcap file)")
+    info.set_defaults(run=lambda _graph, a: bag_info.print_info(a.bag, True), offline=True)
+    _add_reindex(sub)
+    play = sub.add_parser("play", parents=[_timeout_option()], help="publish a bag's messages")
+    _ros1_play_arguments(play)
+
+
+def _add_ros2_commands(sub: argparse._SubParsersAction) -> None:
+    from ros2cmd.bag import ros2
+
+    ros2.add_info(sub.add_parser("info", help="Print information about a bag to the screen"))
+    ros2.add_play(
+        sub.add_parser("play", parents=[_timeout_option()], help="Play back ROS data from a bag")
     )
-    _play_arguments(play_parser, ros1)
+    ros2.add_record(sub.add_parser("record", help="Record ROS data to a bag"))
+    _add_reindex(sub)
 
 
 def register(verbs: argparse._SubParsersAction, _common: argparse.ArgumentParser) -> None:
     parser = verbs.add_parser("bag", help="bags: record, info, play (rosbag2, MCAP storage)")
-    _add_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True), False)
+    _add_ros2_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True))
 
 
 def rosbag_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="rosbag", description="ROS 1's rosbag, on ROS 2 bags (see: ros2 bag)"
     )
-    _add_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True), True)
+    _add_ros1_commands(parser.add_subparsers(dest="command", metavar="COMMAND", required=True))
     return parser
 
 
@@ -194,7 +242,7 @@ def rosbag(argv: Sequence[str] | None = None) -> int:
 
 def _offline_only(command: str, argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="rosbag")
-    _add_commands(parser.add_subparsers(dest="command", required=True), True)
+    _add_ros1_commands(parser.add_subparsers(dest="command", required=True))
     args = parser.parse_args([command, *argv])
     try:
         args.run(None, args)

@@ -66,3 +66,35 @@ def message_definition(type_name: str) -> str:
         return result
 
     return append(type_name, MAX_DEPTH)
+
+
+def service_definition(service_type: str) -> tuple[str, str]:
+    """(text, encoding) of a service event topic's schema, as rosbag2 (Jazzy) writes it.
+
+    rosbag2 looks up the service (`pkg/srv/Name`, the event type without `_Event`): a line
+    of '=' and `SRV: pkg/srv/Name`, the .srv file, then each message type it uses as above.
+    The encoding is "ros2msg" only when some message type was appended; a .srv of primitive
+    fields alone (AddTwoInts) gets "unknown", which is what rosbag2 stores for it.
+    """
+    package, _, base = service_type.split("/")
+    text = DELIMITER + f"SRV: {service_type}\n" + definition_path(package, "srv", base).read_text()
+    seen = {service_type}
+    encoding = "unknown"
+
+    def append(name: str, depth: int) -> str:
+        if depth <= 0:
+            raise ToolError(f"definition of {service_type} nests too deep")
+        dependency_package, body = _read_msg(name)
+        result = body
+        for dependency in dependencies(body, dependency_package):
+            if dependency not in seen:
+                seen.add(dependency)
+                result += "\n" + DELIMITER + f"MSG: {dependency}\n" + append(dependency, depth - 1)
+        return result
+
+    for dependency in dependencies(text.split("\n", 2)[2], package):
+        if dependency not in seen:
+            seen.add(dependency)
+            text += "\n" + DELIMITER + f"MSG: {dependency}\n" + append(dependency, MAX_DEPTH)
+            encoding = SCHEMA_ENCODING
+    return text, encoding

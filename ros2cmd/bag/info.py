@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 import time
 
-from ros2cmd.bag.storage import NS, Bag, BagReader
+from ros2cmd.bag.storage import NS, Bag, BagReader, TopicInfo
 
 
 def _stamp(nanoseconds: int) -> tuple[str, str, str]:
@@ -35,28 +35,115 @@ def file_size(size: float, units: tuple[str, ...] = ("B", "KiB", "MiB", "GiB", "
     return f"{size:.{0 if index == 0 else 1}f} {units[index]}"
 
 
-def ros2_info(bag: Bag) -> str:
-    """The layout of ROS 2 Jazzy's `ros2 bag info`."""
-    pad = " " * 19
+SERVICE_EVENT_SUFFIX = "/_service_event"  # rcl's RCL_SERVICE_INTROSPECTION_TOPIC_POSTFIX
+
+
+def is_service_event_topic(name: str, type_name: str) -> bool:
+    """rosbag2_cpp's test: the topic ends in /_service_event, the type is pkg/srv/Name_Event."""
+    return (
+        len(name) > len(SERVICE_EVENT_SUFFIX)
+        and name.endswith(SERVICE_EVENT_SUFFIX)
+        and "/srv/" in type_name
+        and len(type_name) > len("_Event")
+        and type_name.endswith("_Event")
+    )
+
+
+def service_name(event_topic: str) -> str:
+    return event_topic[: -len(SERVICE_EVENT_SUFFIX)]
+
+
+def service_type(event_type: str) -> str:
+    return event_type[: -len("_Event")]
+
+
+PAD = " " * 19  # rosbag2: the longest field name ("Topic information:") and a space
+
+
+def ros2_info(bag: Bag, only_topics: bool = False) -> str:
+    """The layout of ROS 2 Jazzy's `ros2 bag info` (rosbag2_py's format_bag_meta_data).
+
+    Service event topics are counted apart: `Messages:` leaves them out, `Service:` lists them.
+    """
+    services = [t for t in bag.topics.values() if is_service_event_topic(t.name, t.type)]
+    topics = [t for t in bag.topics.values() if t not in services]
     lines = [""]
     names = [path.name for path in bag.files]
-    lines.append("Files:             " + f"\n{pad}".join(names))
+    lines.append("Files:             " + f"\n{PAD}".join(names))
     lines.append(f"Bag size:          {file_size(bag.size)}")
     lines.append(f"Storage id:        {bag.storage_id}")
     lines.append(f"ROS Distro:        {bag.ros_distro or 'unknown'}")
     lines.append(f"Duration:          {_stamp(bag.duration)[2]}s")
     lines.append(f"Start:             {_time_point(bag.start)}")
     lines.append(f"End:               {_time_point(bag.end)}")
-    lines.append(f"Messages:          {bag.message_count}")
-    topics = [
+    event_count = sum(t.message_count for t in services)
+    lines.append(f"Messages:          {bag.message_count - event_count}")
+    topic_lines = [
         f"Topic: {t.name} | Type: {t.type} | Count: {t.message_count} | "
         f"Serialization Format: {t.serialization_format}"
-        for t in bag.topics.values()
+        for t in topics
     ]
-    lines.append("Topic information: " + f"\n{pad}".join(topics))
-    lines.append("Service:           0")
-    lines.append("Service information: ")
-    return "\n".join(lines)
+    lines.append("Topic information: " + f"\n{PAD}".join(topic_lines))
+    if only_topics:
+        return "\n".join(lines) + "\n"
+    lines.append(f"Service:           {len(services)}")
+    service_lines = [
+        f"Service: {service_name(t.name)} | Type: {service_type(t.type)} | "
+        f"Event Count: {t.message_count} | Serialization Format: {t.serialization_format}"
+        for t in services
+    ]
+    text = "\n".join(lines) + "\nService information: "
+    if service_lines:
+        text += f"\n{PAD}  ".join(service_lines) + "\n"
+    return text
+
+
+def topic_names(bag: Bag) -> str:
+    """`ros2 bag info -t`: the topics' names, service event topics left out."""
+    return "\n".join(
+        t.name for t in bag.topics.values() if not is_service_event_topic(t.name, t.type)
+    )
+
+
+def service_counts(reader: BagReader) -> list[tuple[TopicInfo, int, int]]:
+    """Per service event topic: (topic, requests, responses), each counted once per client
+    and sequence number however many events (sent, received) tell of it (rosbag2's
+    Info::read_service_info)."""
+    from rclpy.serialization import deserialize_message
+    from service_msgs.msg import ServiceEventInfo
+
+    services = {
+        t.name: t for t in reader.bag.topics.values() if is_service_event_topic(t.name, t.type)
+    }
+    seen: dict[str, tuple[set, set]] = {name: (set(), set()) for name in services}
+    for message in reader.messages(list(services)):
+        # An event's CDR starts with its ServiceEventInfo, which reads on its own.
+        info = deserialize_message(message.data, ServiceEventInfo)
+        key = (bytes(info.client_gid), info.sequence_number)
+        requests, responses = seen[message.topic]
+        if info.event_type in (ServiceEventInfo.REQUEST_SENT, ServiceEventInfo.REQUEST_RECEIVED):
+            requests.add(key)
+        elif info.event_type in (
+            ServiceEventInfo.RESPONSE_SENT,
+            ServiceEventInfo.RESPONSE_RECEIVED,
+        ):
+            responses.add(key)
+    return [(services[name], len(r), len(s)) for name, (r, s) in seen.items()]
+
+
+def ros2_service_info(counts: list[tuple[TopicInfo, int, int]]) -> str:
+    """`ros2 bag info -v`'s service part (rosbag2_py's format_service_info)."""
+    head = "Service information: "
+    lines = [
+        f"Service: {service_name(t.name)} | Type: {service_type(t.type)} | "
+        f"Request Count: {requests} | Response Count: {responses} | "
+        f"Serialization Format: {t.serialization_format}"
+        for t, requests, responses in counts
+    ]
+    text = f"Service:           {len(counts)}\n{head}"
+    if lines:
+        text += f"\n{' ' * len(head)}".join(lines) + "\n"
+    return text
 
 
 def ros1_info(bag: Bag) -> str:
@@ -102,4 +189,27 @@ def print_info(path: str, ros1: bool = False) -> None:
         bag = reader.bag
     for warning in bag.warnings:
         print(f"warning: {warning}", file=sys.stderr)
+    # Printed as ros2bag prints it: print() of a text that ends in a line break already.
     print(ros1_info(bag) if ros1 else ros2_info(bag))
+
+
+def print_ros2_info(path: str, topic_name: bool, verbose: bool) -> None:
+    """`ros2 bag info BAG [-t] [-v]`."""
+    if topic_name and verbose:
+        print(
+            "Warning! You have set both the '-t' and '-v' parameters. The '-t' parameter "
+            "will be ignored."
+        )
+    with BagReader(path) as reader:
+        bag = reader.bag
+        counts = service_counts(reader) if verbose else []
+    for warning in bag.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    if verbose:
+        print(ros2_info(bag, only_topics=True) + ros2_service_info(counts))
+    elif topic_name:
+        names = topic_names(bag)
+        if names:
+            print(names)
+    else:
+        print(ros2_info(bag))

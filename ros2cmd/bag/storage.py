@@ -184,7 +184,10 @@ class FileInfo:
 
 
 def bag_metadata(
-    topics: Iterable[TopicInfo], files: list[FileInfo], ros_distro: str = ""
+    topics: Iterable[TopicInfo],
+    files: list[FileInfo],
+    ros_distro: str = "",
+    custom_data: dict[str, str] | None = None,
 ) -> dict[str, Any]:
     """rosbag2's BagMetadata as its yaml.hpp encodes it (the inner mapping of metadata.yaml)."""
     counted = [f for f in files if f.message_count]
@@ -209,7 +212,7 @@ def bag_metadata(
             }
             for f in files
         ],
-        "custom_data": None,
+        "custom_data": custom_data or None,
         "ros_distro": ros_distro,
     }
 
@@ -287,8 +290,10 @@ class BagWriter:
         ros_distro: str | None = None,
         chunk_size: int = CHUNK_SIZE,
         flush_period: float = FLUSH_PERIOD,
+        custom_data: dict[str, str] | None = None,
     ) -> None:
         self.folder = Path(folder)
+        self.custom_data = custom_data
         if self.folder.exists():
             raise BagError(f"{self.folder} already exists; not overwriting it (choose another -o)")
         try:
@@ -336,8 +341,10 @@ class BagWriter:
                 TopicInfo(**{**t.__dict__, "message_count": counts.get(t.name, 0)})
                 for t in self.topics.values()
             ]
-            return bag_metadata(topics, [file_info], self.ros_distro)
-        return bag_metadata(self.topics.values(), [self.file_info], self.ros_distro)
+            return bag_metadata(topics, [file_info], self.ros_distro, self.custom_data)
+        return bag_metadata(
+            self.topics.values(), [self.file_info], self.ros_distro, self.custom_data
+        )
 
     def add_topic(self, topic: TopicInfo, definition: str, schema_encoding: str) -> None:
         """A topic's channel (and its type's schema, once per type)."""
