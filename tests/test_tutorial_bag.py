@@ -257,7 +257,6 @@ def test_record_inspect_and_replay_a_service(ros_domain, tmp_path, executor) -> 
         log_lines(recorder.output, "rosbag2_recorder"),
         [
             "Press SPACE for pausing/resuming",
-            "Event publisher thread: Starting",
             "Listening for topics...",
             "Subscribed to topic '/add_two_ints/_service_event'",
             "Recording...",

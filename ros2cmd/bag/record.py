@@ -341,7 +341,6 @@ def record(graph: Graph, options: RecordOptions, output: str | None) -> None:
         except BagError as failure:
             error = error or failure
         if node is not None:
-            recorder.info("Event publisher thread: Exiting")
             recorder.info("Recording stopped")
             graph.executor.remove_node(node)
             node.destroy_node()
@@ -369,9 +368,8 @@ def _run(
     else:
         if options.keyboard:
             recorder.info("Press SPACE for pausing/resuming")
-        # rosbag2 starts a thread that publishes bag split events (rosbag2_interfaces, not
-        # installed here; no split happens either): its line is kept for the page's output.
-        recorder.info("Event publisher thread: Starting")
+        # (rosbag2 logs "Event publisher thread: Starting" here: its thread publishes bag split
+        # events. This recorder neither splits bags nor has that thread, so it says nothing.)
         recorder.info("Listening for topics...")
         # What runs already is subscribed before "Recording...", as the page shows it: the
         # graph first holds every participant running now (rosbag2 looks at once, and a
