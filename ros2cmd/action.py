@@ -96,8 +96,15 @@ def send_goal(
     goal = fill_message(action_type.Goal(), values)
     client = ActionClient(graph.node, action_type, action)
 
+    # Feedback can come in the same spin as the server's acceptance, before this has printed
+    # `Goal accepted`: keep it until then, so that the blocks come in ros2action's order.
+    early: list[Any] | None = []
+
     def on_feedback(message: Any) -> None:
-        print(_block("Feedback", message.feedback), flush=True)
+        if early is not None:
+            early.append(message)
+        else:
+            print(_block("Feedback", message.feedback), flush=True)
 
     # While the goal is ours, Ctrl-C only sets a flag: ROS must keep running to cancel it.
     ctrl_c = CtrlC()
@@ -121,6 +128,9 @@ def send_goal(
         if not goal_handle.accepted:
             raise ToolFailure("Goal was rejected.")
         print(f"Goal accepted with ID: {bytes(goal_handle.goal_id.uuid).hex()}\n", flush=True)
+        waiting, early = early, None
+        for message in waiting:
+            on_feedback(message)
         result = goal_handle.get_result_async()
         # A goal may run for long: no timeout; Ctrl-C or a lost server ends the wait.
         spin_until(graph.executor, result.done, client=client, interrupted=interrupted)
