@@ -12,9 +12,12 @@ import re
 import shlex
 
 import pytest
-from helpers import BIN, fails, run
+from helpers import BIN, fails, run, spin_until
+from rclpy.action import ActionClient
+from rclpy.node import Node
 from test_turtlesim_processes import HEADLESS, Terminal
 from test_tutorial_parameters import TURTLESIM, page, shared_turtlesim  # noqa: F401
+from turtlesim.action import RotateAbsolute
 
 ROTATE = "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute"
 GOAL_ID = re.compile(r"Goal accepted with ID: [0-9a-f]{32}")
@@ -99,48 +102,75 @@ def test_ctrl_c_cancels_the_goal(turtlesim, node_process):
     turtlesim.wait_for_text("Rotation goal canceled")
 
 
-def test_info_and_list_options(shared_turtlesim):  # noqa: F811
-    assert page("ros2 action info /turtle1/rotate_absolute -t -c").splitlines() == [
-        "Action: /turtle1/rotate_absolute",
-        "Action clients: 0",
-        "Action servers: 1",
+def test_a_goal_the_server_aborts_ends_with_its_status_and_exit_1(
+    turtlesim, node_process, executor
+):
+    """The page's D then G: a new goal aborts the one running (here sent by the test itself,
+    at once, while the first has 3 s to go)."""
+    words = shlex.split(f'{ROTATE} "{{theta: 3.0}}" --feedback')
+    first = node_process(str(BIN / words[0]), *words[1:])
+    first.wait_for_text("Feedback:")
+    node = Node("second_client", context=executor.context)
+    executor.add_node(node)
+    client = ActionClient(node, RotateAbsolute, "/turtle1/rotate_absolute")
+    try:
+        spin_until(executor, client.server_is_ready, what="the action server")
+        sent = client.send_goal_async(RotateAbsolute.Goal(theta=0.0))
+        spin_until(executor, sent.done, what="the second goal accepted")
+        assert first.wait() == 1
+    finally:
+        client.destroy()  # destroy_node leaves an action client (and so its node) alive
+    assert first.output.splitlines()[-2:] == [
+        "Goal finished with status: ABORTED",
+        "error: the goal did not succeed: ABORTED",
     ]
-    assert page("ros2 action info turtle1/rotate_absolute --show-types").splitlines()[-1] == (
-        "    /turtlesim [turtlesim/action/RotateAbsolute]"
+    turtlesim.wait_for_text("Rotation goal received before a previous goal finished")
+
+
+class TestAgainstOneTurtlesim:
+    """Commands that leave turtlesim as it is: one turtlesim for them all."""
+
+    def test_info_and_list_options(self, shared_turtlesim):  # noqa: F811
+        assert page("ros2 action info /turtle1/rotate_absolute -t -c").splitlines() == [
+            "Action: /turtle1/rotate_absolute",
+            "Action clients: 0",
+            "Action servers: 1",
+        ]
+        assert page("ros2 action info turtle1/rotate_absolute --show-types").splitlines()[-1] == (
+            "    /turtlesim [turtlesim/action/RotateAbsolute]"
+        )
+        assert page("ros2 action list -c") == "1\n"
+        stdin = run(*shlex.split(f"{ROTATE} --stdin"), input="theta: 0.0\n")
+        assert stdin.returncode == 0, stdin.stderr
+        assert "     theta: 0.0" in stdin.stdout.splitlines()
+
+    @pytest.mark.parametrize(
+        "line,expected",
+        [
+            (
+                "ros2 action info /nope --timeout 1",
+                "error: unknown action '/nope': no server or client seen (waited 1 s)",
+            ),
+            (
+                "ros2 action type /nope --timeout 1",
+                "error: unknown action '/nope': not seen in the graph (waited 1 s)",
+            ),
+            (
+                "ros2 action send_goal /nope turtlesim/action/RotateAbsolute '{}' --timeout 1",
+                "error: no action server for '/nope' (waited 1 s)",
+            ),
+            (f'{ROTATE} "{{theta: .nan}}"', "Goal was rejected."),  # turtlesim refuses it
+            (f'{ROTATE} "{{heading: 1}}"', "error: 'heading' is not a field of "),
+            (f'{ROTATE} "{{theta: one}}"', "error: theta is a number (float), got 'one'"),
+            (f'{ROTATE} "{{theta: 1"', "error: invalid YAML"),
+            (
+                "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/Nope '{}'",
+                "error: unknown action type 'turtlesim/action/Nope'",
+            ),
+        ],
     )
-    assert page("ros2 action list -c") == "1\n"
-    stdin = run(*shlex.split(f"{ROTATE} --stdin"), input="theta: 0.0\n")
-    assert stdin.returncode == 0, stdin.stderr
-    assert "     theta: 0.0" in stdin.stdout.splitlines()
-
-
-@pytest.mark.parametrize(
-    "line,expected",
-    [
-        (
-            "ros2 action info /nope --timeout 1",
-            "error: unknown action '/nope': no server or client seen (waited 1 s)",
-        ),
-        (
-            "ros2 action type /nope --timeout 1",
-            "error: unknown action '/nope': not seen in the graph (waited 1 s)",
-        ),
-        (
-            "ros2 action send_goal /nope turtlesim/action/RotateAbsolute '{theta: 1}' --timeout 1",
-            "error: no action server for '/nope' (waited 1 s)",
-        ),
-        (f'{ROTATE} "{{theta: .nan}}"', "Goal was rejected."),  # turtlesim refuses it
-        (f'{ROTATE} "{{heading: 1}}"', "error: 'heading' is not a field of "),
-        (f'{ROTATE} "{{theta: one}}"', "error: theta is a number (float), got 'one'"),
-        (f'{ROTATE} "{{theta: 1"', "error: invalid YAML"),
-        (
-            "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/Nope '{}'",
-            "error: unknown action type 'turtlesim/action/Nope'",
-        ),
-    ],
-)
-def test_bad_input_is_one_line(shared_turtlesim, line, expected):  # noqa: F811
-    assert fails(*shlex.split(line)).startswith(expected)
+    def test_bad_input_is_one_line(self, shared_turtlesim, line, expected):  # noqa: F811
+        assert fails(*shlex.split(line)).startswith(expected)
 
 
 def test_usage_is_exit_2():
