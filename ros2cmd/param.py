@@ -49,21 +49,31 @@ from ros2cmd.graph import Graph, split_node_name
 from ros2cmd.messages import parse_yaml
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
-# How `ros2 param get` names the value types ...
-TYPE_NAMES = {
-    ParameterType.PARAMETER_BOOL: "Boolean",
-    ParameterType.PARAMETER_INTEGER: "Integer",
-    ParameterType.PARAMETER_DOUBLE: "Double",
-    ParameterType.PARAMETER_STRING: "String",
-    ParameterType.PARAMETER_BYTE_ARRAY: "Byte array",
-    ParameterType.PARAMETER_BOOL_ARRAY: "Boolean array",
-    ParameterType.PARAMETER_INTEGER_ARRAY: "Integer array",
-    ParameterType.PARAMETER_DOUBLE_ARRAY: "Double array",
-    ParameterType.PARAMETER_STRING_ARRAY: "String array",
+# How `ros2 param describe` and `list --param-type` name the types ...
+DESCRIBED_TYPES = {
+    ParameterType.PARAMETER_BOOL: "boolean",
+    ParameterType.PARAMETER_INTEGER: "integer",
+    ParameterType.PARAMETER_DOUBLE: "double",
+    ParameterType.PARAMETER_STRING: "string",
+    ParameterType.PARAMETER_BYTE_ARRAY: "byte array",
+    ParameterType.PARAMETER_BOOL_ARRAY: "boolean array",
+    ParameterType.PARAMETER_INTEGER_ARRAY: "integer array",
+    ParameterType.PARAMETER_DOUBLE_ARRAY: "double array",
+    ParameterType.PARAMETER_STRING_ARRAY: "string array",
+    ParameterType.PARAMETER_NOT_SET: "not set",
 }
-# ... and how `ros2 param describe` does.
-DESCRIBED_TYPES = {code: name.lower() for code, name in TYPE_NAMES.items()}
-DESCRIBED_TYPES[ParameterType.PARAMETER_NOT_SET] = "not set"
+# ... and how `ros2 param get` introduces a value of each.
+GET_LABELS = {
+    ParameterType.PARAMETER_BOOL: "Boolean value is:",
+    ParameterType.PARAMETER_INTEGER: "Integer value is:",
+    ParameterType.PARAMETER_DOUBLE: "Double value is:",
+    ParameterType.PARAMETER_STRING: "String value is:",
+    ParameterType.PARAMETER_BYTE_ARRAY: "Byte values are:",
+    ParameterType.PARAMETER_BOOL_ARRAY: "Boolean values are:",
+    ParameterType.PARAMETER_INTEGER_ARRAY: "Integer values are:",
+    ParameterType.PARAMETER_DOUBLE_ARRAY: "Double values are:",
+    ParameterType.PARAMETER_STRING_ARRAY: "String values are:",
+}
 
 # One AsyncParameterClient per (tool run, node): its six service clients live as long as the
 # tool's node (rclpy has no call to destroy them earlier).
@@ -243,19 +253,6 @@ class ParamsFile:
 
 
 # The commands, as `ros2 param` (ros2param, Jazzy) prints them.
-
-# `ros2 param get`: how each type is introduced.
-GET_LABELS = {
-    ParameterType.PARAMETER_BOOL: "Boolean value is:",
-    ParameterType.PARAMETER_INTEGER: "Integer value is:",
-    ParameterType.PARAMETER_DOUBLE: "Double value is:",
-    ParameterType.PARAMETER_STRING: "String value is:",
-    ParameterType.PARAMETER_BYTE_ARRAY: "Byte values are:",
-    ParameterType.PARAMETER_BOOL_ARRAY: "Boolean values are:",
-    ParameterType.PARAMETER_INTEGER_ARRAY: "Integer values are:",
-    ParameterType.PARAMETER_DOUBLE_ARRAY: "Double values are:",
-    ParameterType.PARAMETER_STRING_ARRAY: "String values are:",
-}
 
 
 def _listing_order(full_name: str) -> tuple[str, str, str]:
