@@ -1,4 +1,10 @@
-"""`ros2 action ...`: list actions and send a goal, showing feedback (like `ros2 action`)."""
+"""`ros2 action ...` (list, info, type, send_goal), printed as ROS 2 Jazzy's ros2action does.
+
+`send_goal` prints the goal, its ID, the feedback (with --feedback), the result and the final
+status in ros2action's layout; Ctrl-C cancels the goal on the server (`Canceling goal...`,
+`Goal canceled.`) and ends with exit status 130. Where ros2action would wait forever (for a
+server that never comes), this waits --timeout seconds and says why it stops.
+"""
 
 from __future__ import annotations
 
@@ -12,50 +18,69 @@ from rclpy.action import ActionClient
 from rclpy.action.graph import get_action_names_and_types
 
 from ros2cmd.action_goal import CtrlC, cancel_goal
-from ros2cmd.errors import ToolError
-from ros2cmd.graph import Graph, absolute_name, add_list_and_type, print_names
+from ros2cmd.errors import ToolError, ToolFailure
+from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
 from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
 from ros2cmd.typenames import load_type
 from ros2cmd.wait import Interrupted, ServerLost, spin_until
+from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
 STATUS_NAMES = {
+    GoalStatus.STATUS_ACCEPTED: "ACCEPTED",
+    GoalStatus.STATUS_EXECUTING: "EXECUTING",
+    GoalStatus.STATUS_CANCELING: "CANCELING",
     GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
     GoalStatus.STATUS_CANCELED: "CANCELED",
     GoalStatus.STATUS_ABORTED: "ABORTED",
 }
 
 
-def _indented(msg: Any) -> str:
-    return "\n".join("    " + line for line in message_to_yaml(msg).splitlines())
-
-
 def action_types(graph: Graph) -> dict[str, list[str]]:
     return dict(get_action_names_and_types(graph.node))
 
 
-def list_actions(graph: Graph, show_types: bool = False) -> None:
+def list_actions(graph: Graph, show_types: bool = False, count: bool = False) -> None:
+    """`ros2 action list [-t] [-c]`: the actions (each with its type), or how many."""
+    if count:
+        graph.settle()
+        print(len(action_types(graph)))
+        return
     print_names(graph, lambda: action_types(graph), show_types)
 
 
 def print_type(graph: Graph, action: str) -> None:
+    """`ros2 action type ACTION`: its type (each, if servers and clients disagree)."""
     action = absolute_name(action)
     types = graph.wait_for(
-        lambda: action_types(graph).get(action), f"unknown action '{action}': no server seen"
+        lambda: action_types(graph).get(action), f"unknown action '{action}': not seen in the graph"
     )
-    print(types[0])
+    graph.finish()
+    for type_name in types:
+        print(type_name)
 
 
-class _Say:
-    """How send_goal's cancel reports, in the tool's plain style (see action_goal.cancel_goal)."""
+def info(graph: Graph, action: str, show_types: bool = False, count: bool = False) -> None:
+    """`ros2 action info ACTION`: its clients and servers (node names), once discovery of
+    what was running has settled."""
+    action = absolute_name(action)
+    graph.settle()
+    entry: ServiceInfo = graph.wait_for(
+        lambda: graph.snapshot().actions.get(action),
+        f"unknown action '{action}': no server or client seen",
+    )
+    graph.finish()
+    print(f"Action: {action}")
+    for title, nodes in (("Action clients", entry.clients), ("Action servers", entry.servers)):
+        print(f"{title}: {len(nodes)}")
+        if not count:
+            for node in nodes:
+                print(f"    {node} [{', '.join(entry.types)}]" if show_types else f"    {node}")
 
-    def info(self, message: str) -> None:
-        print(message, flush=True)
 
-    def warning(self, message: str) -> None:
-        print(f"warning: {message}", file=sys.stderr, flush=True)
-
-    def error(self, message: str) -> None:
-        print(f"error: {message}", file=sys.stderr, flush=True)
+def _block(title: str, msg: Any, indent: str = "    ") -> str:
+    # ros2action prints `Title:\n    ` + the YAML (which ends with a newline) + print's own
+    # newline: the first line indented, a blank line after.
+    return f"{title}:\n{indent}{message_to_yaml(msg)}\n"
 
 
 def send_goal(
@@ -71,8 +96,15 @@ def send_goal(
     goal = fill_message(action_type.Goal(), values)
     client = ActionClient(graph.node, action_type, action)
 
+    # Feedback can come in the same spin as the server's acceptance, before this has printed
+    # `Goal accepted`: keep it until then, so that the blocks come in ros2action's order.
+    early: list[Any] | None = []
+
     def on_feedback(message: Any) -> None:
-        print(f"Feedback:\n{_indented(message.feedback)}\n", flush=True)
+        if early is not None:
+            early.append(message)
+        else:
+            print(_block("Feedback", message.feedback), flush=True)
 
     # While the goal is ours, Ctrl-C only sets a flag: ROS must keep running to cancel it.
     ctrl_c = CtrlC()
@@ -85,7 +117,7 @@ def send_goal(
             graph.executor, client.server_is_ready, graph.timeout, interrupted=interrupted
         ):
             raise ToolError(f"no action server for '{action}' (waited {graph.timeout:g} s)")
-        print(f"Sending goal:\n{_indented(goal)}\n", flush=True)
+        print(_block("Sending goal", goal, indent="     "), flush=True)
         sent = client.send_goal_async(goal, feedback_callback=on_feedback if feedback else None)
         # From now on the server must stay (client=): one that crashed would never answer.
         if not spin_until(
@@ -94,15 +126,16 @@ def send_goal(
             raise ToolError(f"no answer to the goal from '{action}' (waited {graph.timeout:g} s)")
         goal_handle = sent.result()
         if not goal_handle.accepted:
-            raise ToolError(f"goal rejected by the server of '{action}'")
+            raise ToolFailure("Goal was rejected.")
         print(f"Goal accepted with ID: {bytes(goal_handle.goal_id.uuid).hex()}\n", flush=True)
+        waiting, early = early, None
+        for message in waiting:
+            on_feedback(message)
         result = goal_handle.get_result_async()
         # A goal may run for long: no timeout; Ctrl-C or a lost server ends the wait.
         spin_until(graph.executor, result.done, client=client, interrupted=interrupted)
     except Interrupted:
-        answer = cancel_goal(graph.executor, client, sent, result, _Say())
-        if answer is not None:
-            _print_result(answer)
+        _cancel(graph, client, sent)
         raise
     except ServerLost:
         raise ToolError(
@@ -113,30 +146,92 @@ def send_goal(
     answer = result.result()
     if answer.status == GoalStatus.STATUS_SUCCEEDED:
         graph.finish()
-    status = _print_result(answer)
-    if status != "SUCCEEDED":
-        raise ToolError(f"goal finished with status {status}")
-
-
-def _print_result(answer: Any) -> str:
-    """Print a GetResult response as `ros2 action send_goal` does; return the status name."""
-    print(f"Result:\n{_indented(answer.result)}\n")
-    status = STATUS_NAMES.get(answer.status, str(answer.status))
+    print(_block("Result", answer.result))
+    status = STATUS_NAMES.get(answer.status, "UNKNOWN")
     print(f"Goal finished with status: {status}", flush=True)
-    return status
+    if status != "SUCCEEDED":
+        raise ToolError(f"the goal did not succeed: {status}")
+
+
+def _cancel(graph: Graph, client: ActionClient, sent: Any) -> None:
+    """After Ctrl-C: cancel the goal if the server took it, in ros2action's words."""
+    response = cancel_goal(
+        graph.executor, client, sent, lambda: print("Canceling goal...", flush=True)
+    )
+    if sent is None or not sent.done() or not sent.result().accepted:
+        return  # nothing was running on the server
+    if response is None:
+        print("error: no answer to the cancel request", file=sys.stderr, flush=True)
+    elif not response.goals_canceling:
+        print("error: Failed to cancel goal", file=sys.stderr, flush=True)
+    else:
+        print("Goal canceled.", flush=True)
+
+
+def _goal_values(args: argparse.Namespace) -> Any:
+    """The goal's YAML: the argument ('{}' if none), or with --stdin what stdin holds."""
+    text = args.goal
+    if args.stdin:
+        try:
+            text = sys.stdin.read(MAX_INPUT_BYTES + 1)
+        except UnicodeDecodeError:
+            raise ToolError("standard input is not text (not UTF-8)") from None
+        if len(text) > MAX_INPUT_BYTES:
+            raise ToolError("standard input holds more than 1 MiB; refusing it")
+    return parse_yaml(text)
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("action", help="actions: list, type, send_goal")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    parser = verbs.add_parser("action", help="Various action related sub-commands")
+    sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
-    add_list_and_type(sub, common, "action", list_actions, print_type)
-
-    p = sub.add_parser("send_goal", parents=[common], help="send a goal given as YAML")
-    p.add_argument("action")
-    p.add_argument("type", help="action type, e.g. ros_tutorials_interfaces/action/Fibonacci")
-    p.add_argument("values", help="the goal as YAML, e.g. '{order: 5}'")
-    p.add_argument("-f", "--feedback", action="store_true", help="print the feedback")
-    p.set_defaults(
-        run=lambda graph, a: send_goal(graph, a.action, a.type, parse_yaml(a.values), a.feedback)
+    p = sub.add_parser("info", parents=[common], help="Print information about an action")
+    p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    p.add_argument(
+        "-t", "--show-types", action="store_true", help="Additionally show the action type"
     )
+    p.add_argument(
+        "-c",
+        "--count",
+        action="store_true",
+        help="Only display the number of action clients and action servers",
+    )
+    p.set_defaults(run=lambda graph, a: info(graph, a.action_name, a.show_types, a.count))
+
+    p = sub.add_parser("list", parents=[common], help="Output a list of action names")
+    p.add_argument(
+        "-t", "--show-types", action="store_true", help="Additionally show the action type"
+    )
+    p.add_argument(
+        "-c",
+        "--count-actions",
+        action="store_true",
+        help="Only display the number of actions discovered",
+    )
+    p.set_defaults(run=lambda graph, a: list_actions(graph, a.show_types, a.count_actions))
+
+    p = sub.add_parser("send_goal", parents=[common], help="Send an action goal")
+    p.add_argument("action_name", help="Name of the ROS action (e.g. '/fibonacci')")
+    p.add_argument(
+        "action_type", help="Type of the ROS action (e.g. 'turtlesim/action/RotateAbsolute')"
+    )
+    given = p.add_mutually_exclusive_group()
+    given.add_argument(
+        "goal",
+        nargs="?",
+        default="{}",
+        help="Goal request values in YAML format (e.g. '{theta: 1.57}')",
+    )
+    given.add_argument("--stdin", action="store_true", help="Read goal from standard input")
+    p.add_argument(
+        "-f", "--feedback", action="store_true", help="Echo feedback messages for the goal"
+    )
+    p.set_defaults(
+        run=lambda graph, a: send_goal(
+            graph, a.action_name, a.action_type, _goal_values(a), a.feedback
+        )
+    )
+
+    p = sub.add_parser("type", parents=[common], help="Print a action's type")
+    p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    p.set_defaults(run=lambda graph, a: print_type(graph, a.action_name))

@@ -1,8 +1,8 @@
 """Waiting on an action goal without hanging, and canceling it on Ctrl-C.
 
-Used by ``ros2 action send_goal`` (the action lesson's client shows the same steps in its
-own lines). A goal may run for long, so its waits (``wait.spin_until``) stop at once on a
-Ctrl-C noted by ``CtrlC`` (``Interrupted``) and when the action server goes away (``ServerLost``).
+Used by ``ros2 action send_goal``. A goal may run for long, so its waits
+(``wait.spin_until``) stop at once on a Ctrl-C noted by ``CtrlC`` (``Interrupted``) and when
+the action server goes away (``ServerLost``).
 
 After Ctrl-C, ``cancel_goal`` asks the server to cancel the goal and waits a bounded time for
 the answer. That needs ROS still running, so the program must not let rclpy shut ROS down on
@@ -16,8 +16,9 @@ SIGINT: it initialises with ``signal_handler_options`` NO (or SIGTERM) and insta
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from types import FrameType
-from typing import Any, Protocol
+from typing import Any
 
 from rclpy.action import ActionClient
 from rclpy.executors import Executor
@@ -26,16 +27,6 @@ from rclpy.task import Future
 from ros2cmd.wait import ServerLost, spin_until
 
 CANCEL_TIMEOUT = 5.0
-
-
-class Log(Protocol):
-    """Where cancel_goal says what happens: an rclpy logger, or anything with these methods."""
-
-    def info(self, message: str) -> Any: ...
-
-    def warning(self, message: str) -> Any: ...
-
-    def error(self, message: str) -> Any: ...
 
 
 class CtrlC:
@@ -58,15 +49,14 @@ def cancel_goal(
     executor: Executor,
     client: ActionClient,
     goal_future: Future | None,
-    result_future: Future | None,
-    log: Log,
+    on_canceling: Callable[[], None],
     timeout: float = CANCEL_TIMEOUT,
 ) -> Any | None:
     """Cancel the goal sent (goal_future), if the server took it; wait at most timeout seconds.
 
-    Returns the goal's final GetResult response (with its status, CANCELED if the cancel
-    worked), or None: the goal was never accepted, or the server did not answer in time.
-    Not interruptible: a second Ctrl-C raises KeyboardInterrupt (see CtrlC).
+    Calls on_canceling() just before the cancel request goes out (to say so). Returns the
+    server's CancelGoal response, or None: the goal was never accepted, or the server did not
+    answer in time. Not interruptible: a second Ctrl-C raises KeyboardInterrupt (see CtrlC).
     """
     deadline = time.monotonic() + timeout
 
@@ -82,13 +72,5 @@ def cancel_goal(
     goal_handle = wait(goal_future) if goal_future is not None else None
     if goal_handle is None or not goal_handle.accepted:
         return None
-    log.info("Canceling goal")
-    response = wait(goal_handle.cancel_goal_async())
-    if response is None:
-        log.error(f"No answer to the cancel request within {timeout:g} s")
-        return None
-    if not response.goals_canceling:
-        log.warning("The server did not cancel the goal (it had already finished)")
-    if result_future is None:
-        result_future = goal_handle.get_result_async()
-    return wait(result_future)
+    on_canceling()
+    return wait(goal_handle.cancel_goal_async())

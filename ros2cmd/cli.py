@@ -116,7 +116,7 @@ def _execute(
         command(graph)
         status = 0
     except ToolError as error:
-        print(f"error: {error}", file=sys.stderr)
+        print(f"{error.prefix}{error}", file=sys.stderr)
         status = 1
     except NameValidationException as error:
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)

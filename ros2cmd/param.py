@@ -1,4 +1,7 @@
-"""`ros2 param ...`: a node's parameters through its parameter services (like `ros2 param`).
+"""`ros2 param ...` (list, get, set, delete, describe, dump, load): a node's parameters
+through its parameter services, printed as ROS 2 Jazzy's ros2param prints them
+(`Integer value is: 86`, `Set parameter successful`, the dump's `/node:` /
+`  ros__parameters:` YAML). The ROS 1 front-end (rosparam, ros1.py) uses the same functions.
 
 In ROS 2 every parameter belongs to a node, which answers on the services
 ``<node>/list_parameters``, ``<node>/get_parameters``, ``<node>/set_parameters``,
@@ -21,6 +24,7 @@ types each value from its text, so a quoted ``'5'`` is loaded as the integer 5.
 from __future__ import annotations
 
 import argparse
+import os
 import re
 import sys
 import tempfile
@@ -30,31 +34,46 @@ from typing import Any
 
 import yaml
 from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType
-from rclpy.parameter import Parameter, parameter_dict_from_yaml_file, parameter_value_to_python
+from rcl_interfaces.msg import ParameterType, ParameterValue
+from rclpy.parameter import (
+    PARAMETER_SEPARATOR_STRING,
+    Parameter,
+    parameter_dict_from_yaml_file,
+    parameter_value_to_python,
+)
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from ros2cmd.errors import ToolError
-from ros2cmd.graph import Graph
+from ros2cmd.errors import ToolError, ToolFailure
+from ros2cmd.graph import Graph, split_node_name
 from ros2cmd.messages import parse_yaml
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
-# How `ros2 param get` names the value types ...
-TYPE_NAMES = {
-    ParameterType.PARAMETER_BOOL: "Boolean",
-    ParameterType.PARAMETER_INTEGER: "Integer",
-    ParameterType.PARAMETER_DOUBLE: "Double",
-    ParameterType.PARAMETER_STRING: "String",
-    ParameterType.PARAMETER_BYTE_ARRAY: "Byte array",
-    ParameterType.PARAMETER_BOOL_ARRAY: "Boolean array",
-    ParameterType.PARAMETER_INTEGER_ARRAY: "Integer array",
-    ParameterType.PARAMETER_DOUBLE_ARRAY: "Double array",
-    ParameterType.PARAMETER_STRING_ARRAY: "String array",
+# How `ros2 param describe` and `list --param-type` name the types ...
+DESCRIBED_TYPES = {
+    ParameterType.PARAMETER_BOOL: "boolean",
+    ParameterType.PARAMETER_INTEGER: "integer",
+    ParameterType.PARAMETER_DOUBLE: "double",
+    ParameterType.PARAMETER_STRING: "string",
+    ParameterType.PARAMETER_BYTE_ARRAY: "byte array",
+    ParameterType.PARAMETER_BOOL_ARRAY: "boolean array",
+    ParameterType.PARAMETER_INTEGER_ARRAY: "integer array",
+    ParameterType.PARAMETER_DOUBLE_ARRAY: "double array",
+    ParameterType.PARAMETER_STRING_ARRAY: "string array",
+    ParameterType.PARAMETER_NOT_SET: "not set",
 }
-# ... and how `ros2 param describe` does.
-DESCRIBED_TYPES = {code: name.lower() for code, name in TYPE_NAMES.items()}
-DESCRIBED_TYPES[ParameterType.PARAMETER_NOT_SET] = "not set"
+# ... and how `ros2 param get` introduces a value of each.
+GET_LABELS = {
+    ParameterType.PARAMETER_BOOL: "Boolean value is:",
+    ParameterType.PARAMETER_INTEGER: "Integer value is:",
+    ParameterType.PARAMETER_DOUBLE: "Double value is:",
+    ParameterType.PARAMETER_STRING: "String value is:",
+    ParameterType.PARAMETER_BYTE_ARRAY: "Byte values are:",
+    ParameterType.PARAMETER_BOOL_ARRAY: "Boolean values are:",
+    ParameterType.PARAMETER_INTEGER_ARRAY: "Integer values are:",
+    ParameterType.PARAMETER_DOUBLE_ARRAY: "Double values are:",
+    ParameterType.PARAMETER_STRING_ARRAY: "String values are:",
+}
 
 # One AsyncParameterClient per (tool run, node): its six service clients live as long as the
 # tool's node (rclpy has no call to destroy them earlier).
@@ -92,8 +111,9 @@ def _ask(graph: Graph, node: str, call: Callable[[AsyncParameterClient], Future]
     return future.result()
 
 
-def names(graph: Graph, node: str) -> list[str]:
-    response = _ask(graph, node, lambda client: client.list_parameters())
+def names(graph: Graph, node: str, prefixes: list[str] | None = None) -> list[str]:
+    """A node's parameter names, sorted; only those under ``prefixes`` if given."""
+    response = _ask(graph, node, lambda client: client.list_parameters(prefixes=prefixes))
     return sorted(response.result.names)
 
 
@@ -140,17 +160,29 @@ def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str,
 
 
 def _set(graph: Graph, node: str, params: list[ParameterMsg]) -> dict[str, str]:
-    response = _ask(graph, node, lambda client: client.set_parameters(params))
     return {
         param.name: result.reason
-        for param, result in zip(params, response.results, strict=True)
+        for param, result in zip(params, _set_each(graph, node, params), strict=True)
         if not result.successful
     }
 
 
-def load_file(graph: Graph, node: str, path: str) -> None:
-    """Set what a params file gives a node (see the module's docstring)."""
-    load_params(graph, node, ParamsFile(path).params_for(_node_name(node)))
+def _set_each(graph: Graph, node: str, params: list[ParameterMsg]) -> list[Any]:
+    """The node's SetParametersResult for each parameter (each is set on its own)."""
+    response = _ask(graph, node, lambda client: client.set_parameters(params))
+    return list(response.results)
+
+
+def _with_reason(text: str, result: Any) -> str:
+    return f"{text}: {result.reason}" if result.reason else text
+
+
+def load_file(graph: Graph, node: str, path: str, use_wildcard: bool = True) -> None:
+    """`ros2 param load`: set what a params file gives a node (see the module's docstring)."""
+    params = ParamsFile(path).params_for(_node_name(node), use_wildcard)
+    results = _set_each(graph, node, params)
+    graph.finish()
+    print_loaded(params, results)
 
 
 def load_params(graph: Graph, node: str, params: list[ParameterMsg]) -> None:
@@ -159,12 +191,18 @@ def load_params(graph: Graph, node: str, params: list[ParameterMsg]) -> None:
     A dump holds read-only parameters too (start_type_description_service), which no node
     accepts at run time; loading that dump back should still set everything else.
     """
-    refused = _set(graph, node, params)
-    for param in params:
-        if param.name in refused:
-            print(f"Set parameter {param.name} failed: {refused[param.name]}", file=sys.stderr)
+    print_loaded(params, _set_each(graph, node, params))
+
+
+def print_loaded(params: list[ParameterMsg], results: list[Any]) -> None:
+    """What `ros2 param load` prints: one line per parameter, refused ones on stderr."""
+    for param, result in zip(params, results, strict=True):
+        # ros2's words; flushed so that the two streams keep their order in a terminal
+        if result.successful:
+            print(_with_reason(f"Set parameter {param.name} successful", result), flush=True)
         else:
-            print(f"Set parameter {param.name} successful")
+            line = _with_reason(f"Set parameter {param.name} failed", result)
+            print(line, file=sys.stderr, flush=True)
 
 
 def dump_data(graph: Graph, node: str) -> dict[str, Any]:
@@ -189,10 +227,13 @@ class ParamsFile:
         """The full names of the nodes the file names (not the patterns such as '/**')."""
         return [_node_name(key) for key in self.data if "*" not in key]
 
-    def params_for(self, node: str) -> list[ParameterMsg]:
+    def params_for(self, node: str, use_wildcard: bool = True) -> list[ParameterMsg]:
         """What the file gives ``node`` (a full name): every entry whose name matches it, in
-        the file's order, a later one winning where two set a name (by rclpy)."""
-        keys = [key for key in self.data if name_matches(key, node)]
+        the file's order, a later one winning where two set a name (by rclpy). Without
+        ``use_wildcard``, only the entries that name the node (no '/**' or '/*')."""
+        keys = [
+            key for key in self.data if name_matches(key, node) and (use_wildcard or "*" not in key)
+        ]
         if not keys:
             raise ToolError(f"{self.path} has no entry that matches {node}")
         # rclpy opens the file itself: give it a private copy of what was checked (a named
@@ -211,18 +252,52 @@ class ParamsFile:
         return list(params.values())
 
 
-# The commands as `ros2 param` prints them.
+# The commands, as `ros2 param` (ros2param, Jazzy) prints them.
 
 
-def list_command(graph: Graph, node: str | None) -> None:
+def _listing_order(full_name: str) -> tuple[str, str, str]:
+    # ros2param sorts its NodeName tuples: by the node's own name, then its namespace.
+    namespace, name = split_node_name(full_name)
+    return name, namespace, full_name
+
+
+def list_command(
+    graph: Graph,
+    node: str | None,
+    prefixes: list[str] | None = None,
+    with_types: bool = False,
+    pattern: str | None = None,
+) -> None:
+    """`ros2 param list [NODE]`: every node's name then its parameters, or only NODE's
+    parameters (no heading), each indented by two spaces."""
+    try:
+        regex = re.compile(pattern) if pattern is not None else None
+    except re.error as error:
+        raise ToolError(f"invalid --filter regular expression {pattern!r}: {error}") from None
     if node:
-        for name in names(graph, node):
-            print(f"  {name}")
-        return
-    for full_name in nodes_with_parameters(graph):
-        print(f"{full_name}:")
-        for name in names(graph, full_name):
-            print(f"  {name}")
+        nodes = [graph.wait_for_node(node)]
+    else:
+        nodes = sorted(nodes_with_parameters(graph), key=_listing_order)
+    listing = []
+    for full_name in nodes:
+        found = names(graph, full_name, prefixes or None)
+        if regex is not None:
+            found = [name for name in found if regex.match(name)]
+        types = {}
+        if with_types and found:
+            descriptors = _ask(
+                graph, full_name, lambda client, f=found: client.describe_parameters(f)
+            )
+            types = {
+                d.name: DESCRIBED_TYPES.get(d.type, "unknown") for d in descriptors.descriptors
+            }
+        listing.append((full_name, found, types))
+    graph.finish()
+    for full_name, found, types in listing:
+        if not node and found:
+            print(f"{full_name}:")
+        for name in found:
+            print(f"  {name} (type: {types[name]})" if with_types else f"  {name}")
 
 
 def nodes_with_parameters(graph: Graph) -> list[str]:
@@ -233,10 +308,13 @@ def nodes_with_parameters(graph: Graph) -> list[str]:
     return [name for name in names if f"{name}/list_parameters" in services]
 
 
-def get_command(graph: Graph, node: str, name: str) -> None:
+def get_command(graph: Graph, node: str, name: str, hide_type: bool = False) -> None:
     param_type, value = get_values(graph, node, [name])[name]
     graph.finish()
-    print(f"{TYPE_NAMES.get(param_type, 'Unknown')} value is: {value}")
+    if hide_type:
+        print(value)
+    else:
+        print(GET_LABELS.get(param_type, f"Unknown parameter type '{param_type}'"), value)
 
 
 def describe_command(graph: Graph, node: str, params: list[str]) -> None:
@@ -260,46 +338,178 @@ def describe_command(graph: Graph, node: str, params: list[str]) -> None:
             print(f"    Additional constraints: {descriptor.additional_constraints}")
 
 
-def set_command(graph: Graph, node: str, name: str, value: str) -> None:
-    # Read as YAML like ros2 does: 2 is an integer, 2.0 a double, true a boolean, hi a string.
-    set_values(graph, node, {name: parse_yaml(value)})
+def typed_value(name: str, text: str) -> ParameterValue:
+    """The value `ros2 param set` sends for what was typed: typed as YAML reads it, as
+    rclpy's get_parameter_value does (2 an integer, 2.0 a double, true a boolean, a list of
+    one of those an array); anything else, a mixed list or a mapping too, is the text itself.
+    """
+    try:
+        value = parse_yaml(text)
+    except ToolError:  # not YAML (`a: b: c`): the text, as rclpy does
+        value = text
+    for item in value if isinstance(value, list) else [value]:
+        if isinstance(item, int) and (problem := parameter_problem(name, item)):
+            raise ToolError(f"cannot set {problem}")  # beyond int64: rclpy fails an assert
+    if isinstance(value, bool):
+        return ParameterValue(type=ParameterType.PARAMETER_BOOL, bool_value=value)
+    if isinstance(value, int):
+        return ParameterValue(type=ParameterType.PARAMETER_INTEGER, integer_value=value)
+    if isinstance(value, float):
+        return ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=value)
+    if isinstance(value, list):
+        for kind, code, field in (
+            (bool, ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value"),
+            (int, ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value"),
+            (float, ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value"),
+            (str, ParameterType.PARAMETER_STRING_ARRAY, "string_array_value"),
+        ):
+            # rclpy's tests in its order: [] is a boolean array, [1, true] no integer array
+            if all(
+                isinstance(item, kind) and (kind is bool) == isinstance(item, bool)
+                for item in value
+            ):
+                return ParameterValue(type=code, **{field: value})
+    text_value = value if isinstance(value, str) else text
+    return ParameterValue(type=ParameterType.PARAMETER_STRING, string_value=text_value)
+
+
+def set_command(graph: Graph, node: str, name: str, text: str) -> None:
+    """`ros2 param set`: the node's answer in ros2's words; a refusal is exit status 1."""
+    value = typed_value(name, text)
+    node = graph.wait_for_node(node)
+    result = _set_each(graph, node, [ParameterMsg(name=name, value=value)])[0]
+    if not result.successful:
+        raise ToolFailure(_with_reason("Setting parameter failed", result))
     graph.finish()
-    print("Set parameter successful")
+    print(_with_reason("Set parameter successful", result))
 
 
-def dump_command(graph: Graph, node: str) -> None:
-    print(yaml.safe_dump(dump_data(graph, node), default_flow_style=False).rstrip())
+def delete_command(graph: Graph, node: str, name: str) -> None:
+    """`ros2 param delete`: set to 'not set', which undeclares it where the node allows."""
+    node = graph.wait_for_node(node)
+    unset = ParameterValue(type=ParameterType.PARAMETER_NOT_SET)
+    result = _set_each(graph, node, [ParameterMsg(name=name, value=unset)])[0]
+    if not result.successful:
+        raise ToolFailure(_with_reason("Deleting parameter failed", result))
+    graph.finish()
+    print(_with_reason("Deleted parameter successfully", result))
+
+
+def dump_text(graph: Graph, node: str) -> str:
+    """A node's parameters as `ros2 param dump` writes them: /node: / ros__parameters:,
+    the names sorted, nested at each '.' (qos_overrides./parameter_events.publisher.depth)."""
+    node = _node_name(node)
+    values = get_values(graph, node, names(graph, node))
+    tree: dict[str, Any] = {}
+    for name, (_, value) in values.items():
+        *parents, leaf = name.split(PARAMETER_SEPARATOR_STRING)
+        branch = tree
+        for part in parents:
+            branch = branch.setdefault(part, {})
+        branch[leaf] = value
+    return yaml.safe_dump({node: {"ros__parameters": tree}}, default_flow_style=False)
+
+
+def dump_command(graph: Graph, node: str, output_dir: str | None = None) -> None:
+    """`ros2 param dump NODE`: the YAML on stdout (`> file.yaml` saves it). --output-dir is
+    Humble's deprecated spelling (gone in Jazzy): it still writes DIR/NODE.yaml, with
+    Humble's warning."""
+    if output_dir is not None and output_dir != "." and not os.path.isdir(output_dir):
+        raise ToolError(f"'{output_dir}' is not a valid directory.")
+    text = dump_text(graph, node)
+    graph.finish()
+    if output_dir is None or output_dir == ".":
+        print(text)  # ros2 prints the YAML and a newline: one blank line at the end
+        return
+    print(
+        "WARNING: '--output-dir' is deprecated; use redirection to save to a file",
+        file=sys.stderr,
+    )
+    path = os.path.join(output_dir, _node_name(node)[1:].replace("/", "__") + ".yaml")
+    print("Saving to: ", path)
+    try:
+        with open(path, "w", encoding="utf-8") as file:
+            file.write(text)
+    except OSError as error:
+        raise ToolError(f"cannot write {path}: {error.strerror}") from None
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("param", help="parameters: list, get, set, describe, dump, load")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    parser = verbs.add_parser("param", help="Various param related sub-commands")
+    sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
-    p = sub.add_parser("list", parents=[common], help="list the parameters of one or all nodes")
-    p.add_argument("node", nargs="?")
-    p.set_defaults(run=lambda graph, a: list_command(graph, a.node))
+    p = sub.add_parser("delete", parents=[common], help="Delete parameter")
+    _node_argument(p)
+    p.add_argument("parameter_name", help="Name of the parameter")
+    p.set_defaults(run=lambda graph, a: delete_command(graph, a.node_name, a.parameter_name))
 
-    p = sub.add_parser("get", parents=[common], help="print a parameter's value")
-    p.add_argument("node")
-    p.add_argument("name")
-    p.set_defaults(run=lambda graph, a: get_command(graph, a.node, a.name))
+    p = sub.add_parser(
+        "describe", parents=[common], help="Show descriptive information about declared parameters"
+    )
+    _node_argument(p)
+    p.add_argument("parameter_names", nargs="+", help="Names of the parameters")
+    p.set_defaults(run=lambda graph, a: describe_command(graph, a.node_name, a.parameter_names))
 
-    p = sub.add_parser("describe", parents=[common], help="print parameters' types and ranges")
-    p.add_argument("node")
-    p.add_argument("names", nargs="+")
-    p.set_defaults(run=lambda graph, a: describe_command(graph, a.node, a.names))
+    p = sub.add_parser(
+        "dump", parents=[common], help="Show all of the parameters of a node in a YAML file format"
+    )
+    _node_argument(p)
+    p.add_argument("--output-dir", help="DEPRECATED: where to save NODE.yaml; use > FILE")
+    p.set_defaults(run=lambda graph, a: dump_command(graph, a.node_name, a.output_dir))
 
-    p = sub.add_parser("set", parents=[common], help="set a parameter (value as YAML)")
-    p.add_argument("node")
-    p.add_argument("name")
-    p.add_argument("value")
-    p.set_defaults(run=lambda graph, a: set_command(graph, a.node, a.name, a.value))
+    p = sub.add_parser("get", parents=[common], help="Get parameter")
+    _node_argument(p)
+    p.add_argument("parameter_name", help="Name of the parameter")
+    p.add_argument("--hide-type", action="store_true", help="Hide the type information")
+    p.set_defaults(
+        run=lambda graph, a: get_command(graph, a.node_name, a.parameter_name, a.hide_type)
+    )
 
-    p = sub.add_parser("dump", parents=[common], help="print a node's parameters as a params file")
-    p.add_argument("node")
-    p.set_defaults(run=lambda graph, a: dump_command(graph, a.node))
+    p = sub.add_parser("list", parents=[common], help="Output a list of available parameters")
+    _node_argument(p, nargs="?")
+    p.add_argument(
+        "--filter",
+        metavar="REGEX",
+        help="Only parameters matching the regex expression will be showed. "
+        "Supports `re` regex syntax.",
+    )
+    p.add_argument(
+        "--param-prefixes",
+        nargs="+",
+        default=[],
+        help="Only list parameters with the provided prefixes",
+    )
+    p.add_argument(
+        "--param-type", action="store_true", help="Print parameter types with parameter names"
+    )
+    p.set_defaults(
+        run=lambda graph, a: list_command(
+            graph, a.node_name, a.param_prefixes, a.param_type, a.filter
+        )
+    )
 
-    p = sub.add_parser("load", parents=[common], help="set a node's parameters from a params file")
-    p.add_argument("node")
-    p.add_argument("file")
-    p.set_defaults(run=lambda graph, a: load_file(graph, a.node, a.file))
+    p = sub.add_parser("load", parents=[common], help="Load parameter file for a node")
+    _node_argument(p)
+    p.add_argument("parameter_file", help="Parameter file")
+    p.add_argument(
+        "--no-use-wildcard",
+        action="store_true",
+        help="Do not load parameters in the '/**' namespace into the node",
+    )
+    p.set_defaults(
+        run=lambda graph, a: load_file(graph, a.node_name, a.parameter_file, not a.no_use_wildcard)
+    )
+
+    p = sub.add_parser("set", parents=[common], help="Set parameter")
+    _node_argument(p)
+    p.add_argument("parameter_name", help="Name of the parameter")
+    p.add_argument("value", help="Value of the parameter")
+    p.set_defaults(run=lambda graph, a: set_command(graph, a.node_name, a.parameter_name, a.value))
+
+
+def _node_argument(parser: argparse.ArgumentParser, nargs: str | None = None) -> None:
+    parser.add_argument("node_name", nargs=nargs, help="Name of the ROS node")
+    # ros2cli's option; this tool's own node is hidden and has no parameter services anyway
+    parser.add_argument(
+        "--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well"
+    )
