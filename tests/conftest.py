@@ -22,7 +22,12 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
 
-from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
+from ros2cmd.local_participants import domain_processes
+from ros_tutorials_common.dds import (
+    PRIVATE_DOMAIN_IDS,
+    apply_dds_defaults,
+    claim_private_domain_id,
+)
 
 # `pytest --cpu-load=auto` (`make test-load`): the suite with every core kept busy.
 pytest_plugins = ["cpu_load"]
@@ -123,6 +128,24 @@ def _processes() -> Iterator[Callable[..., NodeProcess]]:
     yield start
     for proc in started:
         proc.kill()
+
+
+@pytest.fixture
+def own_domain(ros_domain: int, monkeypatch: pytest.MonkeyPatch) -> Iterator[int]:
+    """A ROS_DOMAIN_ID of the test's own, where no process of this machine runs at the start:
+    for tests that check a whole listing against a tutorial page, which must see only what
+    the test starts (the session's domain may still hold what earlier tests left running).
+    Processes started in it start cold (tests/warm.py serves the session's environment)."""
+    for _ in range(len(PRIVATE_DOMAIN_IDS)):
+        domain_id, lock = claim_private_domain_id()
+        if not (domain_processes(domain_id) or (False,))[0]:
+            break
+        lock.close()
+    else:
+        pytest.fail("no private ROS_DOMAIN_ID without running processes")
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domain_id))
+    yield domain_id
+    lock.close()
 
 
 @pytest.fixture

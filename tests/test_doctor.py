@@ -21,7 +21,6 @@ from helpers import BIN, run
 from test_two_machines import ADDRESSES, MachineProcess, machines  # noqa: F401 - a fixture
 
 from ros2cmd.local_participants import domain_processes
-from ros_tutorials_common.dds import claim_private_domain_id
 
 CHECKS = 8  # the checks with the project's LOCALHOST range (the multicast one is not tried)
 # A plain rclpy node in a process of its own: NAME, and optionally a topic it publishes.
@@ -80,16 +79,6 @@ def sections(report: str) -> dict[str, list[tuple[str, str]]]:
             key, value = line.split(": ", 1) if ": " in line else (line.rstrip(":"), "")
             current.append((key.rstrip(), value))
     return found
-
-
-@pytest.fixture
-def own_domain(ros_domain, monkeypatch):
-    """A domain of the test's own: the worker's may still hold nodes that earlier tests made
-    in this process, and the doctor reports everything in its domain."""
-    domain_id, lock = claim_private_domain_id()
-    monkeypatch.setenv("ROS_DOMAIN_ID", str(domain_id))
-    yield domain_id
-    lock.close()
 
 
 def plain_node(node_process, name: str, *topic: str):

@@ -24,7 +24,7 @@ GOAL_ID = re.compile(r"Goal accepted with ID: [0-9a-f]{32}")
 
 
 @pytest.fixture
-def turtlesim(node_process):
+def turtlesim(own_domain, node_process):  # the page: only what the test starts
     sim = node_process(*TURTLESIM, env=HEADLESS)
     sim.wait_for_text("Spawning turtle [turtle1]")
     return sim
@@ -127,22 +127,23 @@ def test_a_goal_the_server_aborts_ends_with_its_status_and_exit_1(
     turtlesim.wait_for_text("Rotation goal received before a previous goal finished")
 
 
+def test_info_and_list_options(turtlesim):  # counts: turtlesim alone in its domain
+    assert page("ros2 action info /turtle1/rotate_absolute -t -c").splitlines() == [
+        "Action: /turtle1/rotate_absolute",
+        "Action clients: 0",
+        "Action servers: 1",
+    ]
+    assert page("ros2 action info turtle1/rotate_absolute --show-types").splitlines()[-1] == (
+        "    /turtlesim [turtlesim/action/RotateAbsolute]"
+    )
+    assert page("ros2 action list -c") == "1\n"
+    stdin = run(*shlex.split(f"{ROTATE} --stdin"), input="theta: 0.0\n")
+    assert stdin.returncode == 0, stdin.stderr
+    assert "     theta: 0.0" in stdin.stdout.splitlines()
+
+
 class TestAgainstOneTurtlesim:
     """Commands that leave turtlesim as it is: one turtlesim for them all."""
-
-    def test_info_and_list_options(self, shared_turtlesim):  # noqa: F811
-        assert page("ros2 action info /turtle1/rotate_absolute -t -c").splitlines() == [
-            "Action: /turtle1/rotate_absolute",
-            "Action clients: 0",
-            "Action servers: 1",
-        ]
-        assert page("ros2 action info turtle1/rotate_absolute --show-types").splitlines()[-1] == (
-            "    /turtlesim [turtlesim/action/RotateAbsolute]"
-        )
-        assert page("ros2 action list -c") == "1\n"
-        stdin = run(*shlex.split(f"{ROTATE} --stdin"), input="theta: 0.0\n")
-        assert stdin.returncode == 0, stdin.stderr
-        assert "     theta: 0.0" in stdin.stdout.splitlines()
 
     @pytest.mark.parametrize(
         "line,expected",

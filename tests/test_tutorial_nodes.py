@@ -117,7 +117,7 @@ def test_the_nodes_page_typed_as_printed(node_process):
     assert "    /turtle1/rotate_absolute/_action/feedback: " in everything
 
 
-def test_nodes_that_share_a_name_are_warned_about(node_process):
+def test_nodes_that_share_a_name_are_warned_about(own_domain, node_process):
     # Two service lesson servers: both are /service_server.
     for _ in range(2):
         ready(node_process("-m", "ros_tutorials_service.server"))

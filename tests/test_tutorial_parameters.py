@@ -51,7 +51,7 @@ def color_under_the_turtle() -> dict[str, int]:
 
 
 @pytest.fixture
-def turtlesim(node_process):
+def turtlesim(own_domain, node_process):  # the page: only what the test starts
     """`ros2 run turtlesim turtlesim_node`, headless."""
     sim = node_process(*TURTLESIM, env=HEADLESS)
     sim.wait_for_text("Spawning turtle [turtle1]")

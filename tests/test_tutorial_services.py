@@ -77,7 +77,7 @@ def called(output: str) -> str:
 
 
 @pytest.fixture
-def turtlesim(node_process):
+def turtlesim(own_domain, node_process):  # the page: only what the test starts
     sim = node_process(str(BIN / "ros2"), "run", "turtlesim", "turtlesim_node", env=HEADLESS)
     sim.wait_for_text("Spawning turtle [turtle1]")
     return sim
