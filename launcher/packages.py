@@ -59,13 +59,17 @@ EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
 # ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
 # and what does their job here.
 MISSING_TOOLS: dict[str, str] = {
-    "rqt": "call services with `rosservice call`, publish with `rostopic pub`",
-    "rqt_publisher": "publish with `rostopic pub TOPIC TYPE VALUES [-r RATE]`",
-    "rqt_service_caller": "call services with `rosservice call SERVICE ARGS`",
-    "rqt_bag": "record, inspect and replay with `rosbag record`, `rosbag info`, `rosbag play`",
-    "rqt_reconfigure": "change parameters with `rosparam set NODE/PARAM VALUE`",
-    "rqt_plot": "watch values with `rostopic echo TOPIC` (`rostopic hz` for the rate)",
-    "rqt_topic": "use `rostopic list`, `rostopic echo`, `rostopic hz`",
+    "rqt": "call services with `ros2 service call` (`rosservice call`), publish with "
+    "`ros2 topic pub` (`rostopic pub`)",
+    "rqt_publisher": "publish with `ros2 topic pub TOPIC TYPE VALUES -r RATE` (`rostopic pub`)",
+    "rqt_service_caller": "call services with `ros2 service call SERVICE TYPE VALUES` "
+    "(`rosservice call`)",
+    "rqt_bag": "record, inspect and replay with `ros2 bag record`, `ros2 bag info`, "
+    "`ros2 bag play` (`rosbag record`, `rosbag info`, `rosbag play`)",
+    "rqt_reconfigure": "change parameters with `ros2 param set NODE PARAM VALUE` "
+    "(`rosparam set`)",
+    "rqt_plot": "watch values with `ros2 topic echo TOPIC` (`ros2 topic hz` for the rate)",
+    "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
     "rviz": "a ROS 2 installation has it as rviz2",
 }
 

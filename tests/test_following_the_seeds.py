@@ -120,8 +120,8 @@ def test_rosrun_unknown_names_say_the_candidates_in_one_line():
 def test_rosrun_of_a_ros1_gui_tool_not_here_says_what_to_use_instead():
     # Seed 004 runs `rosrun rqt_publisher rqt_publisher` and `rosrun rqt_bag rqt_bag`.
     for args, expected in [
-        (("rqt_publisher", "rqt_publisher"), "does not have; publish with `rostopic pub"),
-        (("rqt_bag", "rqt_bag"), "`rosbag record`, `rosbag info`, `rosbag play`"),
+        (("rqt_publisher", "rqt_publisher"), "does not have; publish with `ros2 topic pub"),
+        (("rqt_bag", "rqt_bag"), "(`rosbag record`, `rosbag info`, `rosbag play`)"),
         (("rqt_bag",), "rqt_bag is a GUI tool this project does not have"),
         (("rqt_graph",), "rqt_graph has: rqt_graph"),  # a tool that is here, named once
     ]:
@@ -276,7 +276,7 @@ def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
         (("roscd",), "usage: roscd PKG[/DIR]"),
         (("rosed", "ros_tutorials_topic", "talker.py"), "ros_tutorials_topic/talker.py"),
         (("catkin_make",), "run `make interfaces`"),
-        (("rqt",), "call services with `rosservice call`"),
+        (("rqt",), "call services with `ros2 service call` (`rosservice call`)"),
     ],
 )
 def test_ros1_shell_commands_say_what_to_type_instead(command, expected):
