@@ -45,6 +45,11 @@ def common_options() -> argparse.ArgumentParser:
         "announced nodes and endpoints are seen, "
         f"at most {MAX_SETTLE_TIME:g})",
     )
+    common.add_argument(
+        "--no-daemon",
+        action="store_true",
+        help="Do not spawn nor use an already running daemon",
+    )
     return common
 
 
