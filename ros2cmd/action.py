@@ -9,7 +9,6 @@ from typing import Any
 
 from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
-from rclpy.action.graph import get_action_names_and_types
 
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError
@@ -30,7 +29,7 @@ def _indented(msg: Any) -> str:
 
 
 def action_types(graph: Graph) -> dict[str, list[str]]:
-    return dict(get_action_names_and_types(graph.node))
+    return graph.action_types()
 
 
 def list_actions(graph: Graph, show_types: bool = False) -> None:

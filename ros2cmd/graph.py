@@ -38,6 +38,7 @@ from typing import TypeVar
 import rclpy
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
+    get_action_names_and_types,
     get_action_server_names_and_types_by_node,
 )
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
@@ -161,7 +162,7 @@ def add_list_and_type(
     """The `list [-t]` and `type NAME` commands, as topic, service and action all have them."""
     p = sub.add_parser("list", parents=[common], help=f"list the {noun}s in the graph")
     p.add_argument("-t", "--show-types", action="store_true", help=f"show each {noun}'s type")
-    p.set_defaults(run=lambda graph, a: list_names(graph, a.show_types))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_names(graph, a.show_types))
 
     p = sub.add_parser("type", parents=[common], help=f"print the {noun}'s type")
     p.add_argument("name", metavar=noun)
@@ -458,6 +459,9 @@ class Graph:
 
     def service_types(self) -> dict[str, list[str]]:
         return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
+
+    def action_types(self) -> dict[str, list[str]]:
+        return dict(get_action_names_and_types(self.node))
 
     def wait_for_topic_type(self, topic: str) -> str:
         types = self.wait_for(

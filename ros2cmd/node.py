@@ -60,7 +60,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     p = sub.add_parser("list", parents=[common], help="list the nodes in the graph")
-    p.set_defaults(run=lambda graph, a: list_nodes(graph))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_nodes(graph))
 
     p = sub.add_parser("info", parents=[common], help="what a node publishes, subscribes, offers")
     p.add_argument("node")

@@ -73,4 +73,4 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("find", parents=[common], help="list the services of a type")
     p.add_argument("type")
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))

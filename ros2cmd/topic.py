@@ -381,7 +381,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("find", parents=[common], help="list the topics of a message type")
     p.add_argument("type")
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))
 
 
 def _pub_command(graph: Graph, args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
