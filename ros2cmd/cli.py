@@ -111,7 +111,7 @@ def _execute(
     offline: bool,
     timeout: float,
     spin_time: float | None,
-    use_daemon: bool,
+    use_daemon: bool = False,
 ) -> int:
     graph = None
     status = None  # the exit status, once decided
