@@ -62,7 +62,7 @@ def lists(runs: int = 10) -> list[Row]:
         complete = {"node": 0, "topic": 0}
         for _ in range(runs):  # interleaved, so machine load hits all alike
             for verb, expected in (("node", EXPECTED_NODES), ("topic", EXPECTED_TOPICS)):
-                seconds, out = _timed([str(BIN / "ros2"), verb, "list"])
+                seconds, out = _timed([str(BIN / "ros2"), verb, "list", "--no-daemon"])
                 samples[verb].append(seconds)
                 complete[verb] += out.split() == expected
                 if out.split() != expected:  # say what differed: the table only counts

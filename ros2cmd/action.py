@@ -15,7 +15,6 @@ from typing import Any
 
 from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
-from rclpy.action.graph import get_action_names_and_types
 
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
@@ -36,7 +35,7 @@ STATUS_NAMES = {
 
 
 def action_types(graph: Graph) -> dict[str, list[str]]:
-    return dict(get_action_names_and_types(graph.node))
+    return graph.action_types()
 
 
 def list_actions(graph: Graph, show_types: bool = False, count: bool = False) -> None:
@@ -208,7 +207,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         action="store_true",
         help="Only display the number of actions discovered",
     )
-    p.set_defaults(run=lambda graph, a: list_actions(graph, a.show_types, a.count_actions))
+    p.set_defaults(
+        daemon=True, run=lambda graph, a: list_actions(graph, a.show_types, a.count_actions)
+    )
 
     p = sub.add_parser("send_goal", parents=[common], help="Send an action goal")
     p.add_argument("action_name", help="Name of the ROS action (e.g. '/fibonacci')")

@@ -21,7 +21,7 @@ import rclpy
 from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
-from ros2cmd import action, doctor, interface, node, param, pkg, run, service, topic
+from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
@@ -44,6 +44,11 @@ def common_options() -> argparse.ArgumentParser:
         help="seconds a list waits for discovery (default: until every participant's "
         "announced nodes and endpoints are seen, "
         f"at most {MAX_SETTLE_TIME:g})",
+    )
+    common.add_argument(
+        "--no-daemon",
+        action="store_true",
+        help="Do not spawn nor use an already running daemon",
     )
     return common
 
@@ -70,6 +75,7 @@ def build_parser() -> argparse.ArgumentParser:
     for register in (
         action.register,
         register_bag,
+        daemon.register,
         doctor.register,
         interface.register,
         node.register,
@@ -89,15 +95,19 @@ def execute(
     offline: bool = False,
     timeout: float = DEFAULT_TIMEOUT,
     spin_time: float | None = None,
+    use_daemon: bool = False,
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes.
+
+    With use_daemon (the lists), the daemon's complete answer stands in for the node where
+    one runs and can give it (daemon.py); otherwise the command discovers for itself.
 
     Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
     DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
     SIGINT (a shell shows 130) after the command had printed its answer.
     """
     try:
-        return _execute(command, offline, timeout, spin_time)
+        return _execute(command, offline, timeout, spin_time, use_daemon)
     except KeyboardInterrupt:  # while an error line was being printed
         return EXIT_INTERRUPTED
 
@@ -107,11 +117,14 @@ def _execute(
     offline: bool,
     timeout: float,
     spin_time: float | None,
+    use_daemon: bool = False,
 ) -> int:
     graph = None
     status = None  # the exit status, once decided
     try:
-        if not offline:
+        if use_daemon and spin_time is None:
+            graph = daemon.ask_graph()
+        if not offline and graph is None:
             graph = Graph(timeout, spin_time)
         command(graph)
         status = 0
@@ -171,4 +184,12 @@ def run_parsed(args: argparse.Namespace) -> int:
         offline=getattr(args, "offline", False),
         timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
         spin_time=getattr(args, "spin_time", None),
+        use_daemon=_wants_daemon(args) and daemon.use_daemon(getattr(args, "no_daemon", False)),
     )
+
+
+def _wants_daemon(args: argparse.Namespace) -> bool:
+    """Whether the command is a list the daemon can answer (its parser says, perhaps by
+    looking at the options: `topic list -v` counts endpoints, which only a node can)."""
+    wants = getattr(args, "daemon", False)
+    return bool(wants(args) if callable(wants) else wants)

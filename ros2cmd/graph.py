@@ -11,9 +11,10 @@ fixed time: it polls until what it needs appears (``wait_for``), and reports "un
 Listing commands must show everything that was running before they started. Discovery
 tells them when that is (``settle``): every running participant has announced itself once
 its announcement period (0.25 s here) has passed since ours started (we wait five, and
-five after the last participant found: participants are not visible through ROS), or as
-soon as every process that holds one on this machine has been heard from, where the machine
-can say which those are (local_participants.py); each
+five after the last participant found: participants are not visible through ROS); or, where
+the machine can say which processes hold one (local_participants.py), as soon as each of them
+has been heard from, however long its own period (a plain rclpy node without this project's
+profile announces every 3 s, and a newcomer misses its first answer in about 2 runs of 5); each
 participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
 readers and writers each node has; the graph is complete when every participant seen has sent it and
 every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
@@ -37,6 +38,7 @@ from typing import TypeVar
 import rclpy
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
+    get_action_names_and_types,
     get_action_server_names_and_types_by_node,
 )
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
@@ -46,7 +48,12 @@ from rclpy.signals import SignalHandlerOptions, uninstall_signal_handlers
 
 from ros2cmd.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
 from ros2cmd.errors import ToolError
-from ros2cmd.local_participants import heard_from_all, local_participants, unexplained
+from ros2cmd.local_participants import (
+    heard_from_all,
+    local_participants,
+    still_there,
+    unexplained,
+)
 from ros2cmd.wait import spin_until
 from ros_tutorials_common.ros import init
 
@@ -57,6 +64,8 @@ POLL_PERIOD = 0.02  # how often a wait looks for what it waits for, at first (wa
 # finding one up to 0.05 s later changes nothing, and each look costs CPU.
 SETTLE_POLL_PERIOD = 0.05
 ANNOUNCEMENTS = 5  # announcement periods a listing waits for participants to be discovered
+# How often a listing that waits for a process the count named counts again (it may have ended).
+RECOUNT_PERIOD = 0.25
 UNKNOWN_NODE = "_NODE_NAME_UNKNOWN_"  # rmw's name for an endpoint whose node is not known yet
 
 T = TypeVar("T")
@@ -153,7 +162,7 @@ def add_list_and_type(
     """The `list [-t]` and `type NAME` commands, as topic, service and action all have them."""
     p = sub.add_parser("list", parents=[common], help=f"list the {noun}s in the graph")
     p.add_argument("-t", "--show-types", action="store_true", help=f"show each {noun}'s type")
-    p.set_defaults(run=lambda graph, a: list_names(graph, a.show_types))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_names(graph, a.show_types))
 
     p = sub.add_parser("type", parents=[common], help=f"print the {noun}'s type")
     p.add_argument("name", metavar=noun)
@@ -253,12 +262,13 @@ class Graph:
     def settle(self) -> None:
         """Wait until the graph holds everything that was running when this command started.
 
-        Complete means: ANNOUNCEMENTS announcement periods have passed since our participant
-        started and since the last participant found (so every running participant has
-        announced itself), and every participant seen has
-        sent its ros_discovery_info, and every node and endpoint it announced is in our graph.
-        The first part ends early once every local participant has been seen, where
-        local_participants() knows them.
+        Complete means: every running participant has been heard from, and every participant
+        seen has sent its ros_discovery_info, and every node and endpoint it announced is in
+        our graph. Who runs is known where local_participants() can count the processes that
+        hold a participant on this machine: then the wait lasts until each of them has been
+        heard from (usually at once), however long its own announcement period. Where it
+        cannot count, ANNOUNCEMENTS periods of this project's profile since our participant
+        started and since the last participant found must do.
         At most MAX_SETTLE_TIME; what is still missing then is reported on stderr. With
         ``spin_time`` given, wait exactly that long instead.
         """
@@ -277,11 +287,11 @@ class Graph:
         all_announced = self.started + period
         participants = self.participants()
         last_found, longest_gap = self.started, 0.0
-        # Where the machine can say which processes hold a participant (local_participants.py),
-        # having heard from each of them ends this wait early: usually at once.
         domain_id = self.node.context.get_domain_id()
         expected = local_participants(domain_id) if self.discovery.available else None
-        while time.monotonic() < all_announced:
+        next_count = all_announced
+        while True:
+            now = time.monotonic()
             if expected is not None and heard_from_all(expected, participants):
                 # Counted again: a participant made meanwhile must not stand in for one
                 # that was there at the first count (both count for their process). No
@@ -293,6 +303,25 @@ class Graph:
                     expected = None  # someone the count cannot see: wait the periods out
                 elif recount is not None:
                     expected = recount
+            elif expected is not None and now >= next_count:
+                # Someone counted is still unheard after our profile's periods: a participant
+                # that announces less often. A plain rclpy node (Fast DDS's default, every
+                # 3 s) misses its first exchange with a newcomer in about 2 runs of 5 and is
+                # heard only at its next announcement: keep waiting for it, unless its
+                # process has ended meanwhile (counted again now and then).
+                recount = local_participants(domain_id)
+                if recount is not None:
+                    expected = still_there(expected, recount)
+                next_count = now + RECOUNT_PERIOD
+            if expected is None and now >= all_announced:
+                break
+            if now - start >= MAX_SETTLE_TIME:
+                print(
+                    f"warning: after {MAX_SETTLE_TIME:g} s processes were still being "
+                    "discovered (a very busy machine?); the list may miss some",
+                    file=sys.stderr,
+                )
+                break
             self.spin_once(SETTLE_POLL_PERIOD)
             found = self.participants()
             if not found <= participants:
@@ -300,13 +329,6 @@ class Graph:
                 now = time.monotonic()
                 longest_gap, last_found = max(longest_gap, now - last_found), now
                 all_announced = max(all_announced, now + max(period, 1.5 * longest_gap))
-            if time.monotonic() - start >= MAX_SETTLE_TIME:
-                print(
-                    f"warning: after {MAX_SETTLE_TIME:g} s processes were still being "
-                    "discovered (a very busy machine?); the list may miss some",
-                    file=sys.stderr,
-                )
-                break
 
         def complete() -> bool:
             # One look costs a query per DDS topic (0.1 to 0.3 s with 20 nodes on a loaded
@@ -437,6 +459,9 @@ class Graph:
 
     def service_types(self) -> dict[str, list[str]]:
         return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
+
+    def action_types(self) -> dict[str, list[str]]:
+        return dict(get_action_names_and_types(self.node))
 
     def wait_for_topic_type(self, topic: str) -> str:
         types = self.wait_for(

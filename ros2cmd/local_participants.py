@@ -86,6 +86,15 @@ def heard_from_all(expected: Counter[int], seen: set[bytes]) -> bool:
     return all(found[pid] >= count for pid, count in expected.items())
 
 
+def still_there(expected: Counter[int], recount: Counter[int]) -> Counter[int]:
+    """The processes of a first count that a later count still finds, each with no more
+    participants than either count gives it: those that ended meanwhile need not be heard
+    from, and those that started meanwhile were not running when the listing started."""
+    return Counter(
+        {pid: min(count, recount[pid]) for pid, count in expected.items() if recount[pid]}
+    )
+
+
 def unexplained(expected: Counter[int], seen: set[bytes]) -> bool:
     """Whether a participant seen is not one of those counted, so that the count cannot be
     trusted to hold everyone: another vendor's (no process id in its GUID), more of one

@@ -95,7 +95,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         action="store_true",
         help="Only display the number of nodes discovered",
     )
-    p.set_defaults(run=lambda graph, a: list_nodes(graph, a.all, a.count_nodes))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_nodes(graph, a.all, a.count_nodes))
 
     p = sub.add_parser("info", parents=[common], help="Output information about a node")
     p.add_argument("node_name", help="Node name to request information")

@@ -309,7 +309,8 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     count(p)
     hidden(p)
     p.set_defaults(
-        run=lambda graph, a: list_services(graph, a.show_types, a.count_services, with_hidden(a))
+        daemon=True,
+        run=lambda graph, a: list_services(graph, a.show_types, a.count_services, with_hidden(a)),
     )
 
     p = sub.add_parser("type", parents=[common], help="Output a service's type")
@@ -324,7 +325,8 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     count(p)
     hidden(p)
     p.set_defaults(
-        run=lambda graph, a: find(graph, a.service_type, a.count_services, with_hidden(a))
+        daemon=True,
+        run=lambda graph, a: find(graph, a.service_type, a.count_services, with_hidden(a)),
     )
 
     p = sub.add_parser("info", parents=[common], help="Print information about a service")

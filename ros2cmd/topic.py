@@ -829,7 +829,7 @@ def nonnegative_int(text: str) -> int:
 
 
 def _graph_options(parser: argparse.ArgumentParser, timeout_help: str | None = None) -> None:
-    """--spin-time and --timeout (this project's waits), --no-daemon (there is none)."""
+    """--spin-time and --timeout (this project's waits), --no-daemon (see daemon.py)."""
     parser.add_argument(
         "--spin-time",
         type=positive_seconds,
@@ -969,6 +969,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     )
 
     p = verb("find", ros2_find)
+    p.set_defaults(daemon=True)
     p.add_argument(
         "topic_type", help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')"
     )
@@ -1012,6 +1013,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     _graph_options(p)
 
     p = verb("list", ros2_list)
+    p.set_defaults(daemon=lambda a: not a.verbose)  # -v counts endpoints: a node of its own
     p.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the topic type"
     )

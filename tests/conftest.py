@@ -22,6 +22,7 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
 
+from ros2cmd import daemon
 from ros2cmd.local_participants import domain_processes
 from ros_tutorials_common.dds import (
     PRIVATE_DOMAIN_IDS,
@@ -88,12 +89,15 @@ def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     # 2026-11-22) prints where each thread was, into the output the failing test shows.
     os.environ.setdefault("PYTHONFAULTHANDLER", "1")
     apply_dds_defaults()
+    # Lists discover for themselves unless a test asks for the daemon (tests/test_daemon.py).
+    os.environ[daemon.NO_DAEMON_VARIABLE] = "1"
     # The processes of this project that the tests start, forked from one that has imported
     # it (tests/warm.py): a third of the CPU a cold start costs.
     helpers.warm = Starter(str(tmp_path_factory.mktemp("warm")))
     yield domain_id
     helpers.warm.stop()
     helpers.warm = None
+    daemon.stop_quietly()  # a daemon a test started must not outlive the session
     lock.close()
 
 

@@ -34,6 +34,7 @@ import signal
 import socket
 import subprocess
 import sys
+import threading
 from collections.abc import Mapping, Sequence
 
 # Imported once here, before any fork: Python, rclpy (and numpy, through the messages it
@@ -283,16 +284,19 @@ class Starter:
             env=server_env,
         )
         self._ready: bool | None = None
+        # Commands started together (helpers.at_once) ask at once: one reads the line.
+        self._ready_lock = threading.Lock()
 
     @classmethod
     def _import_time(cls, env: Mapping[str, str]) -> dict[str, str]:
         return {name: value for name, value in env.items() if name not in cls.RUN_TIME_ONLY}
 
     def ready(self) -> bool:
-        if self._ready is None:
-            assert self._server.stdout is not None
-            self._ready = self._server.stdout.readline() == b"ready\n"
-        return self._ready
+        with self._ready_lock:
+            if self._ready is None:
+                assert self._server.stdout is not None
+                self._ready = self._server.stdout.readline() == b"ready\n"
+            return self._ready
 
     def eligible(self, argv: Sequence[str], env: Mapping[str, str]) -> bool:
         """A command of this project, run in the environment the server imported it in (see

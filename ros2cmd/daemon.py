@@ -1,0 +1,409 @@
+"""`ros2 daemon start|stop|status`, and the daemon: one graph node that the lists ask.
+
+A list that starts its own node waits for discovery every time (graph.Graph.settle). The
+daemon, like ros2cli's, is a background process that holds one hidden node
+(``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
+`service list`, `action list` and `topic|service find` over a Unix socket that only this user
+can reach. A list starts it when none runs (and answers itself that time); ``--no-daemon``
+bypasses it; it ends after IDLE_TIMEOUT without a question (ros2cli's 2 hours).
+
+ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
+started or list one that is gone (ros2cli#672). This one answers only once its graph is
+complete by the lists' own rule (graph.Graph.settle), read at the moment of the question:
+every process that holds a participant on this machine (local_participants.py) has been
+heard from, exactly, each participant's announced nodes and endpoints are in the graph, and
+no participant of a process that has ended is left in it (one killed by SIGKILL stays in
+DDS's graph until its lease runs out, 20 s). Otherwise it says why not, and the list
+discovers for itself. So it serves only where the count works: the default
+ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST with Fast DDS.
+
+One daemon per DDS setting (domain id, discovery range, peers, RMW, profile) and per
+installation: its socket's name is made from them, under a folder of this user's
+(``$XDG_RUNTIME_DIR`` or the temporary folder). A lock file lets only one daemon bind it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import fcntl
+import hashlib
+import json
+import os
+import selectors
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+from ros2cmd.graph import is_hidden, join_node_name
+from ros_tutorials_common.dds import apply_dds_defaults
+
+IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
+# How long the daemon waits for a process it counted to be heard from (one that has just
+# started) before it tells the list to discover for itself.
+ANSWER_WAIT = 2.0
+ANSWER_POLL = 0.02
+ASK_TIMEOUT = ANSWER_WAIT + 3.0  # what a list waits for the daemon's answer, at most
+START_TIMEOUT = 10.0  # `ros2 daemon start|stop` (ros2cli: 10 s)
+MAX_MESSAGE = 16 * 1024 * 1024
+# The environment that decides which graph a node sees (and which code answers).
+SETTINGS = (
+    "ROS_DOMAIN_ID",
+    "ROS_AUTOMATIC_DISCOVERY_RANGE",
+    "ROS_STATIC_PEERS",
+    "ROS_LOCALHOST_ONLY",
+    "RMW_IMPLEMENTATION",
+    "FASTRTPS_DEFAULT_PROFILES_FILE",
+    "FASTDDS_BUILTIN_TRANSPORTS",
+    "ROS_DISCOVERY_SERVER",
+)
+# Set (to anything but empty) the lists do not use the daemon, as with --no-daemon: the
+# tests' default (tests/conftest.py), so that they see direct discovery unless they ask.
+NO_DAEMON_VARIABLE = "ROS_TUTORIALS_NO_DAEMON"
+
+
+def _folder() -> Path:
+    base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
+    folder = Path(base) / f"ros_tutorials_daemon_{os.getuid()}"
+    folder.mkdir(mode=0o700, exist_ok=True)
+    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
+        raise OSError(f"{folder} is not this user's own")
+    return folder
+
+
+def socket_path() -> Path:
+    """The socket of the daemon for this environment's DDS settings and this installation."""
+    env = apply_dds_defaults(dict(os.environ))
+    key = json.dumps([sys.prefix, *(env.get(name, "") for name in SETTINGS)])
+    digest = hashlib.sha256(key.encode()).hexdigest()[:16]
+    return _folder() / f"domain{env.get('ROS_DOMAIN_ID', '0')}-{digest}.sock"
+
+
+def use_daemon(no_daemon: bool) -> bool:
+    return not no_daemon and not os.environ.get(NO_DAEMON_VARIABLE)
+
+
+# The client side: what the lists and `ros2 daemon` do.
+
+
+def _request(question: dict[str, Any], timeout: float) -> dict[str, Any] | None:
+    """One question to the running daemon and its answer; None if none answers."""
+    try:
+        with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
+            connection.settimeout(timeout)
+            connection.connect(str(socket_path()))
+            connection.sendall(json.dumps(question).encode() + b"\n")
+            connection.shutdown(socket.SHUT_WR)
+            data = b""
+            while chunk := connection.recv(65536):
+                data += chunk
+                if len(data) > MAX_MESSAGE:
+                    return None
+        return json.loads(data)
+    except (OSError, ValueError):
+        return None
+
+
+def running_pid() -> int | None:
+    """The running daemon's process id; None if none answers."""
+    answer = _request({"ask": "ping"}, timeout=2.0) or {}
+    return answer.get("pid") if answer.get("pong") is True else None
+
+
+def is_running() -> bool:
+    return running_pid() is not None
+
+
+def spawn() -> None:
+    """Start a daemon in the background, in a session of its own (a Ctrl-C in this terminal
+    is not for it), with this environment and the DDS defaults. If another one wins the
+    race to the socket, this one ends at once."""
+    env = apply_dds_defaults(dict(os.environ))
+    subprocess.Popen(
+        [sys.executable, "-m", "ros2cmd.daemon"],
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        env=env,
+        start_new_session=True,
+        close_fds=True,
+        cwd="/",
+    )
+
+
+class _Names:
+    """The daemon's names, with the methods of an rclpy node that the lists call."""
+
+    def __init__(self, answer: dict[str, Any]) -> None:
+        self._answer = answer
+
+    def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
+        return [(name, namespace) for name, namespace in self._answer["nodes"]]
+
+    def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
+        return [(name, list(types)) for name, types in self._answer["topics"]]
+
+    def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        return [(name, list(types)) for name, types in self._answer["services"]]
+
+
+class DaemonAnswer:
+    """The daemon's complete answer, with the methods of graph.Graph that the lists use
+    (and as ``node`` the names an rclpy node would give, hidden ones too)."""
+
+    finished = False
+
+    def __init__(self, answer: dict[str, Any]) -> None:
+        self._answer = answer
+        self.node = _Names(answer)
+
+    def settle(self) -> None:
+        """Complete already: the daemon answered only once it was."""
+
+    def finish(self) -> None:
+        self.finished = True
+
+    def node_names(self) -> list[str]:
+        names = self.node.get_node_names_and_namespaces()
+        return sorted(join_node_name(ns, name) for name, ns in names if not name.startswith("_"))
+
+    def topic_types(self) -> dict[str, list[str]]:
+        return {n: t for n, t in self.node.get_topic_names_and_types() if not is_hidden(n)}
+
+    def service_types(self) -> dict[str, list[str]]:
+        return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
+
+    def action_types(self) -> dict[str, list[str]]:
+        return {name: list(types) for name, types in self._answer["actions"]}
+
+    def close(self) -> None:
+        pass
+
+
+def ask_graph() -> DaemonAnswer | None:
+    """The daemon's complete answer; None (the list discovers for itself) if no daemon runs,
+    in which case one is started for the next list, or if it could not vouch for one."""
+    answer = _request({"ask": "graph"}, timeout=ASK_TIMEOUT)
+    if answer is None:
+        with contextlib.suppress(OSError):
+            spawn()
+        return None
+    if not answer.get("complete"):
+        return None
+    return DaemonAnswer(answer)
+
+
+def _wait_until(condition: Any, timeout: float) -> bool:
+    deadline = time.monotonic() + timeout
+    while not condition():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
+def start_command() -> None:
+    if is_running():
+        print("The daemon is already running")
+        return
+    spawn()
+    if not _wait_until(is_running, START_TIMEOUT):
+        from ros2cmd.errors import ToolError
+
+        raise ToolError(f"the daemon did not start within {START_TIMEOUT:g} s")
+    print("The daemon has been started")
+
+
+def _stop() -> bool | None:
+    """Ask the daemon to stop and wait until its process has ended: None if none ran, False
+    if it did not end within START_TIMEOUT."""
+    pid = running_pid()
+    if pid is None or _request({"ask": "stop"}, timeout=START_TIMEOUT) is None:
+        return None
+    return _wait_until(lambda: not _alive(pid), START_TIMEOUT)
+
+
+def _alive(pid: int) -> bool:
+    """Whether the process runs (a zombie waiting for its parent has ended)."""
+    try:
+        with open(f"/proc/{pid}/stat") as stat:
+            return stat.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except (OSError, IndexError):
+        return False
+
+
+def stop_command() -> None:
+    stopped = _stop()
+    if stopped is None:
+        print("The daemon is not running")
+    elif not stopped:
+        from ros2cmd.errors import ToolError
+
+        raise ToolError(f"the daemon did not stop within {START_TIMEOUT:g} s")
+    else:
+        print("The daemon has been stopped")
+
+
+def stop_quietly() -> None:
+    """Stop this environment's daemon if one runs, and wait until it has ended."""
+    _stop()
+
+
+def status_command() -> None:
+    print("The daemon is running" if is_running() else "The daemon is not running")
+
+
+def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    parser = verbs.add_parser("daemon", help="Various daemon related sub-commands")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for name, run, text in (
+        ("start", start_command, "Start the daemon if it isn't running"),
+        ("status", status_command, "Output the status of the daemon"),
+        ("stop", stop_command, "Stop the daemon if it is running"),
+    ):
+        p = sub.add_parser(name, help=text)
+        p.set_defaults(offline=True, run=lambda _graph, _args, run=run: run())
+
+
+# The daemon itself.
+
+
+class Daemon:
+    """The graph node, the listening socket, and the answers."""
+
+    def __init__(self, listener: socket.socket) -> None:
+        from ros2cmd.graph import Graph  # rclpy: only in the daemon, not in its clients
+
+        self.listener = listener
+        self.graph = Graph()
+        self.domain_id = self.graph.node.context.get_domain_id()
+        self.last_question = time.monotonic()
+
+    def serve(self) -> None:
+        with selectors.DefaultSelector() as selector:
+            selector.register(self.listener, selectors.EVENT_READ)
+            while self.graph.node.context.ok():
+                if time.monotonic() - self.last_question > IDLE_TIMEOUT:
+                    return
+                if not selector.select(timeout=1.0):
+                    continue
+                with contextlib.suppress(BlockingIOError):
+                    connection, _ = self.listener.accept()
+                    with connection:
+                        if not self._answer(connection):
+                            return
+
+    def _answer(self, connection: socket.socket) -> bool:
+        """Answer one question; False if it was to stop."""
+        self.last_question = time.monotonic()
+        connection.settimeout(2.0)
+        try:
+            data = b""
+            while not data.endswith(b"\n") and len(data) < 65536:
+                chunk = connection.recv(65536)
+                if not chunk:
+                    break
+                data += chunk
+            question = json.loads(data).get("ask")
+        except (OSError, ValueError, AttributeError):
+            return True
+        keep_going = question != "stop"
+        if question == "ping":
+            answer: dict[str, Any] = {"pong": True, "pid": os.getpid()}
+        elif question == "stop":
+            answer = {"stopping": True}
+        elif question == "graph":
+            answer = self.graph_answer()
+        else:
+            answer = {"error": f"unknown question {question!r}"}
+        with contextlib.suppress(OSError):
+            connection.sendall(json.dumps(answer).encode())
+        return keep_going
+
+    def graph_answer(self) -> dict[str, Any]:
+        """The lists' names, once the graph is complete; or why it is not."""
+        deadline = time.monotonic() + ANSWER_WAIT
+        while True:
+            verdict = self.complete()
+            if verdict is None:
+                break
+            final, why = verdict
+            if final or time.monotonic() > deadline:
+                return {"complete": False, "why": why}
+            time.sleep(ANSWER_POLL)
+        node = self.graph.node  # every name, hidden ones too: the client filters as asked
+        return {
+            "complete": True,
+            "nodes": node.get_node_names_and_namespaces(),
+            "topics": node.get_topic_names_and_types(),
+            "services": node.get_service_names_and_types(),
+            "actions": sorted(self.graph.action_types().items()),
+        }
+
+    def complete(self) -> tuple[bool, str] | None:
+        """None if the graph is complete now; else (whether waiting cannot help, why not)."""
+        from ros2cmd.local_participants import local_participants, process_of
+
+        graph = self.graph
+        if not graph.discovery.available:
+            return True, "no ros_discovery_info to compare with"
+        expected = local_participants(self.domain_id)
+        if expected is None:
+            return True, "this machine cannot say which processes hold a participant"
+        seen = Counter(process_of(prefix) for prefix in graph.participants())
+        if seen != expected:
+            gone = [pid for pid in seen if pid is None or seen[pid] > expected[pid]]
+            if gone:  # ended (it stays until its lease runs out), or another vendor's
+                return True, f"participants of processes that are gone or not counted: {gone}"
+            return False, "processes not heard from yet"
+        graph.discovery.take()
+        missing = graph.missing()
+        if missing:
+            return False, "; ".join(missing[:3])
+        # Counted again: a process that made a new participant meanwhile must not pass.
+        if local_participants(self.domain_id) != expected:
+            return False, "processes changed while looking"
+        return None
+
+    def close(self) -> None:
+        self.graph.close()
+
+
+def main() -> int:
+    """The daemon's process (`python -m ros2cmd.daemon`, started by spawn())."""
+    apply_dds_defaults()
+    path = socket_path()
+    with open(path.with_suffix(".lock"), "w") as lock:
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            return 0  # another daemon holds it: that one answers
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()  # left by a daemon that was killed
+        listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        listener.bind(str(path))
+        listener.listen(16)
+        listener.setblocking(False)
+        # SIGINT too ends it quietly (rclpy shuts down on SIGTERM; see Graph).
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        daemon = None
+        try:
+            daemon = Daemon(listener)
+            daemon.serve()
+        finally:
+            with contextlib.suppress(FileNotFoundError):
+                path.unlink()
+            listener.close()
+            if daemon is not None:
+                daemon.close()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
