@@ -16,7 +16,7 @@ import pytest
 from helpers import NodeProcess, at_once, ok
 
 RUNS = 20
-AT_ONCE = 2  # runs started together, as in test_graph_complete.py
+AT_ONCE = 5  # runs started together (each its own process and discovery)
 PLAIN_NODE = """
 import rclpy
 from rclpy.node import Node
