@@ -41,7 +41,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
-from ros2cmd.graph import is_hidden, join_node_name
+from ros2cmd.graph import VisibleNames
 from ros_tutorials_common.dds import apply_dds_defaults
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
@@ -153,7 +153,7 @@ class _Names:
         return [(name, list(types)) for name, types in self._answer["services"]]
 
 
-class DaemonAnswer:
+class DaemonAnswer(VisibleNames):
     """The daemon's complete answer, with the methods of graph.Graph that the lists use
     (and as ``node`` the names an rclpy node would give, hidden ones too)."""
 
@@ -168,16 +168,6 @@ class DaemonAnswer:
 
     def finish(self) -> None:
         self.finished = True
-
-    def node_names(self) -> list[str]:
-        names = self.node.get_node_names_and_namespaces()
-        return sorted(join_node_name(ns, name) for name, ns in names if not name.startswith("_"))
-
-    def topic_types(self) -> dict[str, list[str]]:
-        return {n: t for n, t in self.node.get_topic_names_and_types() if not is_hidden(n)}
-
-    def service_types(self) -> dict[str, list[str]]:
-        return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
 
     def action_types(self) -> dict[str, list[str]]:
         return {name: list(types) for name, types in self._answer["actions"]}

@@ -33,7 +33,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import TypeVar
+from typing import Any, TypeVar
 
 import rclpy
 from rclpy.action.graph import (
@@ -183,7 +183,24 @@ def ctrl_c_deferred() -> Iterator[None]:
         previous(signal.SIGINT, None)  # Python's default raises KeyboardInterrupt now
 
 
-class Graph:
+class VisibleNames:
+    """What a graph holds, hidden names left out as ros2cli does: from ``self.node`` (an rclpy
+    node, or the daemon's answer standing in for one)."""
+
+    node: Any
+
+    def node_names(self) -> list[str]:
+        names = self.node.get_node_names_and_namespaces()
+        return sorted(join_node_name(ns, name) for name, ns in names if not name.startswith("_"))
+
+    def topic_types(self) -> dict[str, list[str]]:
+        return {n: t for n, t in self.node.get_topic_names_and_types() if not is_hidden(n)}
+
+    def service_types(self) -> dict[str, list[str]]:
+        return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
+
+
+class Graph(VisibleNames):
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
 
     def __init__(self, timeout: float = DEFAULT_TIMEOUT, spin_time: float | None = None):
@@ -447,18 +464,6 @@ class Graph:
                 get_action_client_names_and_types_by_node(node, name, namespace),
             ),
         ]
-
-    # What the graph holds, hidden names left out as ros2cli does.
-
-    def node_names(self) -> list[str]:
-        names = self.node.get_node_names_and_namespaces()
-        return sorted(join_node_name(ns, name) for name, ns in names if not name.startswith("_"))
-
-    def topic_types(self) -> dict[str, list[str]]:
-        return {n: t for n, t in self.node.get_topic_names_and_types() if not is_hidden(n)}
-
-    def service_types(self) -> dict[str, list[str]]:
-        return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
 
     def action_types(self) -> dict[str, list[str]]:
         return dict(get_action_names_and_types(self.node))
