@@ -306,9 +306,16 @@ class Graph(VisibleNames):
         last_found, longest_gap = self.started, 0.0
         domain_id = self.node.context.get_domain_id()
         expected = local_participants(domain_id) if self.discovery.available else None
+        # No count at first can be a moment's gap (a socket whose process was ending while
+        # /proc was read, with lists started together): count again while the periods run.
+        recount_uncounted = expected is None and self.discovery.available
         next_count = all_announced
+        next_uncounted = time.monotonic() + RECOUNT_PERIOD
         while True:
             now = time.monotonic()
+            if expected is None and recount_uncounted and now >= next_uncounted:
+                expected = local_participants(domain_id)
+                next_uncounted = now + RECOUNT_PERIOD
             if expected is not None and heard_from_all(expected, participants):
                 # Counted again: a participant made meanwhile must not stand in for one
                 # that was there at the first count (both count for their process). No
@@ -317,7 +324,8 @@ class Graph(VisibleNames):
                 if recount is not None and heard_from_all(recount, participants):
                     if not unexplained(recount, participants):
                         break
-                    expected = None  # someone the count cannot see: wait the periods out
+                    # Someone the count cannot see: wait the periods out, counting no more.
+                    expected, recount_uncounted = None, False
                 elif recount is not None:
                     expected = recount
             elif expected is not None and now >= next_count:

@@ -117,6 +117,11 @@ def executor(context: Context) -> Iterator[SingleThreadedExecutor]:
     yield ex
     for node in ex.get_nodes():
         ex.remove_node(node)
+        # destroy_node() leaves action clients and servers, which keep the node in the graph
+        # of the session's domain (where later tests list the nodes): they go first.
+        for waitable in list(node.waitables):
+            if hasattr(waitable, "destroy"):
+                waitable.destroy()
         node.destroy_node()
     ex.shutdown()
 

@@ -58,7 +58,8 @@ def deep_client(context, executor):
         result_service_qos_profile=DEEP, cancel_service_qos_profile=DEEP,
     )  # fmt: skip
     spin_until(executor, client.server_is_ready, what="the action server")
-    return client
+    yield client
+    client.destroy()  # destroy_node() alone leaves a node with an action client in the graph
 
 
 def test_the_server_queues_more_requests_than_rclpys_default():

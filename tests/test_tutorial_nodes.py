@@ -80,7 +80,7 @@ def info_sections(text: str) -> dict[str, list[str]]:
 
 
 @pytest.mark.long  # two turtlesim processes and five ros2 commands: 8 to 15 s
-def test_the_nodes_page_typed_as_printed(node_process):
+def test_the_nodes_page_typed_as_printed(own_domain, node_process):  # the page: only its nodes
     sim = node_process(script("ros2"), "run", "turtlesim", "turtlesim_node", env=HEADLESS)
     sim.wait_for_text(SPAWNED)
     assert ok("ros2", "node", "list").splitlines() == ["/turtlesim"]
