@@ -18,6 +18,7 @@ import helpers
 import pytest
 import rclpy
 from helpers import NodeProcess, ready
+from rclpy.action import ActionClient
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
@@ -117,10 +118,11 @@ def executor(context: Context) -> Iterator[SingleThreadedExecutor]:
     yield ex
     for node in ex.get_nodes():
         ex.remove_node(node)
-        # destroy_node() leaves action clients and servers, which keep the node in the graph
-        # of the session's domain (where later tests list the nodes): they go first.
+        # destroy_node() leaves a node's action clients, which keep it in the graph of the
+        # session's domain (where later tests list the nodes): they go first. (Action servers
+        # are the lessons' own, destroyed by their node's destroy_node().)
         for waitable in list(node.waitables):
-            if hasattr(waitable, "destroy"):
+            if isinstance(waitable, ActionClient):
                 waitable.destroy()
         node.destroy_node()
     ex.shutdown()
