@@ -141,12 +141,10 @@ def _processes() -> Iterator[Callable[..., NodeProcess]]:
         proc.kill()
 
 
-@pytest.fixture
-def own_domain(ros_domain: int, monkeypatch: pytest.MonkeyPatch) -> Iterator[int]:
-    """A ROS_DOMAIN_ID of the test's own, where no process of this machine runs at the start:
-    for tests that check a whole listing against a tutorial page, which must see only what
-    the test starts (the session's domain may still hold what earlier tests left running).
-    Processes started in it start cold (tests/warm.py serves the session's environment)."""
+def _own_domain() -> Iterator[int]:
+    """A ROS_DOMAIN_ID of its own, where no process of this machine runs at the start, set in
+    os.environ until the end (processes started in it start cold: tests/warm.py serves the
+    session's environment)."""
     for _ in range(len(PRIVATE_DOMAIN_IDS)):
         domain_id, lock = claim_private_domain_id()
         if not (domain_processes(domain_id) or (False,))[0]:
@@ -154,9 +152,23 @@ def own_domain(ros_domain: int, monkeypatch: pytest.MonkeyPatch) -> Iterator[int
         lock.close()
     else:
         pytest.fail("no private ROS_DOMAIN_ID without running processes")
-    monkeypatch.setenv("ROS_DOMAIN_ID", str(domain_id))
-    yield domain_id
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("ROS_DOMAIN_ID", str(domain_id))
+        yield domain_id
     lock.close()
+
+
+@pytest.fixture
+def own_domain(ros_domain: int) -> Iterator[int]:
+    """For tests that check a whole listing against a tutorial page, which must see only what
+    the test starts (the session's domain may still hold what earlier tests left running)."""
+    yield from _own_domain()
+
+
+@pytest.fixture(scope="class")
+def class_own_domain(ros_domain: int) -> Iterator[int]:
+    """own_domain, for the tests of a class that share the processes they check."""
+    yield from _own_domain()
 
 
 @pytest.fixture
