@@ -88,6 +88,8 @@ class TestTheTopicsPage:
         pub = ros2(node_process, "topic", "pub", "/turtle1/cmd_vel", TWIST, TWIST_VALUES)
         lines = echo.wait_for_output(lambda lines: "---" in lines, what="an echoed Twist")
         assert blocks(lines)[0] == TWIST_YAML
+        # (The echo may print before the publisher's blank line after #1 has been read here.)
+        pub.wait_for_output(lambda lines: len(lines) >= 3, what="the publisher's first lines")
         assert pub.output.splitlines()[:3] == [
             "publisher: beginning loop",
             f"publishing #1: {TWIST_REPR}",
