@@ -27,6 +27,7 @@ from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
+from ros_tutorials_common.dds import domain_id_problem
 
 
 def common_options() -> argparse.ArgumentParser:
@@ -122,6 +123,9 @@ def _execute(
     graph = None
     status = None  # the exit status, once decided
     try:
+        problem = None if offline else domain_id_problem()
+        if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
+            raise ToolError(problem)
         if use_daemon and spin_time is None:
             graph = daemon.ask_graph()
         if not offline and graph is None:

@@ -41,8 +41,9 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
+from ros2cmd.errors import ToolError
 from ros2cmd.graph import VisibleNames
-from ros_tutorials_common.dds import apply_dds_defaults
+from ros_tutorials_common.dds import apply_dds_defaults, domain_id_problem
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
 # How long the daemon waits for a process it counted to be heard from (one that has just
@@ -199,13 +200,14 @@ def _wait_until(condition: Any, timeout: float) -> bool:
 
 
 def start_command() -> None:
+    problem = domain_id_problem()
+    if problem:  # the daemon's node could not start
+        raise ToolError(problem)
     if is_running():
         print("The daemon is already running")
         return
     spawn()
     if not _wait_until(is_running, START_TIMEOUT):
-        from ros2cmd.errors import ToolError
-
         raise ToolError(f"the daemon did not start within {START_TIMEOUT:g} s")
     print("The daemon has been started")
 
@@ -233,8 +235,6 @@ def stop_command() -> None:
     if stopped is None:
         print("The daemon is not running")
     elif not stopped:
-        from ros2cmd.errors import ToolError
-
         raise ToolError(f"the daemon did not stop within {START_TIMEOUT:g} s")
     else:
         print("The daemon has been stopped")

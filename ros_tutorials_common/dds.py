@@ -14,7 +14,7 @@ import fcntl
 import os
 import random
 import tempfile
-from collections.abc import MutableMapping
+from collections.abc import Mapping, MutableMapping
 from pathlib import Path
 from typing import IO
 
@@ -25,6 +25,25 @@ DDS_DEFAULTS = {
 }
 # Every RMW accepts domain ids 0..101 (Fast DDS maps them to ports); 0 is everyone's default.
 PRIVATE_DOMAIN_IDS = range(1, 102)
+
+
+# Fast DDS gives domain d the ports from 7400 + 250 * d: above 232 they pass 65535.
+MAX_DOMAIN_ID = 232
+
+
+def domain_id_problem(env: Mapping[str, str] | None = None) -> str | None:
+    """What is wrong with ROS_DOMAIN_ID, as one line; None if it can be used (or is unset)."""
+    text = (os.environ if env is None else env).get("ROS_DOMAIN_ID", "").strip()
+    if not text:
+        return None  # rcl's default: 0
+    if not text.isdigit():
+        what = "is not a whole number"
+    elif int(text) > MAX_DOMAIN_ID:
+        what = f"is above {MAX_DOMAIN_ID}, the largest domain id Fast DDS can use"
+    else:
+        return None
+    ids = f"0 to {PRIVATE_DOMAIN_IDS[-1]}"
+    return f"ROS_DOMAIN_ID={text!r} {what}: use one from {ids} (every RMW takes those)"
 
 
 def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMapping[str, str]:

@@ -3,6 +3,9 @@ ros2cli does, and a verb it does not have is a usage error naming the ones it ha
 
 from __future__ import annotations
 
+import os
+
+import pytest
 from helpers import run
 
 
@@ -27,3 +30,24 @@ def test_an_unknown_verb_is_a_usage_error_naming_the_verbs():
     result = run("ros2", "topics", "list")
     assert result.returncode == 2 and "Traceback" not in result.stderr
     assert "invalid choice: 'topics'" in result.stderr and "'topic'" in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("value", "problem"),
+    [
+        ("abc", "'abc' is not a whole number"),
+        ("300", "'300' is above 232, the largest domain id Fast DDS can use"),
+    ],
+)
+@pytest.mark.parametrize(
+    "command",
+    [("ros2", "topic", "list"), ("ros2", "daemon", "start"), ("rostopic", "list")],
+    ids=" ".join,
+)
+def test_a_domain_id_dds_cannot_use_is_one_line(value, problem, command):
+    # (Before: rcl's traceback, or Fast DDS's coloured lines and an empty list, exit 0.)
+    result = run(*command, env={**os.environ, "ROS_DOMAIN_ID": value})
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr == (
+        f"error: ROS_DOMAIN_ID={problem}: use one from 0 to 101 (every RMW takes those)\n"
+    )
