@@ -570,8 +570,11 @@ def _ros2_echo(graph: Graph, args: argparse.Namespace) -> None:
         subscription = None
     else:  # the QoS that matches the publishers, now and as they come and go
         subscription = AdaptiveSubscription(graph, msg_type, topic, on_message, raw=args.raw)
+    other_type = _OtherType(graph, topic, msg_type)
     while time.monotonic() < deadline:
         graph.spin_once(min(0.1, max(0.0, deadline - time.monotonic())))
+        if args.message_type is not None:
+            other_type.look()
         if subscription is not None:
             subscription.update()
         while received:
@@ -584,6 +587,36 @@ def _ros2_echo(graph: Graph, args: argparse.Namespace) -> None:
             if args.once:
                 return
     graph.finish()  # --timeout: the time is up, which ends the command normally
+
+
+class _OtherType:
+    """Says once, on stderr, that a topic carries other types than the one given: ros2cli
+    then waits or prints nothing, for ever and without a word (a typed type is easily wrong)."""
+
+    def __init__(self, graph: Graph, topic: str, msg_type: type) -> None:
+        self.graph, self.topic, self.type_name = graph, topic, full_type_name(msg_type)
+        self.said = False
+        self.next_look = time.monotonic() + 0.5  # discovery first
+
+    def look(self) -> None:
+        if self.said or time.monotonic() < self.next_look:
+            return
+        self.next_look = time.monotonic() + 1.0
+        node = self.graph.node
+        endpoints = [
+            *node.get_publishers_info_by_topic(self.topic),
+            *node.get_subscriptions_info_by_topic(self.topic),
+        ]
+        own = (node.get_name(), node.get_namespace())
+        types = sorted({e.topic_type for e in endpoints if (e.node_name, e.node_namespace) != own})
+        if types and self.type_name not in types:
+            self.said = True
+            print(
+                f"warning: {self.topic} carries {', '.join(types)}, not {self.type_name}: "
+                f"nothing there will match (`ros2 topic type {self.topic}` says its type)",
+                file=sys.stderr,
+                flush=True,
+            )
 
 
 def _lost_messages(status: Any) -> None:
@@ -623,7 +656,8 @@ def ros2_pub(graph: Graph, args: argparse.Namespace) -> None:
     msg = fill_message(msg_type(), values, stamps=stamps)
     with until_stopped() if times == 0 else contextlib.nullcontext():
         publisher = graph.node.create_publisher(msg_type, topic, qos_from_args(args))
-        _wait_for_subscriptions(graph, publisher, wait_for, args.max_wait_time_secs)
+        other_type = _OtherType(graph, topic, msg_type)
+        _wait_for_subscriptions(graph, publisher, wait_for, args.max_wait_time_secs, other_type)
         print("publisher: beginning loop", flush=True)
         count = 0
         next_time = time.monotonic()
@@ -631,6 +665,7 @@ def ros2_pub(graph: Graph, args: argparse.Namespace) -> None:
             wait = next_time - time.monotonic()
             if wait > 0:
                 graph.spin_once(min(wait, 0.1))
+                other_type.look()
                 continue
             now = graph.node.get_clock().now().to_msg()
             for stamp in stamps:
@@ -646,11 +681,17 @@ def ros2_pub(graph: Graph, args: argparse.Namespace) -> None:
 
 
 def _wait_for_subscriptions(
-    graph: Graph, publisher: Publisher, wanted: int, max_wait: float | None
+    graph: Graph,
+    publisher: Publisher,
+    wanted: int,
+    max_wait: float | None,
+    other_type: _OtherType | None = None,
 ) -> None:
     waited = 0.0
     since_said = 0
     while publisher.get_subscription_count() < wanted:
+        if other_type is not None:
+            other_type.look()
         if since_said == 0:
             print(f"Waiting for at least {wanted} matching subscription(s)...", flush=True)
         if max_wait is not None and waited >= max_wait:

@@ -15,7 +15,7 @@ import re
 import time
 
 import pytest
-from helpers import BIN, fails, ok
+from helpers import BIN, fails, ok, run
 
 from ros2cmd.messages import fill_message, message_to_yaml
 
@@ -161,6 +161,25 @@ class TestTheTopicsPage:
         field = ok("ros2", "topic", "echo", "--once", "/turtle1/pose", "--field", "theta")
         value, end = field.splitlines()
         assert end == "---" and float(value) == pytest.approx(float(value))
+
+    def test_a_wrong_type_is_said_not_waited_for_in_silence(self, turtlesim):
+        # ros2cli waits (pub --once) or prints nothing (echo) for ever, without a word.
+        color = "turtlesim/msg/Color"
+        echo = run("ros2", "topic", "echo", "/turtle1/pose", color, "--timeout", "3")
+        assert echo.returncode == 0 and echo.stdout == ""
+        assert echo.stderr == (
+            "warning: /turtle1/pose carries turtlesim/msg/Pose, not turtlesim/msg/Color: "
+            "nothing there will match (`ros2 topic type /turtle1/pose` says its type)\n"
+        )
+        pub = run(
+            *("ros2", "topic", "pub", "--once", "--max-wait-time-secs", "3", "/turtle1/cmd_vel"),
+            *("turtlesim/msg/Pose", "{x: 2}"),
+        )
+        assert pub.returncode == 1
+        assert pub.stderr.splitlines()[0] == (
+            "warning: /turtle1/cmd_vel carries geometry_msgs/msg/Twist, not turtlesim/msg/Pose: "
+            "nothing there will match (`ros2 topic type /turtle1/cmd_vel` says its type)"
+        )
 
     def test_topic_find(self, turtlesim):
         assert "/turtle1/cmd_vel" in ok("ros2", "topic", "find", TWIST).splitlines()
