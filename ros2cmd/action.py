@@ -15,12 +15,13 @@ from typing import Any
 
 from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
+from rclpy.action.graph import get_action_server_names_and_types_by_node
 
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
 from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
-from ros2cmd.typenames import load_type
+from ros2cmd.typenames import full_type_name, load_type
 from ros2cmd.wait import Interrupted, ServerLost, spin_until
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
@@ -36,6 +37,22 @@ STATUS_NAMES = {
 
 def action_types(graph: Graph) -> dict[str, list[str]]:
     return graph.action_types()
+
+
+def _server_types(graph: Graph, action: str) -> list[str]:
+    """The types the action's servers offer (of other nodes than ours, whose client has the
+    type asked for)."""
+    node = graph.node
+    types: set[str] = set()
+    for name, namespace in node.get_node_names_and_namespaces():
+        if (name, namespace) == (node.get_name(), node.get_namespace()):
+            continue
+        for server, server_types in get_action_server_names_and_types_by_node(
+            node, name, namespace
+        ):
+            if server == action:
+                types.update(server_types)
+    return sorted(types)
 
 
 def list_actions(graph: Graph, show_types: bool = False, count: bool = False) -> None:
@@ -115,6 +132,14 @@ def send_goal(
         if not spin_until(
             graph.executor, client.server_is_ready, graph.timeout, interrupted=interrupted
         ):
+            # A server of another type is never ready for this client: say which type it is.
+            types = _server_types(graph, action)
+            wanted = full_type_name(action_type)
+            if types and wanted not in types:
+                raise ToolError(
+                    f"action '{action}' has type {', '.join(types)}, not {wanted} "
+                    f"(`ros2 action type {action}` says its type)"
+                )
             raise ToolError(f"no action server for '{action}' (waited {graph.timeout:g} s)")
         print(_block("Sending goal", goal, indent="     "), flush=True)
         sent = client.send_goal_async(goal, feedback_callback=on_feedback if feedback else None)

@@ -160,6 +160,12 @@ class TestAgainstOneTurtlesim:
                 "ros2 action send_goal /nope turtlesim/action/RotateAbsolute '{}' --timeout 1",
                 "error: no action server for '/nope' (waited 1 s)",
             ),
+            (
+                "ros2 action send_goal /turtle1/rotate_absolute "
+                "ros_tutorials_interfaces/action/Fibonacci '{order: 5}'",
+                "error: action '/turtle1/rotate_absolute' has type "
+                "turtlesim/action/RotateAbsolute, not ros_tutorials_interfaces/action/Fibonacci",
+            ),
             (f'{ROTATE} "{{theta: .nan}}"', "Goal was rejected."),  # turtlesim refuses it
             (f'{ROTATE} "{{heading: 1}}"', "error: 'heading' is not a field of "),
             (f'{ROTATE} "{{theta: one}}"', "error: theta is a number (float), got 'one'"),
