@@ -107,6 +107,9 @@ def translate_arguments(args: Sequence[str]) -> list[str]:
         elif arg == "--ros-args":
             out.append(arg)
             in_ros_args = True
+        elif arg.startswith("--ros-arg") or arg in ("--ros_args", "-ros-args", "--rosargs"):
+            # rcl would take what follows as the program's own arguments, and fail on them.
+            raise ToolError(f"{arg}: did you mean --ros-args?")
         else:
             rule = ros1_argument(arg)
             if rule is None:

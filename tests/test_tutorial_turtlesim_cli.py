@@ -79,3 +79,9 @@ def test_ros2_run_prefix_goes_before_the_executable():
     # ros2run's --prefix (`--prefix 'gdb -ex run --args'`): here `echo`, which prints the line.
     out = ok("ros2", "run", "--prefix", "echo prefixed", "turtlesim", "turtlesim_node")
     assert out.startswith("prefixed ") and "ros_tutorials_turtlesim.turtlesim_node" in out
+
+
+def test_a_misspelled_ros_args_is_named():
+    # (Before: "__node:=x: unknown special argument", about the words after it.)
+    line = fails("ros2", "run", "turtlesim", "turtlesim_node", "--ros-arg", "-r", "__node:=x")
+    assert line == "error: --ros-arg: did you mean --ros-args?"
