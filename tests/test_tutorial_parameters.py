@@ -205,7 +205,7 @@ def test_a_node_with_dynamically_typed_and_array_parameters(node_process):
 
 
 @pytest.fixture(scope="class")
-def shared_turtlesim(class_node_process):
+def shared_turtlesim(class_own_domain, class_node_process):
     """One turtlesim for the tests of a class that leave it as it is."""
     sim = class_node_process(*TURTLESIM, env=HEADLESS)
     sim.wait_for_text("Spawning turtle [turtle1]")

@@ -107,8 +107,10 @@ class TestTheTopicsPage:
         once = ok(
             "ros2", "topic", "pub", "--once", "-w", "2", "/turtle1/cmd_vel", TWIST, TWIST_VALUES
         )
-        assert once.splitlines() == [
-            "Waiting for at least 2 matching subscription(s)...",
+        # The page's first line, as ros2topic prints it, only while fewer than 2 have matched
+        # (its new publisher is usually discovered within a moment, not always).
+        waiting = "Waiting for at least 2 matching subscription(s)..."
+        assert once.splitlines()[1 if once.startswith(waiting) else 0 :] == [
             "publisher: beginning loop",
             f"publishing #1: {TWIST_REPR}",
             "",
