@@ -24,7 +24,6 @@ services and actions with their servers and clients.
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 import os
 import signal
@@ -150,23 +149,6 @@ def print_names(
     for name, types in sorted(names_and_types().items()):
         if of_type is None or of_type in types:
             print(f"{name} [{', '.join(types)}]" if show_types else name)
-
-
-def add_list_and_type(
-    sub: argparse._SubParsersAction,
-    common: argparse.ArgumentParser,
-    noun: str,
-    list_names: Callable[[Graph, bool], None],
-    print_type: Callable[[Graph, str], None],
-) -> None:
-    """The `list [-t]` and `type NAME` commands, as topic, service and action all have them."""
-    p = sub.add_parser("list", parents=[common], help=f"list the {noun}s in the graph")
-    p.add_argument("-t", "--show-types", action="store_true", help=f"show each {noun}'s type")
-    p.set_defaults(daemon=True, run=lambda graph, a: list_names(graph, a.show_types))
-
-    p = sub.add_parser("type", parents=[common], help=f"print the {noun}'s type")
-    p.add_argument("name", metavar=noun)
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.name))
 
 
 @contextlib.contextmanager
