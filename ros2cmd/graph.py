@@ -53,7 +53,7 @@ from ros2cmd.local_participants import (
     still_there,
     unexplained,
 )
-from ros2cmd.wait import spin_until
+from ros2cmd.wait import count_ctrl_c, spin_until
 from ros_tutorials_common.ros import init
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
@@ -209,6 +209,7 @@ class Graph(VisibleNames):
         except KeyboardInterrupt:  # pressed meanwhile: everything exists, close it first
             self.close()
             raise
+        count_ctrl_c()
 
     def close(self) -> None:
         """Destroy the node and shut ROS down; a Ctrl-C meanwhile takes effect afterwards.
