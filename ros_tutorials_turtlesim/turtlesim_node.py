@@ -35,6 +35,7 @@ from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.action.server import ServerGoalHandle
 from rclpy.exceptions import ParameterException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -63,6 +64,7 @@ FLOAT32_MAX = 3.4028234663852886e38
 REPAINT_HZ = 30
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
+LONGEST_ENDPOINT = "rotate_absolute/_action/get_result"
 
 
 def topic_qos() -> QoSProfile:
@@ -300,44 +302,76 @@ class TurtlesimNode(Node):
             elif name in self.turtles:
                 return ""
             turtle = Turtle(name, x, y, theta, index=self._spawned)
-            self._spawned += 1
             entry = TurtleEntry(turtle)
-            qos = topic_qos()
-            entry.endpoints = [
-                self.create_subscription(
-                    Twist, f"{name}/cmd_vel", lambda msg: self._on_cmd_vel(entry, msg), qos
-                ),
-                self.create_publisher(Pose, f"{name}/pose", qos),
-                self.create_publisher(Color, f"{name}/color_sensor", qos),
-                self.create_service(
-                    SetPen, f"{name}/set_pen", lambda rq, rs: self._on_set_pen(entry, rq, rs)
-                ),
-                self.create_service(
-                    TeleportAbsolute,
-                    f"{name}/teleport_absolute",
-                    lambda rq, rs: self._on_teleport_absolute(entry, rq, rs),
-                ),
-                self.create_service(
-                    TeleportRelative,
-                    f"{name}/teleport_relative",
-                    lambda rq, rs: self._on_teleport_relative(entry, rq, rs),
-                ),
-            ]
-            entry.action_server = ActionServer(
-                self,
-                RotateAbsolute,
-                f"{name}/rotate_absolute",
-                execute_callback=functools.partial(self._execute_rotation, entry),
-                goal_callback=functools.partial(self._check_rotation_goal, entry),
-                handle_accepted_callback=lambda handle: self._accept_rotation(entry, handle),
-                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
-            )
+            try:
+                self._create_endpoints(entry, name)
+            except Exception:  # nothing of a turtle that could not be made stays behind
+                for endpoint in entry.endpoints:
+                    self._destroy(endpoint)
+                if entry.action_server is not None:
+                    entry.action_server.destroy()
+                raise
+            self._spawned += 1
             self.turtles[name] = entry
             self._dirty = True
         self.get_logger().info(
             f"Spawning turtle [{name}] at x=[{x:f}], y=[{y:f}], theta=[{theta:f}]"
         )
         return name
+
+    def _create_endpoints(self, entry: TurtleEntry, name: str) -> None:
+        qos = topic_qos()
+        entry.endpoints.append(
+            self.create_subscription(
+                Twist, f"{name}/cmd_vel", lambda msg: self._on_cmd_vel(entry, msg), qos
+            )
+        )
+        entry.endpoints.append(self.create_publisher(Pose, f"{name}/pose", qos))
+        entry.endpoints.append(self.create_publisher(Color, f"{name}/color_sensor", qos))
+        entry.endpoints.append(
+            self.create_service(
+                SetPen, f"{name}/set_pen", lambda rq, rs: self._on_set_pen(entry, rq, rs)
+            )
+        )
+        entry.endpoints.append(
+            self.create_service(
+                TeleportAbsolute,
+                f"{name}/teleport_absolute",
+                lambda rq, rs: self._on_teleport_absolute(entry, rq, rs),
+            )
+        )
+        entry.endpoints.append(
+            self.create_service(
+                TeleportRelative,
+                f"{name}/teleport_relative",
+                lambda rq, rs: self._on_teleport_relative(entry, rq, rs),
+            )
+        )
+        entry.action_server = ActionServer(
+            self,
+            RotateAbsolute,
+            f"{name}/rotate_absolute",
+            execute_callback=functools.partial(self._execute_rotation, entry),
+            goal_callback=functools.partial(self._check_rotation_goal, entry),
+            handle_accepted_callback=lambda handle: self._accept_rotation(entry, handle),
+            cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+        )
+
+    def _name_problem(self, name: str) -> str | None:
+        """Why a turtle cannot have this name (None if it can): a turtle's name is part of the
+        names of its topics, services and action, which ROS bounds (247 characters in all)."""
+        if not _NAME.fullmatch(name):
+            return (
+                "not a valid ROS name (letters, digits and '_', starting with a letter, "
+                "'/' between parts)"
+            )
+        try:  # the longest of them: the action's hidden services
+            self.resolve_service_name(f"{name}/{LONGEST_ENDPOINT}")
+        except _rclpy.RCLError as error:
+            if "length" in str(error):
+                return "too long: the names of its topics and services would exceed what ROS allows"
+            return str(error).split(", at ")[0]
+        return None
 
     def kill_turtle(self, name: str) -> bool:
         with self._lock:
@@ -377,13 +411,15 @@ class TurtlesimNode(Node):
                 f"Could not spawn turtle [{request.name}]: x, y and theta must be finite numbers"
             )
             return response
-        if request.name and not _NAME.fullmatch(request.name):
-            self.get_logger().error(
-                f"Could not spawn turtle [{request.name}]: not a valid ROS name (letters, "
-                "digits and '_', starting with a letter, '/' between parts)"
-            )
+        problem = request.name and self._name_problem(request.name)
+        if problem:
+            self.get_logger().error(f"Could not spawn turtle [{request.name}]: {problem}")
             return response
-        name = self.spawn_turtle(request.name, request.x, request.y, request.theta)
+        try:
+            name = self.spawn_turtle(request.name, request.x, request.y, request.theta)
+        except Exception as error:  # one bad request must not end the simulator
+            self.get_logger().error(f"Could not spawn turtle [{request.name}]: {error}")
+            return response
         if not name:
             self.get_logger().error(f"A turtle named [{request.name}] already exists")
         response.name = name

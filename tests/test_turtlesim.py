@@ -215,6 +215,9 @@ def test_spawn_names_and_refusals(sim, probe):
     assert probe.call(Spawn, "/spawn", x=math.nan, y=1.0, theta=0.0, name="nan").name == ""
     assert probe.call(Spawn, "/spawn", x=1.0, y=math.inf, theta=0.0, name="inf").name == ""
     assert sorted(sim.turtles) == ["new_turtle", "turtle1"]
+    # a name too long for its topics and services: refused, and the simulator lives on
+    assert probe.call(Spawn, "/spawn", x=1.0, y=1.0, theta=0.0, name="a" * 240).name == ""
+    assert sorted(sim.turtles) == ["new_turtle", "turtle1"]
     # an empty name picks turtleN
     assert probe.call(Spawn, "/spawn", x=2.0, y=2.0, theta=0.0, name="").name == "turtle2"
     # spawned outside the canvas: clamped at the first update, as turtlesim does
@@ -222,6 +225,19 @@ def test_spawn_names_and_refusals(sim, probe):
     probe.watch("far")
     pose = probe.pose("far")
     assert (pose.x, pose.y) == (to_float32(WORLD_SIZE), 0.0)
+
+
+def test_every_name_length_spawns_or_is_refused(sim, probe):
+    """Around the length where a name stops fitting: each request is answered (a turtle, or
+    an empty name), and the simulator serves the next one (ROS 2 turtlesim ends on one)."""
+    spawned = []
+    for length in range(190, 250, 3):
+        name = "t" * length
+        answer = probe.call(Spawn, "/spawn", x=1.0, y=1.0, theta=0.0, name=name).name
+        assert answer in (name, ""), length
+        spawned.append(bool(answer))
+    assert spawned[0] and not spawned[-1], spawned
+    assert probe.call(Spawn, "/spawn", x=2.0, y=2.0, theta=0.0, name="after").name == "after"
 
 
 def test_kill_removes_the_turtle_and_its_topics(sim, probe, executor):
