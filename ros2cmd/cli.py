@@ -27,7 +27,7 @@ from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
-from ros_tutorials_common.dds import domain_id_problem
+from ros_tutorials_common.dds import environment_problem
 
 
 def common_options() -> argparse.ArgumentParser:
@@ -123,7 +123,7 @@ def _execute(
     graph = None
     status = None  # the exit status, once decided
     try:
-        problem = None if offline else domain_id_problem()
+        problem = None if offline else environment_problem()
         if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
             raise ToolError(problem)
         if use_daemon and spin_time is None:

@@ -43,7 +43,7 @@ from typing import Any
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import VisibleNames
-from ros_tutorials_common.dds import apply_dds_defaults, domain_id_problem
+from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
 # How long the daemon waits for a process it counted to be heard from (one that has just
@@ -200,7 +200,7 @@ def _wait_until(condition: Any, timeout: float) -> bool:
 
 
 def start_command() -> None:
-    problem = domain_id_problem()
+    problem = environment_problem()
     if problem:  # the daemon's node could not start
         raise ToolError(problem)
     if is_running():

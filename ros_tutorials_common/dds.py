@@ -46,6 +46,47 @@ def domain_id_problem(env: Mapping[str, str] | None = None) -> str | None:
     return f"ROS_DOMAIN_ID={text!r} {what}: use one from {ids} (every RMW takes those)"
 
 
+def log_dir(env: Mapping[str, str] | None = None) -> Path:
+    """Where rcl writes a process's log file: ROS_LOG_DIR, else ROS_HOME/log, else ~/.ros/log."""
+    env = os.environ if env is None else env
+    if env.get("ROS_LOG_DIR"):
+        return Path(os.path.expanduser(env["ROS_LOG_DIR"]))
+    home = env.get("ROS_HOME") or os.path.join(os.path.expanduser("~"), ".ros")
+    return Path(os.path.expanduser(home)) / "log"
+
+
+def log_dir_problem(env: Mapping[str, str] | None = None) -> str | None:
+    """What keeps rcl from writing its log file, as one line; None if nothing does.
+
+    rclpy.init fails with an RCLError traceback when the directory cannot be created; this
+    creates it as rcl would (so an answer of None is true), and checks it can be written."""
+    path = log_dir(env)
+    named_by = next(
+        (n for n in ("ROS_LOG_DIR", "ROS_HOME") if (os.environ if env is None else env).get(n)),
+        "HOME",
+    )
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        reason = "not a directory"
+    except OSError as error:
+        reason = error.strerror or str(error)
+    else:
+        if os.access(path, os.W_OK | os.X_OK):
+            return None
+        reason = "not writable"
+    return (
+        f"cannot write ROS log files to '{path}' ({named_by}): {reason}; "
+        "set ROS_LOG_DIR to a directory you can write"
+    )
+
+
+def environment_problem(env: Mapping[str, str] | None = None) -> str | None:
+    """The first thing in the environment that would make rclpy.init fail (or Fast DDS print
+    its own lines), as one line; None if there is nothing."""
+    return domain_id_problem(env) or log_dir_problem(env)
+
+
 def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMapping[str, str]:
     """Fill in the DDS defaults the user has not set; return the environment."""
     if env is None:

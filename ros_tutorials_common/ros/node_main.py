@@ -36,7 +36,7 @@ from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_opti
 from rclpy.utilities import remove_ros_args
 
 from ros_tutorials_common import ctrl_c
-from ros_tutorials_common.dds import apply_dds_defaults
+from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 # The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
 # it nowhere public (not in rclpy.exceptions; rclpy's own modules take it from the private
@@ -62,6 +62,9 @@ def ros_args(argv: Sequence[str] | None = None) -> list[str]:
     KeyboardInterrupt only once ROS is shut down (see the module's docstring)."""
     argv = list(sys.argv if argv is None else argv)
     user_args(argv)  # ends the program with one line if the ROS arguments are malformed
+    problem = environment_problem()  # ROS_DOMAIN_ID=abc, an unwritable ROS_LOG_DIR, ...
+    if problem:
+        raise SystemExit(f"error: {problem}")
     apply_dds_defaults()
     _CtrlCOnceRosIsDown.install()
     return argv

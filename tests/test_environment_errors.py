@@ -1,0 +1,42 @@
+"""An environment rclpy.init cannot work with: one line naming the variable, exit status 1,
+no traceback and no raw Fast DDS lines, from the lesson nodes, turtlesim and the tools."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from helpers import run
+
+COMMANDS = {
+    "talker": ("talker",),
+    "ros2 topic list": ("ros2", "topic", "list", "--no-daemon"),
+    "rostopic list": ("rostopic", "list"),
+    "turtlesim": ("ros2", "run", "turtlesim", "turtlesim_node"),
+}
+PROBLEMS = {
+    "domain id not a number": ({"ROS_DOMAIN_ID": "abc"}, "ROS_DOMAIN_ID='abc' is not a whole"),
+    "domain id above Fast DDS's ports": ({"ROS_DOMAIN_ID": "300"}, "ROS_DOMAIN_ID='300' is above"),
+    "log dir a file": (
+        {"ROS_LOG_DIR": "/etc/passwd"},
+        "cannot write ROS log files to '/etc/passwd' (ROS_LOG_DIR): not a directory",
+    ),
+    "ROS_HOME where nothing can be made": (
+        {"ROS_HOME": "/proc/no_such_process/ros"},
+        "cannot write ROS log files to '/proc/no_such_process/ros/log' (ROS_HOME)",
+    ),
+}
+
+
+@pytest.mark.parametrize("problem", PROBLEMS)
+@pytest.mark.parametrize("name", COMMANDS)
+def test_one_line_names_the_variable(name: str, problem: str):
+    variables, expected = PROBLEMS[problem]
+    env = {k: v for k, v in os.environ.items() if k not in ("ROS_LOG_DIR", "ROS_HOME")}
+    result = run(*COMMANDS[name], env=env | variables, timeout=60)
+    assert result.returncode == 1, f"{name}: status {result.returncode}\n{result.stderr}"
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and expected in lines[0], (
+        result.stderr
+    )
+    assert "\x1b[" not in result.stderr  # no coloured Fast DDS lines
