@@ -54,6 +54,7 @@ from ros2cmd.local_participants import (
     unexplained,
 )
 from ros2cmd.wait import count_ctrl_c, spin_until
+from ros_tutorials_common import bounded
 from ros_tutorials_common.ros import init
 
 DEFAULT_TIMEOUT = 5.0  # how long a command waits for the thing it names to appear
@@ -210,6 +211,9 @@ class Graph(VisibleNames):
             self.close()
             raise
         count_ctrl_c()
+        # SIGTERM shuts ROS down (rclpy's handler) and nothing more: a wait for a file's
+        # bytes (`rosparam load FIFO`) asks whether it happened.
+        bounded.stop_requested = lambda: not self.node.context.ok()
 
     def close(self) -> None:
         """Destroy the node and shut ROS down; a Ctrl-C meanwhile takes effect afterwards.

@@ -5,7 +5,8 @@ YAML typed on a command line, a type name piped into ``rosmsg show``) goes throu
 ``rosparam load /dev/zero`` or a 500-byte YAML "billion laughs" is refused with one line
 instead of eating the machine's memory:
 
-- a file or pipe: at most MAX_INPUT_BYTES (1 MiB), read in one bounded read;
+- a file or pipe: at most MAX_INPUT_BYTES (1 MiB), read in one bounded read; a pipe or device
+  that gives nothing for MAX_INPUT_WAIT seconds is refused (a named pipe nobody writes to);
 - a YAML document: at most MAX_YAML_ALIASES aliases (``*name``), at most MAX_YAML_NODES
   values once every alias is expanded, nesting at most MAX_YAML_DEPTH deep;
 - a parameter value: what a ROS parameter can hold (bool, int64, float, string, a flat list
@@ -19,6 +20,11 @@ from __future__ import annotations
 
 import datetime
 import os
+import select
+import stat
+import threading
+import time
+from collections.abc import Callable
 from typing import IO, Any
 
 import yaml
@@ -27,6 +33,7 @@ MAX_INPUT_BYTES = 1024 * 1024  # a file or a pipe
 MAX_YAML_ALIASES = 100  # *alias references in one document
 MAX_YAML_NODES = 100_000  # values in a document once its aliases are expanded
 MAX_YAML_DEPTH = 100  # nested mappings and lists
+MAX_INPUT_WAIT = 10.0  # s without a byte from a pipe or device
 INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1
 
 
@@ -34,20 +41,115 @@ class InputError(ValueError):
     """Input refused: the message is one line that says why."""
 
 
+class StoppedWhileReading(KeyboardInterrupt):
+    """The program was told to stop (SIGTERM) while it waited for input: it ends as on Ctrl-C."""
+
+
+# Set by a program whose SIGTERM does not end it at once (the tools: rclpy's handler only shuts
+# ROS down): whether it has been told to stop. The waits for input below look at it.
+stop_requested: Callable[[], bool] = lambda: False  # noqa: E731
+STOP_CHECK_PERIOD = 0.2  # s
+
+
 def _size(limit: int) -> str:
     return f"{limit // (1024 * 1024)} MiB" if limit % (1024 * 1024) == 0 else f"{limit} bytes"
 
 
-def read_bytes(path: str | os.PathLike, limit: int = MAX_INPUT_BYTES) -> bytes:
-    """The bytes of a file (or device, or named pipe), refusing more than ``limit``."""
+def read_bytes(
+    path: str | os.PathLike, limit: int = MAX_INPUT_BYTES, wait: float = MAX_INPUT_WAIT
+) -> bytes:
+    """The bytes of a file (or device, or named pipe), refusing more than ``limit``.
+
+    What is not a plain file may have nothing to give and no end: a named pipe nobody writes
+    to (open() waited for a writer for good), ``<(command)``, a terminal, /proc/kmsg (a
+    "regular" file whose read blocks). Refused when it gives nothing for ``wait`` seconds.
+    """
     try:
-        with open(path, "rb") as file:
-            data = file.read(limit + 1)
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except OSError as error:
         raise InputError(f"cannot read {path}: {error.strerror or error}") from None
+    try:
+        mode, size = os.fstat(fd)[stat.ST_MODE], os.fstat(fd).st_size
+        if stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode) or os.isatty(fd):
+            data = _read_polling(fd, path, limit, wait)  # poll() tells when it has data
+        else:
+            os.set_blocking(fd, True)
+            if stat.S_ISREG(mode) and size > 0:
+                data = _read_file(fd, limit)
+            else:  # a device, or a file of /proc or /sys: poll() may not tell
+                data = _read_within(fd, path, limit, wait)
+    except OSError as error:
+        raise InputError(f"cannot read {path}: {error.strerror or error}") from None
+    finally:
+        os.close(fd)
     if len(data) > limit:
         raise InputError(f"{path} is larger than {_size(limit)}; refusing to read it")
     return data
+
+
+def _read_file(fd: int, limit: int) -> bytes:
+    with os.fdopen(fd, "rb", closefd=False) as file:
+        return file.read(limit + 1)
+
+
+def _nothing_for(path: str | os.PathLike, wait: float, got: int) -> InputError:
+    what = "nothing came from it" if got == 0 else "it stopped giving data"
+    return InputError(f"cannot read {path}: {what} in {wait:g} s (a pipe nobody writes to?)")
+
+
+def _wait_until(ready: Callable[[], bool], wait: float) -> bool:
+    """Ask ready() (each call waits up to STOP_CHECK_PERIOD) until it says yes or ``wait``
+    seconds pass; StoppedWhileReading as soon as the program is told to stop."""
+    deadline = time.monotonic() + wait
+    while not ready():
+        if stop_requested():
+            raise StoppedWhileReading
+        if time.monotonic() >= deadline:
+            return False
+    return True
+
+
+def _read_polling(fd: int, path: str | os.PathLike, limit: int, wait: float) -> bytes:
+    """Read a non-blocking descriptor to its end or past limit, waiting at most ``wait``
+    seconds for each piece (for a named pipe, poll() waits for a writer too)."""
+    chunks: list[bytes] = []
+    size = 0
+    poller = select.poll()
+    poller.register(fd, select.POLLIN)
+    while size <= limit:
+        if not _wait_until(lambda: bool(poller.poll(STOP_CHECK_PERIOD * 1000)), wait):
+            raise _nothing_for(path, wait, size)
+        try:
+            chunk = os.read(fd, min(65536, limit + 1 - size))
+        except BlockingIOError:
+            continue
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size += len(chunk)
+    return b"".join(chunks)
+
+
+def _read_within(fd: int, path: str | os.PathLike, limit: int, wait: float) -> bytes:
+    """A blocking read that may never return, done by a daemon thread: refused after
+    ``wait`` seconds (the thread stays blocked until the process ends, which it soon does)."""
+    reader = os.dup(fd)  # the thread's own descriptor: the caller closes fd
+    result: list[bytes | OSError] = []
+
+    def read() -> None:
+        try:
+            result.append(_read_file(reader, limit))
+        except OSError as error:
+            result.append(error)
+        os.close(reader)
+
+    thread = threading.Thread(target=read, name=f"read {path}", daemon=True)
+    thread.start()
+    if not _wait_until(lambda: thread.join(STOP_CHECK_PERIOD) or bool(result), wait):
+        raise _nothing_for(path, wait, 0)
+    if isinstance(result[0], OSError):
+        raise result[0]
+    return result[0]
 
 
 def decode(data: bytes, source: str) -> str:

@@ -7,6 +7,8 @@ import os
 import signal
 import subprocess
 import threading
+import time
+from pathlib import Path
 
 import pytest
 from helpers import TIMEOUT
@@ -127,3 +129,65 @@ def test_rostopic_pub_at_1e9_hz_ends_cleanly_on_sigterm():
             proc.wait()
     assert b"Traceback" not in err and b"RCLError" not in err, err.decode(errors="replace")
     assert proc.returncode == 0, err  # like Ctrl-C: how a flood ends
+
+
+def _fifo(tmp_path) -> str:
+    path = tmp_path / "params.fifo"
+    os.mkfifo(path)
+    return str(path)
+
+
+def test_a_named_pipe_nobody_writes_to_is_refused_after_a_wait(tmp_path):
+    """open() of a FIFO with no writer blocked for good; /proc/kmsg's read blocks though
+    poll() says it has data. Both: one line after the wait, nothing left blocking."""
+    from ros_tutorials_common import bounded
+
+    fifo = _fifo(tmp_path)
+    with pytest.raises(bounded.InputError, match=r"nothing came from it in 0\.5 s"):
+        bounded.read_bytes(fifo, wait=0.5)
+    if os.access("/proc/kmsg", os.R_OK):
+        with pytest.raises(bounded.InputError, match="/proc/kmsg"):
+            bounded.read_bytes("/proc/kmsg", wait=0.5)
+    # a writer that comes within the wait is read to its end
+    writer = threading.Thread(target=lambda: Path(fifo).write_text("a: 1\n"))
+    writer.start()
+    assert bounded.read_bytes(fifo, wait=TIMEOUT) == b"a: 1\n"
+    writer.join()
+
+
+@pytest.mark.parametrize("command", [("rosparam", "load"), ("ros2", "param", "load", "/x")])
+def test_sigterm_ends_a_load_waiting_on_a_named_pipe(tmp_path, command):
+    fifo = _fifo(tmp_path)
+    process = subprocess.Popen(
+        [str(BIN / command[0]), *command[1:], fifo], stderr=subprocess.PIPE, text=True
+    )
+    deadline = time.monotonic() + TIMEOUT
+    while not any(  # waiting: the pipe is open
+        os.path.realpath(f"/proc/{process.pid}/fd/{fd}") == fifo for fd in _fds(process.pid)
+    ):
+        assert process.poll() is None, process.stderr.read()
+        assert time.monotonic() < deadline, "the command never opened the pipe"
+        time.sleep(0.05)
+    started = time.monotonic()
+    process.terminate()
+    try:
+        _, err = process.communicate(timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        pytest.fail("SIGTERM did not end the command")
+    # ended by SIGTERM, not by the 10 s bound on the wait
+    assert time.monotonic() - started < bounded_wait(), err
+    assert process.returncode != 0 and "Traceback" not in err
+
+
+def _fds(pid: int) -> list[str]:
+    try:
+        return os.listdir(f"/proc/{pid}/fd")
+    except OSError:
+        return []
+
+
+def bounded_wait() -> float:
+    from ros_tutorials_common import bounded
+
+    return bounded.MAX_INPUT_WAIT
