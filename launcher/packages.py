@@ -66,8 +66,7 @@ MISSING_TOOLS: dict[str, str] = {
     "(`rosservice call`)",
     "rqt_bag": "record, inspect and replay with `ros2 bag record`, `ros2 bag info`, "
     "`ros2 bag play` (`rosbag record`, `rosbag info`, `rosbag play`)",
-    "rqt_reconfigure": "change parameters with `ros2 param set NODE PARAM VALUE` "
-    "(`rosparam set`)",
+    "rqt_reconfigure": "change parameters with `ros2 param set NODE PARAM VALUE` (`rosparam set`)",
     "rqt_plot": "watch values with `ros2 topic echo TOPIC` (`ros2 topic hz` for the rate)",
     "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
     "rviz": "a ROS 2 installation has it as rviz2",
@@ -275,4 +274,5 @@ def launch_files(package: str) -> list[Path]:
     folder = ament.share_directory(package) / "launch"
     if not folder.is_dir():
         return []
-    return sorted(path for path in folder.iterdir() if path.name.endswith((".launch", ".xml")))
+    suffixes = (".launch", ".xml", ".py", ".yaml", ".yml")  # the three formats of ros2 launch
+    return sorted(path for path in folder.iterdir() if path.name.endswith(suffixes))

@@ -18,7 +18,7 @@ from typing import Any
 import yaml
 
 from launcher import LaunchError, packages
-from launcher.resolve import Launch, NodeDecl
+from launcher.resolve import AT_START, Launch, NodeDecl, Step, When
 from ros_tutorials_common.bounded import InputError, load_yaml
 
 DEFAULT_SIGTERM_TIMEOUT = 5.0  # seconds after SIGINT before SIGTERM, as ros2 launch
@@ -44,6 +44,7 @@ class ProcessSpec:
     cwd: str | None = None
     remaps: list[tuple[str, str]] = field(default_factory=list)  # shown by --print
     params: list[tuple[str, Any]] = field(default_factory=list)
+    when: When = AT_START  # a timer or an event handler starts it later
 
 
 def command_for(package: str, executable: str, where: str) -> list[str]:
@@ -100,6 +101,8 @@ def _check_program(program: str, where: str) -> None:
 
 
 def _label(node: NodeDecl) -> str:
+    if node.label:
+        return node.label
     if node.name:
         return f"{node.namespace.rstrip('/')}/{node.name}".lstrip("/")
     base = node.executable if node.cmd is None else node.cmd[0].rsplit("/", 1)[-1]
@@ -157,16 +160,26 @@ def make_plan(
                 cwd=node.cwd,
                 remaps=node.remaps,
                 params=node.params,
+                when=node.when,
             )
         )
     return specs
 
 
-def format_plan(specs: list[ProcessSpec], messages: list[str]) -> str:
+def format_plan(
+    specs: list[ProcessSpec], messages: list[str], steps: list[Step] | None = None
+) -> str:
     """The plan as text, for --print."""
     lines = [f"log: {message}" for message in messages]
+    labels = [spec.label for spec in specs]
+    for step in steps or []:
+        what = {"log": f"log: {step.text}", "shutdown": f"shutdown: {step.text}"}
+        lines.append(f"{what.get(step.kind, 'call: a function of the launch file')}  "
+                     f"({step.when.describe(labels)})")  # fmt: skip
     for spec in specs:
         lines.append(f"[{spec.label}]  ({spec.where})")
+        if spec.when != AT_START:
+            lines.append(f"    starts:  {spec.when.describe(labels)}")
         if spec.node:
             lines.append(f"    node:    {spec.node}")
         lines.append(f"    command: {shlex.join(spec.command)}")

@@ -1,0 +1,1 @@
+"""launch_xml: its XMLLaunchDescriptionSource, for Python launch files that include XML."""

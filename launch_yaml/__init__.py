@@ -1,0 +1,1 @@
+"""launch_yaml: its YAMLLaunchDescriptionSource, for Python launch files that include YAML."""
