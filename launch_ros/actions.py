@@ -182,7 +182,7 @@ class SetRemap(Action):
 
     def execute(self, context: LaunchContext) -> None:
         pair = (perform(self.src, context), perform(self.dst, context))
-        for name, side in zip(pair, ("from", "to")):
+        for name, side in zip(pair, ("from", "to"), strict=True):
             if remap_problem(name, side):
                 raise self.error(remap_problem(name, side) or "")
         context.scope.remaps.append(pair)
