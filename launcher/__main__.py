@@ -173,6 +173,8 @@ def format_args(infos: list[ArgInfo]) -> str:
         lines += ["", f"    {info.name!r}:"]
         if info.description:
             lines.append(f"        {info.description}")
+        elif info.fmt == "ros2":  # as ros2 launch --show-args says it
+            lines.append("        no description given")
         if info.choices:
             lines.append(f"        Valid choices are: {info.choices}")
         if info.fixed:

@@ -12,6 +12,7 @@ import json
 import os
 import shlex
 import shutil
+import sys
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -84,9 +85,17 @@ def ros_arguments(node: NodeDecl) -> list[str]:
     return ["--ros-args", *rules] if rules else []
 
 
+def program_path() -> str:
+    """The PATH a launched process gets: this environment's commands (ros2, the lessons')
+    first, as in an activated venv, even if the launcher was started by its full path."""
+    path = os.environ.get("PATH", os.defpath)
+    here = os.path.dirname(sys.executable)
+    return path if here in path.split(os.pathsep) else here + os.pathsep + path
+
+
 def _check_program(program: str, where: str) -> None:
     """The program exists and may be run; otherwise say which of the two it is."""
-    if shutil.which(program) is not None:
+    if shutil.which(program, path=program_path()) is not None:
         return
     if "/" in program:
         candidates = [program]

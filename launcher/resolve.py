@@ -190,6 +190,7 @@ class ArgInfo:
     choices: list[str]
     fixed: bool  # ROS 1 <arg value=...>: cannot be set from outside
     where: str
+    fmt: str = "ros2"
 
 
 @dataclass
@@ -329,7 +330,9 @@ def describe_args(path: Path) -> list[ArgInfo]:
         fixed = fmt == "ros1" and "value" in attrs
         description = attrs.get("doc" if fmt == "ros1" else "description", "")
         default = attrs.get("value") if fixed else attrs.get("default")
-        infos.append(ArgInfo(attrs["name"], default, description, choices, fixed, element.where))
+        infos.append(
+            ArgInfo(attrs["name"], default, description, choices, fixed, element.where, fmt)
+        )
     return infos
 
 

@@ -48,7 +48,7 @@ from typing import IO
 
 from launcher import LaunchError, guardian
 from launcher.ament import apply_ament_defaults
-from launcher.plan import ProcessSpec
+from launcher.plan import ProcessSpec, program_path
 from launcher.resolve import Step
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults
@@ -229,7 +229,7 @@ class Supervisor:
     def raise_event(self, event: str | None, index: int | None, info: dict) -> None:
         """Schedule what waits for ``event`` of process ``index`` (None at the start)."""
         now = time.monotonic()
-        waiting: list[Child | Step] = [*self.children, *self.steps]
+        waiting: list[Child | Step] = [*self.steps, *self.children]  # a message first
         for what in waiting:
             when = what.spec.when if isinstance(what, Child) else what.when
             if when.event != event or event == "shutdown":
@@ -308,6 +308,8 @@ class Supervisor:
             else:
                 env[name] = value
         env["PYTHONUNBUFFERED"] = "1"  # output appears as it is written, not at exit
+        if "PATH" not in spec.env:  # `ros2 ...` in an ExecuteProcess or <executable>
+            env["PATH"] = program_path()
         env["ROS_LOG_DIR"] = str(self.log_dir)  # the nodes' own log files go here too
         apply_dds_defaults(env)
         apply_ament_defaults(env)  # a node that looks up a package finds what the launcher found
@@ -359,7 +361,7 @@ class Supervisor:
                 for raw in iter(lambda: stream.readline(MAX_LINE_BYTES), b""):
                     log.write(raw)
                     log.flush()
-                    if listened:
+                    if listened and raw.strip():  # an OnProcessIO handler: not blank lines
                         self.lines.put((index, name, raw.decode(errors="replace")))
                     if screen is None:
                         continue
