@@ -293,6 +293,11 @@ def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
 
 def _check_tag(element: Element, allowed: dict, fmt: str, parent: str) -> None:
     """``element`` is one of the ``allowed`` tags (tag -> attributes) under ``parent``."""
+    if fmt == "ros2" and element.tag in ("node_container", "load_composable_node"):
+        raise element.error(
+            f"<{element.tag}>: rclpy has no component container in ROS 2 Jazzy, so composable "
+            "nodes cannot be loaded here; start each component as a <node> of its own"
+        )
     if element.tag not in allowed:
         known = ", ".join(f"<{name}>" for name in sorted(allowed))
         raise element.error(
@@ -473,6 +478,10 @@ class Resolver:
             return
         root = parse_file(path)
         _check(root, {"deprecated"})
+        if "deprecated" in root.attrs:  # ros2 launch prints the file's own deprecation message
+            self.warnings.append(
+                f"{root.where}: {path.name} is deprecated: {root.attrs['deprecated']}"
+            )
         fmt = detect_format(root)
         declared = {element.attrs.get("name") for element in _file_args(root)}
         unknown = sorted(set(given) - declared) if strict else []
@@ -706,6 +715,31 @@ class Resolver:
     @tag("ros2", "env", {"name", "value"}, under={"node", "executable"})
     def on_env(self, element: Element, scope: Scope) -> None:
         scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
+
+    @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
+    def on_append_env(self, element: Element, scope: Scope) -> None:
+        """Add to a variable of the environment the launch started with (or set before)."""
+        name = self.env_name(element, scope)
+        value = self.text(element, "value", scope)
+        prepend = self.text(element, "prepend", scope, "false").strip().lower()
+        if prepend not in ("true", "false", "1", "0", "yes", "no"):
+            raise element.error(f"'prepend' must be true or false, not {prepend!r}")
+        separator = self.text(element, "separator", scope, os.pathsep)
+        old = scope.env[name] if name in scope.env else os.environ.get(name)
+        if old:
+            first, last = (value, old) if prepend in ("true", "1", "yes") else (old, value)
+            value = first + separator + last
+        scope.env[name] = value
+
+    @tag("ros2", "reset", set())
+    def on_reset(self, element: Element, scope: Scope) -> None:
+        """Forget every launch configuration but the <keep>s (values read before forgetting)."""
+        kept = {}
+        for child in element.children:
+            _check_tag(child, {"keep": {"name", "value"}}, scope.fmt, "reset")
+            kept[self.text(child, "name", scope)] = self.text(child, "value", scope)
+        scope.args.clear()
+        scope.args.update(kept)
 
     @tag("ros2", "unset_env", {"name"})
     def on_unset_env(self, element: Element, scope: Scope) -> None:

@@ -424,3 +424,57 @@ def test_unknown_command_line_argument_of_a_python_file_is_refused(tutorial_pack
     line = fails("ros2", "launch", "launch_tutorial", "example_substitutions_launch.py",
                  "turtlesim_nss:=x")  # fmt: skip
     assert "no argument named turtlesim_nss is declared" in line
+
+
+# -- launch_xml's own cases (launch_xml/test, launch_yaml/test), in this launcher's terms ------
+
+
+def test_append_env_as_launch_xml_tests_it(tmp_path, monkeypatch):
+    monkeypatch.delenv("MY_ENV_VAR", raising=False)
+    monkeypatch.setenv("MY_OTHER_ENV_VAR", "start")
+    path = write(tmp_path, "t.launch.xml", """<launch>
+<append_env name="MY_ENV_VAR" value="asd"/>
+<append_env name="MY_ENV_VAR" value="zxc" separator="|"/>
+<append_env name="MY_OTHER_ENV_VAR" value="jkl" prepend="false"/>
+<append_env name="MY_OTHER_ENV_VAR" value="qwe" prepend="yes"/>
+<append_env name="MY_OTHER_ENV_VAR" value="rty" prepend="true" separator="|"/>
+<executable cmd="true"/>
+</launch>""")  # fmt: skip
+    (spec,) = planned(path)[1]
+    assert spec.env == {"MY_ENV_VAR": "asd|zxc", "MY_OTHER_ENV_VAR": f"rty|qwe{os.pathsep}start"
+                        f"{os.pathsep}jkl"}  # fmt: skip
+
+
+def test_reset_keeps_only_what_it_is_told(tmp_path):
+    path = write(tmp_path, "t.launch.yaml", """
+launch:
+- let: {name: foo, value: FOO}
+- let: {name: bar, value: BAR}
+- reset:
+    keep:
+    - {name: bar, value: $(var bar)}
+    - {name: baz, value: BAZ}
+- executable: {cmd: echo $(var bar) $(var baz)}
+- executable: {cmd: echo $(var foo)}
+""")  # fmt: skip
+    assert "argument 'foo' is not declared here (declared: bar, baz)" in str(raised(path))
+    text = path.read_text().replace("- executable: {cmd: echo $(var foo)}\n", "")
+    (spec,) = planned(write(tmp_path, "t.launch.yaml", text))[1]
+    assert spec.command == ["echo", "BAR", "BAZ"]
+
+
+def test_deprecated_launch_file_says_so(tmp_path):
+    path = write(tmp_path, "t.launch.xml", '<launch deprecated="use other.launch.xml"/>')
+    assert resolved(path).warnings == [
+        f"{path}:1: t.launch.xml is deprecated: use other.launch.xml"
+    ]
+
+
+@pytest.mark.parametrize("fmt", ["xml", "py"])
+def test_composable_nodes_are_refused_with_what_to_do(tmp_path, fmt):
+    text = {
+        "xml": '<launch>\n<node_container pkg="rclcpp_components" name="c" namespace=""/></launch>',
+        "py": "\nfrom launch_ros.actions import ComposableNodeContainer\n",
+    }[fmt]
+    message = str(raised(write(tmp_path, f"t.launch.{fmt}", text)))
+    assert ":2: " in message and "rclpy has no component container in ROS 2 Jazzy" in message
