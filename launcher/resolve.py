@@ -375,6 +375,16 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     return text
 
 
+def _ros2_value(text: str) -> Any:
+    """A ROS 2 <param value>, typed as launch_ros types it: read as YAML (``[2, 5, 8]`` is a
+    list, ``2.5`` a double, ``true`` a bool), text where YAML gives no single value."""
+    try:
+        value = load_yaml(text, "the parameter value")
+    except (yaml.YAMLError, InputError):
+        return text
+    return text if value is None or isinstance(value, dict) else value
+
+
 def _load_yaml(text: str, element: Element) -> Any:
     """YAML written in (or read by) a launch file, within the limits of bounded.load_yaml."""
     try:
@@ -754,7 +764,7 @@ class Resolver:
             _check_params_file(element, path)
             scope.params_files.append(str(path))
             return
-        value = _typed_value(self.text(element, "value", scope), None, element)
+        value = _ros2_value(self.text(element, "value", scope))
         name = self.text(element, "name", scope)
         _check_params(element, None, name, value)
         entry = (name, value)

@@ -478,3 +478,22 @@ def test_composable_nodes_are_refused_with_what_to_do(tmp_path, fmt):
     }[fmt]
     message = str(raised(write(tmp_path, f"t.launch.{fmt}", text)))
     assert ":2: " in message and "rclpy has no component container in ROS 2 Jazzy" in message
+
+
+@pytest.mark.parametrize("fmt", ["xml", "yaml", "py"])
+def test_ros2_parameter_values_are_typed_as_yaml_in_every_format(tmp_path, fmt):
+    # launch_ros reads a parameter's text as YAML: [2, 5, 8] is a list, not a string.
+    values = {"ints": "[2, 5, 8]", "rate": "2.5", "on": "true", "name": "turtle", "n": "7"}
+    text = {
+        "xml": "<launch><node pkg='ros_tutorials_topic' exec='talker'>"
+        + "".join(f"<param name='{k}' value='{v}'/>" for k, v in values.items())
+        + "</node></launch>",
+        "yaml": "launch:\n- node:\n    pkg: ros_tutorials_topic\n    exec: talker\n    param:\n"
+        + "".join(f"    - {{name: {k}, value: '{v}'}}\n" for k, v in values.items()),
+        "py": "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+        "def generate_launch_description():\n    return LaunchDescription([Node(package="
+        f"'ros_tutorials_topic', executable='talker', parameters=[{values!r}])])\n",
+    }[fmt]
+    (spec,) = planned(write(tmp_path, f"t.launch.{fmt}", text))[1]
+    assert dict(spec.params) == {"ints": [2, 5, 8], "rate": 2.5, "on": True, "name": "turtle",
+                                 "n": 7}  # fmt: skip
