@@ -68,7 +68,8 @@ def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument(
         "--allow-code",
         action="store_true",
-        help="allow $(eval) and $(command), which run code written in the launch file",
+        help="allow $(eval) and $(command) in XML and YAML files (they run code written in the "
+        "file); a Python launch file is code and always runs",
     )
     parser.add_argument(
         "--sigterm-timeout",
@@ -159,7 +160,8 @@ def split_words(words: list[str]) -> tuple[list[str], dict[str, str]]:
             names.append(word)
             continue
         name, _, value = word.partition(":=")
-        if not valid_name(name):
+        # ros2 launch argument names may have parts: perception/enable:=false
+        if not all(valid_name(part) for part in name.split("/")):
             raise LaunchError(f"malformed argument {word!r}: expected name:=value")
         args[name] = value
     return names, args

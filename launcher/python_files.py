@@ -27,10 +27,6 @@ class LaunchFileRaised(LaunchError):
         self.traceback = traceback_text
 
 
-def is_python_launch_file(path: Path) -> bool:
-    return path.name.endswith(".py")
-
-
 def _user_traceback(error: BaseException) -> tuple[str, str]:
     """The traceback lines in the launch file (and its own modules), and its last file:line."""
     from launch._base import is_ours

@@ -497,3 +497,13 @@ def test_ros2_parameter_values_are_typed_as_yaml_in_every_format(tmp_path, fmt):
     (spec,) = planned(write(tmp_path, f"t.launch.{fmt}", text))[1]
     assert dict(spec.params) == {"ints": [2, 5, 8], "rate": 2.5, "on": True, "name": "turtle",
                                  "n": 7}  # fmt: skip
+
+
+def test_argument_names_with_parts_can_be_set_on_the_command_line(tmp_path):
+    path = write(tmp_path, "t.launch.yaml", """
+launch:
+- arg: {name: perception/enable, default: 'true'}
+- executable: {cmd: echo $(var perception/enable)}
+""")  # fmt: skip
+    out = ok("ros2", "launch", str(path), "perception/enable:=false", "--print")
+    assert "command: echo false" in out
