@@ -184,3 +184,74 @@ def escalation(rounds: int = 3) -> list[Row]:
             worst <= 1.0 + 1.0,
         )
     ]
+
+
+# The tutorial's multisim (two simulators, turtlesim1 and turtlesim2) in each launch format.
+MULTISIM_XML = """<launch>
+  <node pkg="turtlesim" exec="turtlesim_node" namespace="turtlesim1" output="screen"/>
+  <node pkg="turtlesim" exec="turtlesim_node" namespace="turtlesim2" output="screen"/>
+</launch>
+"""
+MULTISIM_YAML = """launch:
+- node: {pkg: turtlesim, exec: turtlesim_node, namespace: turtlesim1, output: screen}
+- node: {pkg: turtlesim, exec: turtlesim_node, namespace: turtlesim2, output: screen}
+"""
+MULTISIM_SH = """py=${PYTHON:-python3}
+"$py" -m ros_tutorials_turtlesim.turtlesim_node --ros-args -r __ns:=/turtlesim1 & a=$!
+"$py" -m ros_tutorials_turtlesim.turtlesim_node --ros-args -r __ns:=/turtlesim2 & b=$!
+trap 'kill -TERM $a $b; wait' INT TERM
+wait
+"""
+
+
+def _both_turtles(args: list[str]) -> float:
+    """Seconds from start until both simulators have spawned turtle1 (headless)."""
+    count = 0
+
+    def both(line: str) -> bool:
+        nonlocal count
+        count += "Spawning turtle [turtle1]" in line
+        return count == 2
+
+    began = time.monotonic()
+    proc = start(args, env={"PYTHON": sys.executable, "DISPLAY": "", "WAYLAND_DISPLAY": ""})
+    try:
+        if not wait_for_lines(proc, both, timeout=120):
+            raise RuntimeError(f"{args}: the two simulators never both started")
+        return time.monotonic() - began
+    finally:
+        _kill_leftovers(proc)
+
+
+def formats(rounds: int = 5) -> list[Row]:
+    """`ros2 launch` of the tutorial's multisim in Python, XML and YAML against a shell script."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as folder:
+        here = Path(folder)
+        (here / "multisim.launch.xml").write_text(MULTISIM_XML)
+        (here / "multisim.launch.yaml").write_text(MULTISIM_YAML)
+        (here / "multisim.sh").write_text(MULTISIM_SH)
+        runs = {
+            "Python": python("-m", "launcher", "turtlesim", "multisim.launch.py"),
+            "XML": python("-m", "launcher", str(here / "multisim.launch.xml")),
+            "YAML": python("-m", "launcher", str(here / "multisim.launch.yaml")),
+            "shell": ["sh", str(here / "multisim.sh")],
+        }
+        times: dict[str, list[float]] = {kind: [] for kind in runs}
+        for _ in range(rounds):  # interleaved, so machine load hits all alike
+            for kind, args in runs.items():
+                try:
+                    times[kind].append(_both_turtles(args))
+                except RuntimeError as error:
+                    print(f"# {error}", flush=True)
+    base = p50(times["shell"])
+    return [
+        Row(
+            f"multisim ({kind}) to both simulators up, p50/p99 of {rounds}",
+            f"{p50(times[kind]):.2f} s / {p99(times[kind]):.2f} s",
+            f"{base:.2f} s (shell script)",
+            p50(times[kind]) / base,
+        )
+        for kind in ("Python", "XML", "YAML")
+    ]

@@ -1,8 +1,9 @@
-"""The XML launcher: runs ROS 1 (roslaunch) and ROS 2 launch XML files of this project.
+"""The launcher: runs ROS 1 (roslaunch) XML files and ROS 2 launch files in XML, YAML, Python.
 
     python -m launcher union.launch [name:=value ...] [--screen] [--print] [--show-args]
 
-The work flows one way through small modules: parse (XML -> elements with file:line),
+The work flows one way through small modules: parse (XML or YAML -> elements with file:line;
+a Python file runs through python_files.py and the ``launch`` API instead),
 resolve (args, conditions, substitutions, scopes -> node declarations), plan (declarations ->
 process specs with full command lines, printable), supervise (start, prefix output, respawn,
 shut down). ``LaunchError`` is the one error type every stage raises for bad input.

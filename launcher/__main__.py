@@ -22,9 +22,9 @@ import sys
 import traceback
 from pathlib import Path
 
-from launcher import LaunchError, guardian, packages, parse
+from launcher import LaunchError, ament, guardian, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
-from launcher.python_files import is_python_launch_file, not_supported
+from launcher.python_files import LaunchFileRaised
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 
@@ -42,7 +42,7 @@ exit code: 0 all ended cleanly, 1 a process failed or the launch could not start
 def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog=prog or program(),
-        description="Run a ROS 1 (roslaunch) or ROS 2 XML launch file of this project.",
+        description="Run a launch file: ROS 1 (roslaunch) XML, or ROS 2 XML, YAML or Python.",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -68,7 +68,8 @@ def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument(
         "--allow-code",
         action="store_true",
-        help="allow $(eval) and $(command), which run code written in the launch file",
+        help="allow $(eval) and $(command) in XML and YAML files (they run code written in the "
+        "file); a Python launch file is code and always runs",
     )
     parser.add_argument(
         "--sigterm-timeout",
@@ -103,6 +104,8 @@ def find_launch_file(names: list[str]) -> Path:
     if len(names) == 2:
         package, name = names
         found = packages.resolve_package(package)  # a seed's name too: my_package
+        if not found and package in ament.packages():  # a package of the learner's workspace
+            found = (package,)
         if not found:
             known = ", ".join(packages.package_dirs())
             raise LaunchError(f"unknown package {package!r}; known packages: {known}")
@@ -116,9 +119,6 @@ def find_launch_file(names: list[str]) -> Path:
         if elsewhere:  # seed 000 puts union.launch in the service package
             runs = "; ".join(f"{program()} {pkg} {name}" for pkg in elsewhere)
             raise LaunchError(f"{message}; {name} is in {', '.join(elsewhere)}: {runs}")
-        fmt = parse.NOT_YET.get(Path(name).suffix)
-        if fmt:  # `ros2 launch turtlesim multisim.launch.py`, as the ROS 2 tutorials type it
-            message += f" ({fmt} launch files are not supported yet)"
         raise LaunchError(f"{message}; it has: {have or 'none'}")
     if len(names) != 1:
         raise LaunchError(f"expected [PKG] FILE, got: {' '.join(names) or 'nothing'}")
@@ -160,7 +160,8 @@ def split_words(words: list[str]) -> tuple[list[str], dict[str, str]]:
             names.append(word)
             continue
         name, _, value = word.partition(":=")
-        if not valid_name(name):
+        # ros2 launch argument names may have parts: perception/enable:=false
+        if not all(valid_name(part) for part in name.split("/")):
             raise LaunchError(f"malformed argument {word!r}: expected name:=value")
         args[name] = value
     return names, args
@@ -174,6 +175,8 @@ def format_args(infos: list[ArgInfo]) -> str:
         lines += ["", f"    {info.name!r}:"]
         if info.description:
             lines.append(f"        {info.description}")
+        elif info.fmt == "ros2":  # as ros2 launch --show-args says it
+            lines.append("        no description given")
         if info.choices:
             lines.append(f"        Valid choices are: {info.choices}")
         if info.fixed:
@@ -202,8 +205,6 @@ def main(
     try:
         names, args = split_words(options.words)
         path = find_launch_file(names)
-        if is_python_launch_file(path):
-            raise LaunchError(not_supported(path))
         if options.show_args:
             return _print_and_end(format_args(describe_args(path)))
         launch = resolve(path, args, Options(allow_code=options.allow_code))
@@ -213,6 +214,8 @@ def main(
             traceback.print_exc()
         if isinstance(error, RecursionError):
             error = LaunchError("the launch file is nested too deeply")
+        if isinstance(error, LaunchFileRaised):  # the Python launch file's own lines
+            print(error.traceback, file=sys.stderr, end="")
         print(f"error: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
@@ -220,7 +223,7 @@ def main(
     for warning in launch.warnings:  # at start, before the plan or the first process
         print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
-        return _print_and_end(format_plan(specs, launch.messages))
+        return _print_and_end(format_plan(specs, launch.messages, launch.steps))
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
     from launcher.supervise import Supervisor, make_log_dir
 
@@ -233,7 +236,7 @@ def main(
         guardian.guard()  # guardian, and the launcher goes on in a child
     for message in launch.messages:
         print(f"[launcher] {message}", flush=True)
-    return Supervisor(specs, log_dir, options.debug).run()
+    return Supervisor(specs, log_dir, options.debug, launch.steps).run()
 
 
 if __name__ == "__main__":

@@ -274,4 +274,5 @@ def launch_files(package: str) -> list[Path]:
     folder = ament.share_directory(package) / "launch"
     if not folder.is_dir():
         return []
-    return sorted(path for path in folder.iterdir() if path.name.endswith((".launch", ".xml")))
+    suffixes = (".launch", ".xml", ".py", ".yaml", ".yml")  # the three formats of ros2 launch
+    return sorted(path for path in folder.iterdir() if path.name.endswith(suffixes))

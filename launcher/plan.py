@@ -12,13 +12,14 @@ import json
 import os
 import shlex
 import shutil
+import sys
 from dataclasses import dataclass, field
 from typing import Any
 
 import yaml
 
 from launcher import LaunchError, packages
-from launcher.resolve import Launch, NodeDecl
+from launcher.resolve import AT_START, Launch, NodeDecl, Step, When
 from ros_tutorials_common.bounded import InputError, load_yaml
 
 DEFAULT_SIGTERM_TIMEOUT = 5.0  # seconds after SIGINT before SIGTERM, as ros2 launch
@@ -44,6 +45,7 @@ class ProcessSpec:
     cwd: str | None = None
     remaps: list[tuple[str, str]] = field(default_factory=list)  # shown by --print
     params: list[tuple[str, Any]] = field(default_factory=list)
+    when: When = AT_START  # a timer or an event handler starts it later
 
 
 def command_for(package: str, executable: str, where: str) -> list[str]:
@@ -83,9 +85,17 @@ def ros_arguments(node: NodeDecl) -> list[str]:
     return ["--ros-args", *rules] if rules else []
 
 
+def program_path() -> str:
+    """The PATH a launched process gets: this environment's commands (ros2, the lessons')
+    first, as in an activated venv, even if the launcher was started by its full path."""
+    path = os.environ.get("PATH", os.defpath)
+    here = os.path.dirname(sys.executable)
+    return path if here in path.split(os.pathsep) else here + os.pathsep + path
+
+
 def _check_program(program: str, where: str) -> None:
     """The program exists and may be run; otherwise say which of the two it is."""
-    if shutil.which(program) is not None:
+    if shutil.which(program, path=program_path()) is not None:
         return
     if "/" in program:
         candidates = [program]
@@ -100,6 +110,8 @@ def _check_program(program: str, where: str) -> None:
 
 
 def _label(node: NodeDecl) -> str:
+    if node.label:
+        return node.label
     if node.name:
         return f"{node.namespace.rstrip('/')}/{node.name}".lstrip("/")
     base = node.executable if node.cmd is None else node.cmd[0].rsplit("/", 1)[-1]
@@ -157,16 +169,26 @@ def make_plan(
                 cwd=node.cwd,
                 remaps=node.remaps,
                 params=node.params,
+                when=node.when,
             )
         )
     return specs
 
 
-def format_plan(specs: list[ProcessSpec], messages: list[str]) -> str:
+def format_plan(
+    specs: list[ProcessSpec], messages: list[str], steps: list[Step] | None = None
+) -> str:
     """The plan as text, for --print."""
     lines = [f"log: {message}" for message in messages]
+    labels = [spec.label for spec in specs]
+    for step in steps or []:
+        what = {"log": f"log: {step.text}", "shutdown": f"shutdown: {step.text}"}
+        lines.append(f"{what.get(step.kind, 'call: a function of the launch file')}  "
+                     f"({step.when.describe(labels)})")  # fmt: skip
     for spec in specs:
         lines.append(f"[{spec.label}]  ({spec.where})")
+        if spec.when != AT_START:
+            lines.append(f"    starts:  {spec.when.describe(labels)}")
         if spec.node:
             lines.append(f"    node:    {spec.node}")
         lines.append(f"    command: {shlex.join(spec.command)}")

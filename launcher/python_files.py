@@ -1,51 +1,152 @@
-"""Python launch files (``*_launch.py``, ``*.launch.py``): not run by this launcher yet.
+"""Python launch files (``*.launch.py``, ``*_launch.py``): the Python front-end.
 
-`ros2 launch demo_nodes_cpp introspect_services_launch.py` gets one line instead, naming the
-`ros2 run` commands that start the same nodes, read from the file's ``Node(package=...,
-executable=...)`` calls (without running it).
+The file is run (a Python launch file is code, as in ROS 2), its
+``generate_launch_description()`` called, and the LaunchDescription it returns executed into
+the same plan the XML and YAML front-ends build (the ``launch`` and ``launch_ros`` packages of
+this project are the API it imports). An error in the file shows the file's own traceback
+lines, never the launcher's.
 """
 
 from __future__ import annotations
 
-import ast
+import traceback
+import types
 from pathlib import Path
+from typing import Any
+
+from launcher import LaunchError
+from launcher.resolve import ArgInfo, Scope
+from ros_tutorials_common.bounded import InputError, read_text
 
 
-def is_python_launch_file(path: Path) -> bool:
-    return path.name.endswith(".py")
+class LaunchFileRaised(LaunchError):
+    """A Python launch file raised: ``traceback`` holds its own frames, to print first."""
+
+    def __init__(self, message: str, traceback_text: str) -> None:
+        super().__init__(message)
+        self.traceback = traceback_text
 
 
-def run_commands(path: Path) -> list[str]:
-    """`ros2 run PKG EXE` for each Node(...) the file creates with literal names, in order."""
+def _user_traceback(error: BaseException) -> tuple[str, str]:
+    """The traceback lines in the launch file (and its own modules), and its last file:line."""
+    from launch._base import is_ours
+
+    frames = [frame for frame in traceback.extract_tb(error.__traceback__)
+              if not is_ours(frame.filename)]  # fmt: skip
+    lines = ["Traceback (most recent call last):", *traceback.format_list(frames)]
+    lines += traceback.format_exception_only(type(error), error)
+    where = f"{frames[-1].filename}:{frames[-1].lineno}" if frames else ""
+    return "".join(line if line.endswith("\n") else line + "\n" for line in lines), where
+
+
+def _call(path: Path, function: Any, *args: Any) -> Any:
+    """Run the launch file's code; what it raises becomes a LaunchError with its traceback."""
     try:
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-    except (OSError, SyntaxError, UnicodeDecodeError, ValueError):
-        return []
-    commands = []
-    for node in ast.walk(tree):
-        if not isinstance(node, ast.Call):
-            continue
-        called = node.func.attr if isinstance(node.func, ast.Attribute) else None
-        called = node.func.id if isinstance(node.func, ast.Name) else called
-        if called != "Node":
-            continue
-        words = {
-            keyword.arg: keyword.value.value
-            for keyword in node.keywords
-            if isinstance(keyword.value, ast.Constant) and isinstance(keyword.value.value, str)
-        }
-        if "package" in words and "executable" in words:
-            commands.append(f"ros2 run {words['package']} {words['executable']}")
-    return sorted(set(commands), key=commands.index)
+        return function(*args)
+    except LaunchError:
+        raise
+    except SyntaxError as error:
+        line = f":{error.lineno}" if error.lineno else ""
+        raise LaunchError(f"{error.filename or path}{line}: SyntaxError: {error.msg}") from None
+    except (Exception, RecursionError) as error:
+        text, where = _user_traceback(error)
+        where = where or str(path)
+        raise LaunchFileRaised(
+            f"{where}: the launch file raised {type(error).__name__}: {error}", text
+        ) from None
 
 
-def not_supported(path: Path) -> str:
-    """The one line that says what to type instead of launching a Python launch file."""
-    message = f"{path.name} is a Python launch file, which this launcher cannot run yet"
-    commands = [f"`{command}`" for command in run_commands(path)]
-    if not commands:
-        return message + "; start its nodes with `ros2 run PKG EXECUTABLE`"
-    listed = (
-        commands[0] if len(commands) == 1 else ", ".join(commands[:-1]) + " and " + commands[-1]
-    )
-    return f"{message}; start its nodes instead, each in a terminal of its own: {listed}"
+def load_description(path: Path) -> Any:
+    """Run the file and call its generate_launch_description(): the LaunchDescription."""
+    from launch import LaunchDescription
+
+    try:
+        source = read_text(path)
+    except InputError as error:
+        raise LaunchError(f"launch file: {error}") from None
+    module = types.ModuleType(f"launch_file_{abs(hash(str(path)))}")
+    module.__file__ = str(path)
+    code = _call(path, compile, source, str(path), "exec")
+    _call(path, exec, code, module.__dict__)
+    generate = module.__dict__.get("generate_launch_description")
+    if not callable(generate):
+        raise LaunchError(f"{path}: a Python launch file defines generate_launch_description()")
+    description = _call(path, generate)
+    if not isinstance(description, LaunchDescription):
+        raise LaunchError(
+            f"{path}: generate_launch_description() returned {type(description).__name__}, "
+            "not a LaunchDescription"
+        )
+    return description
+
+
+def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
+    """Execute a Python launch file into the resolver of ``scope`` (launcher/resolve.py)."""
+    from launch import LaunchContext
+
+    description = load_description(path)
+    resolver = scope.resolver
+    scope.args.update(scope.given)  # launch configurations: the given values first
+    context = LaunchContext(scope)
+    deferred_before = len(resolver.deferred_handlers)
+    _call(path, context.visit, description)
+    # Handlers whose target process was executed after them.
+    waiting = resolver.deferred_handlers[deferred_before:]
+    del resolver.deferred_handlers[deferred_before:]
+    for handler, handler_context in waiting:
+        index = resolver.process_index.get(id(handler.target_action))
+        if index is None:
+            resolver.warnings.append(
+                f"{handler.where}: {type(handler).__name__}'s target_action is never run, "
+                "so its actions never happen"
+            )
+            continue
+        from launcher.resolve import When
+
+        _call(path, handler.register_at, handler_context, When(handler.event, index))
+    if strict:
+        declared = {info.name for info in describe_python_args(path, description)}
+        unknown = sorted(set(scope.given) - declared - resolver.configurations_read)
+        if unknown:
+            names = ", ".join(sorted(declared)) or "none"
+            raise LaunchError(
+                f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
+            )
+
+
+def describe_python_args(path: Path, description: Any = None) -> list[ArgInfo]:
+    """The arguments a Python launch file declares, for --show-args (nothing is started)."""
+    description = description or load_description(path)
+    infos = []
+    for action in description.get_launch_arguments():
+        default = action.default_value
+        if default is not None and not isinstance(default, str):
+            default = _describe(default)
+        infos.append(
+            ArgInfo(
+                action.name,
+                default,
+                action.description or "",
+                [str(choice) for choice in action.choices or []],
+                False,
+                action.where,
+            )
+        )
+    return infos
+
+
+def _describe(value: Any) -> str:
+    """A default made of substitutions, as ros2 launch --show-args shows it."""
+    from launch._base import normalize
+
+    parts = []
+    for part in normalize(value):
+        if isinstance(part, str):
+            parts.append(part)
+        elif hasattr(part, "text"):
+            parts.append(part.text)
+        elif hasattr(part, "variable_name"):
+            parts.append(f"LaunchConfig('{part.variable_name}')")
+        else:
+            parts.append(part.describe())
+    return "".join(parts)

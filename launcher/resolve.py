@@ -26,7 +26,7 @@ from typing import Any
 import yaml
 
 from launcher import LaunchError
-from launcher.parse import Element, parse_file
+from launcher.parse import YAML_SUFFIXES, Element, parse_file
 from launcher.substitutions import substitute, to_bool
 from ros_tutorials_common.bounded import (
     InputError,
@@ -99,6 +99,49 @@ class Options:
     allow_code: bool = False
 
 
+@dataclass(frozen=True)
+class When:
+    """When a process starts or a step happens: at the launch's start, or on an event of a
+    process (its index in ``Launch.nodes``; None: of any process), then after ``delay`` s
+    (a timer). Events: "start", "exit" (also OnExecutionComplete), "stdout", "stderr",
+    "shutdown"."""
+
+    event: str | None = None
+    target: int | None = None
+    delay: float = 0.0
+
+    def later(self, seconds: float) -> When:
+        return replace(self, delay=self.delay + seconds)
+
+    def describe(self, labels: list[str]) -> str:
+        what = {"start": "started", "exit": "exited", "stdout": "printed to stdout",
+                "stderr": "printed to stderr"}  # fmt: skip
+        if self.event is None:
+            text = "at start"
+        elif self.event == "shutdown":
+            text = "when the launch shuts down"
+        else:
+            target = "any process" if self.target is None else labels[self.target]
+            text = f"when {target} {what.get(self.event, self.event)}"
+        return f"{text}, after {self.delay:g} s" if self.delay else text
+
+
+AT_START = When()
+
+
+@dataclass
+class Step:
+    """Something the launch does besides starting a process, at a time ``when`` says: print a
+    message ("log"), shut the launch down ("shutdown", with its reason), or call a function of
+    a Python launch file with the event ("call"; it returns more steps, done at once)."""
+
+    when: When
+    kind: str
+    text: str = ""
+    call: Callable[[dict[str, Any]], list[Step]] | None = None
+    where: str = ""
+
+
 @dataclass
 class NodeDecl:
     """One process to run, as the launch file declares it (before packages are looked up)."""
@@ -124,15 +167,19 @@ class NodeDecl:
     sigkill_timeout: float | None = None
     launch_prefix: list[str] = field(default_factory=list)
     cwd: str | None = None
+    when: When = AT_START
+    label: str | None = None  # the output prefix, if not the node's name (ExecuteProcess name=)
 
 
 @dataclass
 class Launch:
-    """A resolved launch file: the processes to run and the <log> messages to print."""
+    """A resolved launch file: the processes to run, the <log> messages to print at the start,
+    and the steps that happen later (timers, event handlers)."""
 
     nodes: list[NodeDecl]
     messages: list[str]
     warnings: list[str] = field(default_factory=list)  # file:line: what reaches no node
+    steps: list[Step] = field(default_factory=list)
 
 
 @dataclass
@@ -143,6 +190,7 @@ class ArgInfo:
     choices: list[str]
     fixed: bool  # ROS 1 <arg value=...>: cannot be set from outside
     where: str
+    fmt: str = "ros2"
 
 
 @dataclass
@@ -162,6 +210,7 @@ class Scope:
     # The <arg>s declared so far, name -> line: a group gets a copy, as in roslaunch (two
     # sibling groups may each declare one name), an included file none.
     declared: dict[str, int] = field(default_factory=dict)
+    when: When = AT_START  # inside a <timer> or an event handler: later
 
     def child(self, **changes: Any) -> Scope:
         copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
@@ -217,6 +266,8 @@ def detect_format(root: Element) -> str:
         for fmt, found in first.items():
             if found is None and _written_in(fmt, element):
                 first[fmt] = element
+    if root.file.suffix in YAML_SUFFIXES:  # launch_yaml is a ROS 2 front-end only
+        return "ros2"
     ros1, ros2 = first["ros1"], first["ros2"]
     if ros1 and ros2:
         raise LaunchError(
@@ -242,6 +293,11 @@ def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
 
 def _check_tag(element: Element, allowed: dict, fmt: str, parent: str) -> None:
     """``element`` is one of the ``allowed`` tags (tag -> attributes) under ``parent``."""
+    if fmt == "ros2" and element.tag in ("node_container", "load_composable_node"):
+        raise element.error(
+            f"<{element.tag}>: rclpy has no component container in ROS 2 Jazzy, so composable "
+            "nodes cannot be loaded here; start each component as a <node> of its own"
+        )
     if element.tag not in allowed:
         known = ", ".join(f"<{name}>" for name in sorted(allowed))
         raise element.error(
@@ -264,6 +320,10 @@ def _file_args(root: Element) -> list[Element]:
 
 def describe_args(path: Path) -> list[ArgInfo]:
     """The arguments a launch file declares, for --show-args (nothing is resolved)."""
+    if path.name.endswith(".py"):
+        from launcher.python_files import describe_python_args
+
+        return describe_python_args(path)
     root = parse_file(path)
     fmt = detect_format(root)
     infos = []
@@ -275,7 +335,9 @@ def describe_args(path: Path) -> list[ArgInfo]:
         fixed = fmt == "ros1" and "value" in attrs
         description = attrs.get("doc" if fmt == "ros1" else "description", "")
         default = attrs.get("value") if fixed else attrs.get("default")
-        infos.append(ArgInfo(attrs["name"], default, description, choices, fixed, element.where))
+        infos.append(
+            ArgInfo(attrs["name"], default, description, choices, fixed, element.where, fmt)
+        )
     return infos
 
 
@@ -311,6 +373,16 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     if text.strip().lower() in ("true", "false"):
         return text.strip().lower() == "true"
     return text
+
+
+def _ros2_value(text: str) -> Any:
+    """A ROS 2 <param value>, typed as launch_ros types it: read as YAML (``[2, 5, 8]`` is a
+    list, ``2.5`` a double, ``true`` a bool), text where YAML gives no single value."""
+    try:
+        value = load_yaml(text, "the parameter value")
+    except (yaml.YAMLError, InputError):
+        return text
+    return text if value is None or isinstance(value, dict) else value
 
 
 def _load_yaml(text: str, element: Element) -> Any:
@@ -356,6 +428,15 @@ class Resolver:
         self.options = options
         self.nodes: list[NodeDecl] = []
         self.messages: list[str] = []
+        self.steps: list[Step] = []
+        self.warnings: list[str] = []
+        # The Python front-end: actions executed, the index of each process action (what an
+        # event handler's target_action names), handlers waiting for their target, and the
+        # launch configurations read (an argument read but not declared is not a typo).
+        self.executed: dict[int, Any] = {}
+        self.process_index: dict[int, int] = {}
+        self.deferred_handlers: list[tuple[Any, Any]] = []
+        self.configurations_read: set[str] = set()
         self.anon_names: dict[str, str] = {}
         self.include_chain: list[Path] = []
         self.depth = 0  # nested groups and includes
@@ -388,8 +469,29 @@ class Resolver:
             chain = " -> ".join(str(p) for p in [*self.include_chain, path])
             message = f"launch files include each other in a loop: {chain}"
             raise include.error(message) if include else LaunchError(message)
+        if path.name.endswith(".py"):  # the Python front-end (launch and launch_ros)
+            from launcher.python_files import resolve_python_file
+
+            if parent is None:
+                scope = Scope(self, path, "ros2", {}, given)
+            else:
+                scope = parent.child(file=path, fmt="ros2", args={}, given=given, declared={})
+            self.include_chain.append(path)
+            self.depth += 1
+            try:
+                if self.depth > MAX_DEPTH:
+                    raise LaunchError(f"{path}: includes nested more than {MAX_DEPTH} deep")
+                resolve_python_file(path, scope, strict=strict and parent is None)
+            finally:
+                self.depth -= 1
+                self.include_chain.pop()
+            return
         root = parse_file(path)
         _check(root, {"deprecated"})
+        if "deprecated" in root.attrs:  # ros2 launch prints the file's own deprecation message
+            self.warnings.append(
+                f"{root.where}: {path.name} is deprecated: {root.attrs['deprecated']}"
+            )
         fmt = detect_format(root)
         declared = {element.attrs.get("name") for element in _file_args(root)}
         unknown = sorted(set(given) - declared) if strict else []
@@ -449,7 +551,19 @@ class Resolver:
             f"{'is' if len(names) == 1 else 'are'} given to no node: {why}"
             for (where, why), names in unreached.items()
         ]
-        return Launch(self.nodes, self.messages, warnings)
+        return Launch(self.nodes, self.messages, self.warnings + warnings, self.steps)
+
+    def add_node(self, node: NodeDecl) -> int:
+        """Add a process to the launch; its index is how event handlers name it."""
+        self.nodes.append(node)
+        return len(self.nodes) - 1
+
+    def add_step(self, step: Step) -> None:
+        """A message at the start is printed before anything starts; anything else waits."""
+        if step.kind == "log" and step.when == AT_START:
+            self.messages.append(step.text)
+        else:
+            self.steps.append(step)
 
     # -- attribute helpers --------------------------------------------------------------------
 
@@ -577,9 +691,18 @@ class Resolver:
             raise element.error(f"included file {path} does not exist")
         self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element, given_at)
 
-    @tag("ros2", "log", {"message"})
+    @tag("ros2", "log", {"message", "level"})
     def on_log(self, element: Element, scope: Scope) -> None:
-        self.messages.append(self.text(element, "message", scope))
+        text = self.text(element, "message", scope)
+        self.add_step(Step(scope.when, "log", text, where=element.where))
+
+    @tag("ros2", "timer", {"period"})
+    def on_timer(self, element: Element, scope: Scope) -> None:
+        """<timer period="S">: its children happen S seconds after the timer itself."""
+        period = self.number(element, "period", scope)
+        if period is None:
+            raise element.error("<timer> needs a 'period' in seconds")
+        self.resolve_scope(element, scope.child(when=scope.when.later(period)))
 
     # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 
@@ -603,6 +726,31 @@ class Resolver:
     def on_env(self, element: Element, scope: Scope) -> None:
         scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
 
+    @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
+    def on_append_env(self, element: Element, scope: Scope) -> None:
+        """Add to a variable of the environment the launch started with (or set before)."""
+        name = self.env_name(element, scope)
+        value = self.text(element, "value", scope)
+        prepend = self.text(element, "prepend", scope, "false").strip().lower()
+        if prepend not in ("true", "false", "1", "0", "yes", "no"):
+            raise element.error(f"'prepend' must be true or false, not {prepend!r}")
+        separator = self.text(element, "separator", scope, os.pathsep)
+        old = scope.env[name] if name in scope.env else os.environ.get(name)
+        if old:
+            first, last = (value, old) if prepend in ("true", "1", "yes") else (old, value)
+            value = first + separator + last
+        scope.env[name] = value
+
+    @tag("ros2", "reset", set())
+    def on_reset(self, element: Element, scope: Scope) -> None:
+        """Forget every launch configuration but the <keep>s (values read before forgetting)."""
+        kept = {}
+        for child in element.children:
+            _check_tag(child, {"keep": {"name", "value"}}, scope.fmt, "reset")
+            kept[self.text(child, "name", scope)] = self.text(child, "value", scope)
+        scope.args.clear()
+        scope.args.update(kept)
+
     @tag("ros2", "unset_env", {"name"})
     def on_unset_env(self, element: Element, scope: Scope) -> None:
         scope.env[self.env_name(element, scope)] = None
@@ -616,7 +764,7 @@ class Resolver:
             _check_params_file(element, path)
             scope.params_files.append(str(path))
             return
-        value = _typed_value(self.text(element, "value", scope), None, element)
+        value = _ros2_value(self.text(element, "value", scope))
         name = self.text(element, "name", scope)
         _check_params(element, None, name, value)
         entry = (name, value)
@@ -768,8 +916,9 @@ class Resolver:
             sigkill_timeout=sigkill_timeout,
             launch_prefix=launch_prefix,
             cwd=cwd,
+            when=scope.when,
         )
-        self.nodes.append(node)
+        self.add_node(node)
         if ros1:
             self.ros1_nodes.append(node)
 

@@ -19,6 +19,11 @@ How nothing is left behind:
   process group (``setsid``) is adopted by the launcher, not by init, when its parent dies,
   and is stopped with the rest at the end (SIGTERM, then SIGKILL).
 
+Timers and event handlers (the plan's ``When``): a process or a step waits for its time in
+``pending``; the events (a process started, exited, printed a line; the launch shuts down)
+are raised in the main thread, where every process is started. A line a handler listens to
+reaches the main thread through a queue.
+
 Output is relayed line by line, and a line is never held whole: it is read in pieces of at
 most MAX_LINE_BYTES. The log file gets every byte; the screen shows a longer line cut at
 MAX_LINE_BYTES, with a note saying so. A KeyboardInterrupt traceback from a child the
@@ -31,6 +36,7 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import os
+import queue
 import shlex
 import signal
 import subprocess
@@ -42,7 +48,8 @@ from typing import IO
 
 from launcher import LaunchError, guardian
 from launcher.ament import apply_ament_defaults
-from launcher.plan import ProcessSpec
+from launcher.plan import ProcessSpec, program_path
+from launcher.resolve import Step
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults
 
@@ -158,16 +165,27 @@ class Child:
 
 
 class Supervisor:
-    def __init__(self, specs: list[ProcessSpec], log_dir: Path, debug: bool = False) -> None:
+    def __init__(
+        self,
+        specs: list[ProcessSpec],
+        log_dir: Path,
+        debug: bool = False,
+        steps: list[Step] | None = None,
+    ) -> None:
         self.debug = debug
         self.children = [Child(spec, log_dir) for spec in specs]
+        self.steps = steps or []
+        self.pending: list[tuple[float, int, Child | Step, dict]] = []  # (due, order, what, event)
+        self.order = 0
+        self.lines: queue.Queue[tuple[int, str, str]] = queue.Queue()  # (index, stream, line)
+        self.shutdown_reason = ""
         self.log_dir = log_dir
         self.launcher_pid = os.getpid()
         self.output_lock = threading.Lock()
         self.stop_signal: int | None = None
         self.hurry = False  # another signal arrived while shutting down
         self.abandoned = False  # the guardian was killed: kill everything, at once
-        self.ending = False  # a required process exited
+        self.ending = False  # a required process exited, or a Shutdown event
         self.failed = False
 
     def say(self, text: str) -> None:
@@ -189,14 +207,13 @@ class Supervisor:
         try:
             self.say(f"logging to {self.log_dir}")
             try:
-                for child in self.children:
-                    if self.stop_signal is not None:
-                        break  # no new process once told to stop: it would be stopped at once
-                    self.start(child)
+                self.raise_event(None, None, {})  # what starts at once, and the first timers
+                self.run_due()
                 self.watch()
             except (OSError, subprocess.SubprocessError) as error:
                 self.say(f"cannot start a process: {error}")
                 self.failed = True
+            self.on_shutdown()
             self.shutdown()
             self.stop_adopted()
         finally:
@@ -206,6 +223,58 @@ class Supervisor:
         if self.stop_signal is not None:
             return 128 + self.stop_signal  # 130 after Ctrl-C, like a shell
         return 1 if self.failed else 0
+
+    # -- timers and events -----------------------------------------------------------------
+
+    def raise_event(self, event: str | None, index: int | None, info: dict) -> None:
+        """Schedule what waits for ``event`` of process ``index`` (None at the start)."""
+        now = time.monotonic()
+        waiting: list[Child | Step] = [*self.steps, *self.children]  # a message first
+        for what in waiting:
+            when = what.spec.when if isinstance(what, Child) else what.when
+            if when.event != event or event == "shutdown":
+                continue
+            if event is not None and when.target is not None and when.target != index:
+                continue
+            self.order += 1
+            self.pending.append((now + when.delay, self.order, what, info))
+
+    def run_due(self) -> None:
+        """Start the processes and do the steps whose time has come, in order."""
+        now = time.monotonic()
+        due = sorted(item for item in self.pending if item[0] <= now)
+        for item in due:
+            self.pending.remove(item)
+        for _, _, what, info in due:
+            if self.stop_signal is not None or self.ending:
+                return  # no new process once told to stop: it would be stopped at once
+            if isinstance(what, Child):
+                if what.process is None and what.restart_at is None:  # not twice at once
+                    self.start(what)
+            else:
+                self.do_step(what, info)
+
+    def do_step(self, step: Step, info: dict) -> None:
+        if step.kind == "log":
+            self.say(step.text)
+        elif step.kind == "shutdown":
+            self.say(f"shutting down: {step.text}")
+            self.ending, self.shutdown_reason = True, step.text
+        elif step.call is not None:
+            for result in step.call(info):  # a Python launch file's handler: logs and shutdowns
+                self.do_step(result, info)
+
+    def on_shutdown(self) -> None:
+        """The launch shuts down (a signal, a Shutdown event, a required exit, or nothing is
+        left running): the OnShutdown handlers' steps, once."""
+        self.pending.clear()  # timers are cancelled
+        if self.stop_signal is not None:
+            reason = f"ctrl-c ({signal.Signals(self.stop_signal).name})"
+        else:
+            reason = self.shutdown_reason or "idle"
+        for step in self.steps:
+            if step.when.event == "shutdown" and step.kind != "shutdown":
+                self.do_step(step, {"reason": reason})
 
     def _on_signal(self, signum: int, _frame: object) -> None:
         if guardian.abandoned():  # its death sent this SIGTERM: end as abruptly as it did
@@ -239,6 +308,8 @@ class Supervisor:
             else:
                 env[name] = value
         env["PYTHONUNBUFFERED"] = "1"  # output appears as it is written, not at exit
+        if "PATH" not in spec.env:  # `ros2 ...` in an ExecuteProcess or <executable>
+            env["PATH"] = program_path()
         env["ROS_LOG_DIR"] = str(self.log_dir)  # the nodes' own log files go here too
         apply_dds_defaults(env)
         apply_ament_defaults(env)  # a node that looks up a package finds what the launcher found
@@ -260,17 +331,26 @@ class Supervisor:
         # stdout only with output="screen"; the log file gets both.
         to_screen = spec.output in ("screen", "both")
         child.readers = [
-            self._reader(child, child.process.stdout, sys.stdout if to_screen else None),
-            self._reader(child, child.process.stderr, sys.stderr),
+            self._reader(child, child.process.stdout, sys.stdout if to_screen else None, "stdout"),
+            self._reader(child, child.process.stderr, sys.stderr, "stderr"),
         ]
         self.say(f"started {spec.label} (pid {child.process.pid})")
         if self.debug:
             self.say(f"  command: {shlex.join(spec.command)}")
+        self.raise_event("start", self.children.index(child), {"pid": child.process.pid})
+
+    def _listened(self, child: Child, name: str) -> bool:
+        index = self.children.index(child)
+        return any(
+            step.when.event == name and step.when.target in (None, index) for step in self.steps
+        )
 
     def _reader(
-        self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None
+        self, child: Child, stream: IO[bytes] | None, screen: IO[str] | None, name: str
     ) -> threading.Thread:
         log_path = child.log_path
+        listened = self._listened(child, name)  # an OnProcessIO handler reads these lines
+        index = self.children.index(child)
 
         def pump() -> None:
             assert stream is not None
@@ -281,6 +361,8 @@ class Supervisor:
                 for raw in iter(lambda: stream.readline(MAX_LINE_BYTES), b""):
                     log.write(raw)
                     log.flush()
+                    if listened and raw.strip():  # an OnProcessIO handler: not blank lines
+                        self.lines.put((index, name, raw.decode(errors="replace")))
                     if screen is None:
                         continue
                     complete = raw.endswith(b"\n")
@@ -402,11 +484,20 @@ class Supervisor:
                     if self.stop_signal is not None:
                         break  # a signal came during this round: stop, don't respawn
                     self.start(child)
-            if all(child.process is None and child.restart_at is None for child in self.children):
+            while not self.lines.empty():
+                index, name, line = self.lines.get()
+                self.raise_event(name, index, {"text": line, "pid": None})
+            self.run_due()
+            idle = all(c.process is None and c.restart_at is None for c in self.children)
+            if idle and not self.pending and self.lines.empty():
                 return
             time.sleep(POLL_SECONDS)
 
     def on_exit(self, child: Child, code: int, now: float) -> None:
+        self._on_exit(child, code, now)
+        self.raise_event("exit", self.children.index(child), {"returncode": code})
+
+    def _on_exit(self, child: Child, code: int, now: float) -> None:
         spec = child.spec
         what = f"{spec.label} {_describe(code)}"
         if spec.required:

@@ -39,6 +39,10 @@ import sys
 
 PACKAGES = frozenset(
     {
+        "launch",  # the launch API Python launch files import (launcher/python_files.py)
+        "launch_ros",
+        "launch_xml",
+        "launch_yaml",
         "launcher",
         "ros2cmd",
         "ros_tutorials_action",

@@ -288,14 +288,11 @@ def test_the_demo_runs_under_demo_nodes_cpp_and_py():
             assert command[-1] == f"ros_tutorials_demo_nodes.{executable}"
 
 
-def test_the_pages_python_launch_file_says_what_to_type_instead():
-    line = fails("ros2", "launch", "demo_nodes_cpp", "introspect_services_launch.py")
-    assert line == (
-        "error: introspect_services_launch.py is a Python launch file, which this launcher "
-        "cannot run yet; start its nodes instead, each in a terminal of its own: "
-        "`ros2 run demo_nodes_cpp introspection_service` and "
-        "`ros2 run demo_nodes_cpp introspection_client`"
-    )
+def test_the_pages_python_launch_file_starts_the_service_and_the_client():
+    out = ok("ros2", "launch", "demo_nodes_cpp", "introspect_services_launch.py", "--print")
+    labels = [line.split("]")[0][1:] for line in out.splitlines() if line.startswith("[")]
+    assert labels == ["introspection_service", "introspection_client"]
+    assert out.count("options: output=screen") == 2
 
 
 @pytest.mark.parametrize(

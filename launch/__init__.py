@@ -1,0 +1,39 @@
+"""launch: ros2/launch's Python API, as launch files use it, written for this project's
+launcher (the launch system is not on PyPI). ``ros2 launch FILE.launch.py`` runs a file that
+imports it; see launcher/python_files.py."""
+
+# ruff: noqa: E402 - the imports follow the release of Ctrl-C, as in every package here
+
+from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
+
+_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)
+
+from launch import (
+    actions,
+    conditions,
+    event_handlers,
+    events,
+    launch_description_sources,
+    substitutions,
+)
+from launch._base import (
+    Action,
+    Condition,
+    EventHandler,
+    LaunchContext,
+    LaunchDescriptionEntity,
+    SomeSubstitutionsType,
+    Substitution,
+)
+from launch._missing import module_getattr
+from launch.launch_description import LaunchDescription
+from launch.launch_description_sources import LaunchDescriptionSource
+
+__all__ = [
+    "Action", "Condition", "EventHandler", "LaunchContext", "LaunchDescription",
+    "LaunchDescriptionEntity", "LaunchDescriptionSource", "SomeSubstitutionsType",
+    "Substitution", "actions", "conditions", "event_handlers", "events",
+    "launch_description_sources", "substitutions",
+]  # fmt: skip
+
+__getattr__ = module_getattr("launch", lambda: __all__)

@@ -1,0 +1,424 @@
+"""launch.actions: what a Python launch file's LaunchDescription holds.
+
+Each action's ``execute`` adds to the launcher's plan: a process (ExecuteProcess, and
+launch_ros's Node), a step (LogInfo, EmitEvent(Shutdown)), or a change to the scope the
+following actions see (DeclareLaunchArgument, SetEnvironmentVariable, GroupAction, ...).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import shlex
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+from launch._base import (
+    Action,
+    Condition,
+    EventHandler,
+    LaunchContext,
+    LaunchDescriptionEntity,
+    SomeSubstitutionsType,
+    Substitution,
+    normalize,
+    perform,
+)
+from launch._missing import module_getattr
+from launch.events import Shutdown as ShutdownEvent
+from launcher import LaunchError
+from launcher.resolve import (
+    DEFAULT_RESPAWN_MAX_RETRIES,
+    MAX_SECONDS,
+    NodeDecl,
+    Step,
+)
+
+__all__ = [
+    "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
+    "GroupAction", "IncludeLaunchDescription", "LogInfo", "OpaqueFunction",
+    "RegisterEventHandler", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
+    "TimerAction", "UnsetEnvironmentVariable", "UnsetLaunchConfiguration",
+]  # fmt: skip
+
+
+def seconds(value: Any, context: LaunchContext, where: str, what: str) -> float:
+    """A period or a timeout: a number, or text or substitutions that give one."""
+    text = value if isinstance(value, (int, float)) else perform(value, context)
+    try:
+        number = float(text)
+    except ValueError:
+        number = math.nan
+    if not math.isfinite(number) or number < 0 or number > MAX_SECONDS:
+        raise LaunchError(f"{where}: {what} must be 0 to {MAX_SECONDS:.0f} seconds, not {text!r}")
+    return number
+
+
+def flag(value: Any, context: LaunchContext) -> bool:
+    if isinstance(value, bool):
+        return value
+    return perform(value, context).strip().lower() in ("true", "1")
+
+
+class DeclareLaunchArgument(Action):
+    """A launch argument: ``name:=value`` on the command line or from an includer, else its
+    default."""
+
+    def __init__(
+        self,
+        name: str,
+        *,
+        default_value: SomeSubstitutionsType | None = None,
+        description: str | None = None,
+        choices: Iterable[str] | None = None,
+        **kwargs: Any,
+    ) -> None:
+        super().__init__(**kwargs)
+        self.name = name
+        self.default_value = default_value
+        self.description = description
+        self.choices = list(choices) if choices is not None else None
+
+    def execute(self, context: LaunchContext) -> None:
+        context.scope.declared[self.name] = 0
+        if self.name not in context.launch_configurations:
+            if self.default_value is None:
+                raise self.error(f"argument {self.name!r} is required: pass {self.name}:=<value>")
+            context.launch_configurations[self.name] = perform(self.default_value, context)
+        value = context.launch_configurations[self.name]
+        if self.choices is not None and value not in self.choices:
+            raise self.error(f"argument {self.name!r} is {value!r}; choose one of {self.choices}")
+
+
+class SetLaunchConfiguration(Action):
+    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
+        super().__init__(**kw)
+        self.name, self.value = name, value
+
+    def execute(self, context: LaunchContext) -> None:
+        context.launch_configurations[perform(self.name, context)] = perform(self.value, context)
+
+
+class UnsetLaunchConfiguration(Action):
+    def __init__(self, name: SomeSubstitutionsType, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.name = name
+
+    def execute(self, context: LaunchContext) -> None:
+        context.launch_configurations.pop(perform(self.name, context), None)
+
+
+class SetEnvironmentVariable(Action):
+    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
+        super().__init__(**kw)
+        self.name, self.value = name, value
+
+    def execute(self, context: LaunchContext) -> None:
+        context.scope.env[perform(self.name, context)] = perform(self.value, context)
+
+
+class UnsetEnvironmentVariable(Action):
+    def __init__(self, name: SomeSubstitutionsType, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.name = name
+
+    def execute(self, context: LaunchContext) -> None:
+        context.scope.env[perform(self.name, context)] = None
+
+
+class AppendEnvironmentVariable(Action):
+    def __init__(
+        self,
+        name: SomeSubstitutionsType,
+        value: SomeSubstitutionsType,
+        prepend: bool | SomeSubstitutionsType = False,
+        separator: SomeSubstitutionsType = os.pathsep,
+        **kw: Any,
+    ) -> None:
+        super().__init__(**kw)
+        self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
+
+    def execute(self, context: LaunchContext) -> None:
+        name, value = perform(self.name, context), perform(self.value, context)
+        old = context.environment.get(name, "")
+        separator = perform(self.separator, context)
+        if old:
+            value = (
+                value + separator + old if flag(self.prepend, context) else old + separator + value
+            )
+        context.scope.env[name] = value
+
+
+class LogInfo(Action):
+    """A message on the launcher's screen, when the launch reaches it."""
+
+    def __init__(self, *, msg: SomeSubstitutionsType, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.msg = msg
+
+    def execute(self, context: LaunchContext) -> None:
+        from launch.substitutions import LocalSubstitution
+
+        local = any(isinstance(part, LocalSubstitution) for part in normalize(self.msg))
+        if local and context.locals.get("runtime"):  # the event's values, when it happens
+            runtime = context
+
+            def call(info: dict) -> list[Step]:
+                from launch.events import event_from
+
+                runtime.locals["event"] = event_from(info)
+                return [
+                    Step(runtime.scope.when, "log", perform(self.msg, runtime), where=self.where)
+                ]
+
+            context.resolver.add_step(Step(context.scope.when, "call", call=call, where=self.where))
+            return
+        text = perform(self.msg, context)
+        context.resolver.add_step(Step(context.scope.when, "log", text, where=self.where))
+
+
+class EmitEvent(Action):
+    """Only the Shutdown event is emitted by launch files here."""
+
+    def __init__(self, *, event: Any, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.event = event
+
+    def execute(self, context: LaunchContext) -> None:
+        if not isinstance(self.event, ShutdownEvent):
+            raise self.error(
+                f"EmitEvent({type(self.event).__name__}) is not supported here; only "
+                "EmitEvent(event=Shutdown(...))"
+            )
+        reason = perform(self.event.reason, context)
+        context.resolver.add_step(Step(context.scope.when, "shutdown", reason, where=self.where))
+
+
+class Shutdown(EmitEvent):
+    """launch.actions.Shutdown: EmitEvent(event=Shutdown(reason=...))."""
+
+    def __init__(self, *, reason: str = "reason not given", **kw: Any) -> None:
+        super().__init__(event=ShutdownEvent(reason=reason), **kw)
+
+
+class OpaqueFunction(Action):
+    """A function of the launch file, called with the launch context; it may return actions."""
+
+    def __init__(
+        self,
+        *,
+        function: Callable[..., Any],
+        args: Iterable[Any] | None = None,
+        kwargs: dict[str, Any] | None = None,
+        **kw: Any,
+    ) -> None:
+        super().__init__(**kw)
+        self.function, self.args, self.kwargs = function, list(args or []), dict(kwargs or {})
+
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
+        return self.function(context, *self.args, **self.kwargs)
+
+
+class GroupAction(Action):
+    """Actions in a scope of their own (launch configurations, environment, remaps...)."""
+
+    def __init__(
+        self,
+        actions: Iterable[LaunchDescriptionEntity],
+        *,
+        scoped: bool = True,
+        forwarding: bool = True,
+        launch_configurations: dict[Any, Any] | None = None,
+        **kw: Any,
+    ) -> None:
+        super().__init__(**kw)
+        self.actions = list(actions)
+        self.scoped, self.forwarding = scoped, forwarding
+        self.launch_configurations = launch_configurations or {}
+
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.actions
+
+    def execute(self, context: LaunchContext) -> None:
+        inner = context
+        if self.scoped:
+            inner = context.child() if self.forwarding else context.child(args={})
+        for name, value in self.launch_configurations.items():
+            inner.launch_configurations[perform(name, context)] = perform(value, context)
+        for action in self.actions:
+            inner.visit(action)
+
+
+class TimerAction(Action):
+    """Its actions happen ``period`` seconds later."""
+
+    def __init__(
+        self,
+        *,
+        period: float | SomeSubstitutionsType,
+        actions: Iterable[LaunchDescriptionEntity],
+        cancel_on_shutdown: bool = True,
+        **kw: Any,
+    ) -> None:
+        super().__init__(**kw)
+        self.period = period
+        self.actions = list(actions)
+
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.actions
+
+    def execute(self, context: LaunchContext) -> None:
+        period = seconds(self.period, context, self.where, "TimerAction period")
+        later = LaunchContext(context.scope, context.locals)
+        later.scope = context.scope.child(when=context.scope.when.later(period))
+        for action in self.actions:
+            later.visit(action)
+
+
+class RegisterEventHandler(Action):
+    def __init__(self, event_handler: EventHandler, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.event_handler = event_handler
+
+    def execute(self, context: LaunchContext) -> None:
+        register = getattr(self.event_handler, "register", None)
+        if register is None:
+            raise self.error(f"{type(self.event_handler).__name__} is not an event handler")
+        register(context)
+
+
+class ExecuteProcess(Action):
+    """A process: ``cmd`` is a list of words (each text or substitutions); with ``shell``
+    they are joined into one shell command line."""
+
+    def __init__(
+        self,
+        *,
+        cmd: Iterable[SomeSubstitutionsType],
+        name: SomeSubstitutionsType | None = None,
+        cwd: SomeSubstitutionsType | None = None,
+        env: dict[Any, Any] | None = None,
+        additional_env: dict[Any, Any] | None = None,
+        shell: bool = False,
+        sigterm_timeout: SomeSubstitutionsType | float | None = None,
+        sigkill_timeout: SomeSubstitutionsType | float | None = None,
+        emulate_tty: bool = False,
+        prefix: SomeSubstitutionsType | None = None,
+        output: SomeSubstitutionsType = "log",
+        output_format: str = "[{this.process_description.final_name}] {line}",
+        log_cmd: bool = False,
+        on_exit: Any = None,
+        respawn: bool | SomeSubstitutionsType = False,
+        respawn_delay: float | None = None,
+        respawn_max_retries: int = -1,
+        condition: Condition | None = None,
+        **kw: Any,
+    ) -> None:
+        super().__init__(condition=condition, **kw)
+        self.cmd = list(cmd) if not isinstance(cmd, (str, Substitution)) else [cmd]
+        self.name, self.cwd, self.env, self.additional_env = name, cwd, env, additional_env
+        self.shell, self.prefix, self.output = shell, prefix, output
+        self.sigterm_timeout, self.sigkill_timeout = sigterm_timeout, sigkill_timeout
+        self.on_exit, self.respawn = on_exit, respawn
+        self.respawn_delay, self.respawn_max_retries = respawn_delay, respawn_max_retries
+
+    def process_decl(self, context: LaunchContext) -> NodeDecl:
+        """The process as the launcher's plan holds it (launch_ros's Node fills in more)."""
+        words = [perform(word, context) for word in self.cmd]
+        if not words or not words[0]:
+            raise self.error("ExecuteProcess needs a non-empty cmd")
+        label = perform(self.name, context) if self.name is not None else None
+        if self.shell:
+            first = shlex.split(words[0])[:1] if words[0].strip() else []
+            label = label or (Path(first[0]).name if first else "sh")
+            command = ["/bin/sh", "-c", " ".join(words)]
+        else:
+            command = words
+        decl = NodeDecl(self.where, cmd=command, label=label, namespace="/")
+        self.fill(decl, context)
+        return decl
+
+    def fill(self, decl: NodeDecl, context: LaunchContext) -> None:
+        """What every process shares: environment, output, respawn, timeouts, prefix, cwd."""
+        env = dict(context.scope.env)
+        if self.env is not None:  # the whole environment: everything else unset
+            given = {perform(k, context): perform(v, context) for k, v in self.env.items()}
+            env = {name: None for name in os.environ if name not in given}
+            env.update(given)
+        for key, value in (self.additional_env or {}).items():
+            env[perform(key, context)] = perform(value, context)
+        decl.env = env
+        decl.output = perform(self.output, context) or "log"
+        if decl.output not in ("screen", "log", "both"):
+            raise self.error(f"output={decl.output!r}; use one of screen, log, both")
+        decl.respawn = flag(self.respawn, context)
+        if self.respawn_delay is not None:
+            decl.respawn_delay = seconds(self.respawn_delay, context, self.where, "respawn_delay")
+        retries = int(self.respawn_max_retries)
+        decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries < 0 else retries
+        for attr in ("sigterm_timeout", "sigkill_timeout"):
+            value = getattr(self, attr)
+            if value is not None:
+                setattr(decl, attr, seconds(value, context, self.where, attr))
+        if self.prefix is not None:
+            decl.launch_prefix = shlex.split(perform(self.prefix, context))
+        if self.cwd is not None:
+            decl.cwd = perform(self.cwd, context)
+        decl.when = context.scope.when
+        exit_actions = self.on_exit if isinstance(self.on_exit, list) else [self.on_exit]
+        decl.required = any(isinstance(a, EmitEvent) and not callable(a) for a in exit_actions)
+
+    def execute(self, context: LaunchContext) -> None:
+        decl = self.process_decl(context)
+        if decl.required and decl.respawn:
+            raise self.error("a process cannot both respawn and shut the launch down on exit")
+        index = context.resolver.add_node(decl)
+        context.resolver.process_index[id(self)] = index
+        others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
+        if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
+            from launch.event_handlers import OnProcessExit
+
+            OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def normalize_actions(value: Any) -> list[Any]:
+    if value is None:
+        return []
+    return list(value) if isinstance(value, (list, tuple)) else [value]
+
+
+class IncludeLaunchDescription(Action):
+    """Another launch file, of any of the three formats, with arguments."""
+
+    def __init__(
+        self,
+        launch_description_source: Any,
+        *,
+        launch_arguments: Iterable[tuple[Any, Any]] | None = None,
+        **kw: Any,
+    ) -> None:
+        super().__init__(**kw)
+        self.launch_description_source = launch_description_source
+        self.launch_arguments = list(launch_arguments or [])
+
+    def execute(self, context: LaunchContext) -> None:
+        source = self.launch_description_source
+        location = getattr(source, "location", source)
+        path = Path(perform(location, context))
+        if not path.is_absolute():
+            path = context.scope.file.parent / path
+        if not path.is_file():
+            raise self.error(f"included launch file {path} does not exist")
+        # As ros2 launch: the included file sees the includer's launch configurations too.
+        given = dict(context.launch_configurations)
+        for name, value in self.launch_arguments:
+            given[perform(name, context)] = perform(value, context)
+        try:
+            context.resolver.resolve_file(path, given, context.scope, strict=False)
+        except RecursionError:
+            raise self.error("launch files include each other too deeply") from None
+
+
+_ = (normalize, Substitution)
+__getattr__ = module_getattr("launch.actions", lambda: __all__)

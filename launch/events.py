@@ -1,0 +1,57 @@
+"""launch.events: the events an event handler receives, and Shutdown, which ends the launch."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launch._missing import module_getattr
+
+__all__ = ["Event", "ProcessExited", "ProcessIO", "ProcessStarted", "Shutdown"]
+
+
+class Event:
+    """An event; its attributes are what the launcher reports with it."""
+
+    def __init__(self, **fields: Any) -> None:
+        self.__dict__.update(fields)
+
+
+class Shutdown(Event):
+    def __init__(self, *, reason: str = "reason not given", due_to_sigint: bool = False) -> None:
+        super().__init__(reason=reason, due_to_sigint=due_to_sigint)
+
+
+class ProcessStarted(Event):
+    pass
+
+
+class ProcessExited(Event):
+    pass
+
+
+class ProcessIO(Event):
+    pass
+
+
+class _Process:
+    """launch.events.process, as launch files import it."""
+
+    ProcessStarted = ProcessStarted
+    ProcessExited = ProcessExited
+    ProcessIO = ProcessIO
+
+
+process = _Process()
+__getattr__ = module_getattr("launch.events", lambda: __all__)
+
+
+def event_from(info: dict[str, Any]) -> Event:
+    """The event object a handler's function or LocalSubstitution sees, from what the
+    launcher reports (``text`` as bytes, as ros2 launch gives it)."""
+    fields = dict(info)
+    if isinstance(fields.get("text"), str):
+        fields["text"] = fields["text"].encode()
+    if "reason" in fields:
+        return Shutdown(reason=fields["reason"])
+    kind = ProcessIO if "text" in fields else ProcessExited if "returncode" in fields else Event
+    return kind(**fields)

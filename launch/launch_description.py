@@ -1,0 +1,47 @@
+"""launch.LaunchDescription: the list of actions generate_launch_description() returns."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+from launch._base import LaunchContext, LaunchDescriptionEntity
+
+
+class LaunchDescription(LaunchDescriptionEntity):
+    def __init__(
+        self,
+        initial_entities: Iterable[LaunchDescriptionEntity] | None = None,
+        *,
+        deprecated_reason: str | None = None,
+    ) -> None:
+        super().__init__()
+        self.entities = list(initial_entities or [])
+        self.deprecated_reason = deprecated_reason
+
+    def add_action(self, action: LaunchDescriptionEntity) -> None:
+        self.entities.append(action)
+
+    def add_entity(self, entity: LaunchDescriptionEntity) -> None:
+        self.entities.append(entity)
+
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.entities
+
+    def execute(self, context: LaunchContext) -> list[Any]:
+        if self.deprecated_reason:
+            context.resolver.warnings.append(f"{self.where}: deprecated: {self.deprecated_reason}")
+        return self.entities
+
+    def get_launch_arguments(self) -> list[Any]:
+        """The DeclareLaunchArgument actions, also in groups and timers (not in includes)."""
+        from launch.actions import DeclareLaunchArgument
+
+        found, stack = [], list(reversed(self.entities))
+        while stack:
+            entity = stack.pop()
+            if isinstance(entity, DeclareLaunchArgument):
+                found.append(entity)
+            elif isinstance(entity, LaunchDescriptionEntity):
+                stack.extend(reversed(entity.describe_sub_entities()))
+        return found

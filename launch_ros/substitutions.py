@@ -1,0 +1,64 @@
+"""launch_ros.substitutions: where packages are, in this environment's ament index."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from launch._base import LaunchContext, Substitution, perform
+from launch._missing import module_getattr
+from launcher import packages
+
+__all__ = ["ExecutableInPackage", "FindPackage", "FindPackagePrefix", "FindPackageShare"]
+
+
+class _Locate(Substitution):
+    locate: Callable[[str], Path] = staticmethod(packages.prefix)
+
+    def __init__(self, package: Any) -> None:
+        super().__init__()
+        self.package = package
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform(self.package, context)
+        try:
+            return str(type(self).locate(name))
+        except LookupError as error:
+            raise self.error(str(error)) from None
+
+    def find(self, *parts: Any) -> Any:
+        from launch.substitutions import PathJoinSubstitution
+
+        return PathJoinSubstitution([self, *parts])
+
+    def __truediv__(self, other: Any) -> Any:
+        return self.find(other)
+
+
+class FindPackagePrefix(_Locate):
+    locate = staticmethod(packages.prefix)
+
+
+class FindPackageShare(_Locate):
+    locate = staticmethod(packages.share_directory)
+
+
+class FindPackage(FindPackagePrefix):
+    pass
+
+
+class ExecutableInPackage(Substitution):
+    def __init__(self, executable: Any, package: Any) -> None:
+        super().__init__()
+        self.executable, self.package = executable, package
+
+    def perform(self, context: LaunchContext) -> str:
+        package, executable = perform(self.package, context), perform(self.executable, context)
+        try:
+            return packages.command(package, executable)[0]
+        except packages.UnknownExecutable as error:
+            raise self.error(str(error)) from None
+
+
+__getattr__ = module_getattr("launch_ros.substitutions", lambda: __all__)
