@@ -1,5 +1,5 @@
 """The lesson files as a course: each stands alone, every node serves the logger-level
-services, and the README's table of lengths is the files' own."""
+services, and the docs' table of lengths (docs/lesson-files.md) is the files' own."""
 
 from __future__ import annotations
 
@@ -94,9 +94,9 @@ def test_nodes_serve_the_logger_level_services(context, executor, make):
     )
 
 
-def test_the_readme_lists_each_lesson_files_length():
-    readme = (ROOT / "README.md").read_text()
-    listed = dict(re.findall(r"^\| `(ros_tutorials_\w+/\w+\.py)` \| (\d+) \|", readme, re.M))
+def test_the_docs_list_each_lesson_files_length():
+    table = (ROOT / "docs" / "lesson-files.md").read_text()
+    listed = dict(re.findall(r"^\| `(ros_tutorials_\w+/\w+\.py)` \| (\d+) \|", table, re.M))
     actual = {
         str(path.relative_to(ROOT)): str(len(path.read_text().splitlines()))
         for path in LESSON_FILES

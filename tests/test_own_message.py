@@ -1,13 +1,15 @@
-"""The README's "Your own message", followed step by step in a temporary copy.
+"""The docs' "Your own package and messages" page, its tasks followed step by step in a
+temporary copy.
 
-The message definition, the CMakeLists.txt line and the node are read from that section of
-README.md, so the lesson and this test cannot drift apart. The copy is built with
+The message definition, the CMakeLists.txt line and the node are read from that page's Tasks
+(docs/own-package.md), so the lesson and this test cannot drift apart. The copy is built with
 tools/build_interfaces.py into a temporary prefix, never into this environment (other tests
 have its interface libraries loaded); the processes that use the new message see that prefix
 first. The rosidl build costs 22 to 25 s of CPU time (4 runs, 2 cores, load average 1.4 to
-1.7), against 44 to 54 s before issue 14's changes to tools/build_interfaces.py (README: "What
-the interface build costs"); with that older build, on this machine shared with other test
-runs (load average 10 to 19), the whole test took 2 min 14 s to 5 min 46 s.
+1.7), against 44 to 54 s before issue 14's changes to tools/build_interfaces.py
+(docs/dev/performance.md: "What the interface build costs"); with that older build, on this
+machine shared with other test runs (load average 10 to 19), the whole test took 2 min 14 s
+to 5 min 46 s.
 """
 
 from __future__ import annotations
@@ -29,17 +31,17 @@ BIN = Path(sys.executable).parent
 BUILD_TIMEOUT = 900.0  # the whole rosidl build: well under a minute idle, minutes when loaded
 
 
-def readme_section(title: str) -> str:
-    text = (ROOT / "README.md").read_text()
+def docs_section(title: str) -> str:
+    text = (ROOT / "docs" / "own-package.md").read_text()
     start = text.index(f"\n## {title}\n")
     end = text.find("\n## ", start + 1)
     return text[start : end if end > 0 else len(text)]
 
 
 def code_block(section: str, language: str) -> str:
-    """The first fenced block of a language in a README section, without its indentation."""
+    """The first fenced block of a language in a docs section, without its indentation."""
     match = re.search(rf"\n( *)```{language}\n(.*?)\n\1```", section, re.DOTALL)
-    assert match, f"no ```{language} block in the README section"
+    assert match, f"no ```{language} block in the docs section"
     indent = len(match.group(1))
     return "\n".join(line[indent:] for line in match.group(2).splitlines()) + "\n"
 
@@ -70,8 +72,8 @@ def run(command: list[str], env: dict[str, str], timeout: float = TIMEOUT) -> st
 
 
 @pytest.mark.long  # the rosidl build: 22 to 25 s of CPU time
-def test_a_new_message_from_the_readme_builds_and_is_used_by_a_node(tmp_path, node_process):
-    section = readme_section("Your own message")
+def test_a_new_message_from_the_docs_builds_and_is_used_by_a_node(tmp_path, node_process):
+    section = docs_section("Tasks")
     definition, cmake_line = code_block(section, "text"), code_block(section, "cmake").strip()
     node_code = code_block(section, "python")
     assert "interfaces/ros_tutorials_interfaces/msg/Greeting.msg" in section
