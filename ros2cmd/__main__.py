@@ -1,5 +1,5 @@
 """`python -m ros2cmd ...` is the same as `ros2 ...`."""
 
-from ros2cmd.cli import main
+from ros2cmd.entry import main
 
 raise SystemExit(main())

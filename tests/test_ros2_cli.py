@@ -4,6 +4,8 @@ ros2cli does, and a verb it does not have is a usage error naming the ones it ha
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
 
 import pytest
 from helpers import run
@@ -51,3 +53,16 @@ def test_a_domain_id_dds_cannot_use_is_one_line(value, problem, command):
     assert result.stderr == (
         f"error: ROS_DOMAIN_ID={problem}: use one from 0 to 101 (every RMW takes those)\n"
     )
+
+
+def test_ros2_launch_does_not_load_rclpy():
+    """The launcher does not use rclpy; a `ros2 launch` that had loaded it (and Fast DDS)
+    ended with a segmentation fault in 2 of 3 runs after Ctrl-C (C++ code run at exit)."""
+    code = (
+        "import sys; from ros2cmd.entry import main; "
+        "status = main(['launch', '--print', 'ros_tutorials_topic', 'union.launch.xml']); "
+        "print('rclpy' in sys.modules); sys.exit(status)"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().splitlines()[-1] == "False"
