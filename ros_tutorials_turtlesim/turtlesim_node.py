@@ -35,7 +35,6 @@ from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.action.server import ServerGoalHandle
 from rclpy.exceptions import ParameterException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
-from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
 from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -47,7 +46,7 @@ from turtlesim.action import RotateAbsolute
 from turtlesim.msg import Color, Pose
 from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 
-from ros_tutorials_common.ros import init
+from ros_tutorials_common.ros import RCLError, init
 from ros_tutorials_turtlesim import canvas
 from ros_tutorials_turtlesim.simulation import (
     ROTATION_SPEED,
@@ -367,7 +366,7 @@ class TurtlesimNode(Node):
             )
         try:  # the longest of them: the action's hidden services
             self.resolve_service_name(f"{name}/{LONGEST_ENDPOINT}")
-        except _rclpy.RCLError as error:
+        except RCLError as error:
             if "length" in str(error):
                 return "too long: the names of its topics and services would exceed what ROS allows"
             return str(error).split(", at ")[0]

@@ -91,7 +91,7 @@ def test_the_seeds_package_names_find_this_projects_executables():
     with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
         packages.command("beginner_tutorials", "nope")
     # ROS 1's `rosrun rqt_graph rqt_graph`: a tool of this project, named twice.
-    assert packages.command("ros2", "ros2")[2] == "ros2cmd.cli"
+    assert packages.command("ros2", "ros2")[2] == "ros2cmd.entry"
     with pytest.raises(packages.UnknownExecutable, match="unknown package 'ros2'"):
         packages.command("ros2", "rosrun")
 

@@ -3,6 +3,7 @@ unbounded memory (rosparam load /dev/zero, a YAML alias bomb on the command line
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
@@ -162,9 +163,7 @@ def test_sigterm_ends_a_load_waiting_on_a_named_pipe(tmp_path, command):
         [str(BIN / command[0]), *command[1:], fifo], stderr=subprocess.PIPE, text=True
     )
     deadline = time.monotonic() + TIMEOUT
-    while not any(  # waiting: the pipe is open
-        os.path.realpath(f"/proc/{process.pid}/fd/{fd}") == fifo for fd in _fds(process.pid)
-    ):
+    while fifo not in _open_files(process.pid):  # once open, the command waits on it
         assert process.poll() is None, process.stderr.read()
         assert time.monotonic() < deadline, "the command never opened the pipe"
         time.sleep(0.05)
@@ -180,11 +179,17 @@ def test_sigterm_ends_a_load_waiting_on_a_named_pipe(tmp_path, command):
     assert process.returncode != 0 and "Traceback" not in err
 
 
-def _fds(pid: int) -> list[str]:
+def _open_files(pid: int) -> set[str]:
+    """What the process has open (its descriptors come and go while we look)."""
+    targets = set()
     try:
-        return os.listdir(f"/proc/{pid}/fd")
+        fds = os.listdir(f"/proc/{pid}/fd")
     except OSError:
-        return []
+        return targets
+    for fd in fds:
+        with contextlib.suppress(OSError):
+            targets.add(os.readlink(f"/proc/{pid}/fd/{fd}"))
+    return targets
 
 
 def bounded_wait() -> float:
