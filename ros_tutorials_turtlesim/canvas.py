@@ -13,6 +13,7 @@ and tail, turned to its heading, with a different shell colour per turtle.
 from __future__ import annotations
 
 import functools
+import io
 import math
 import os
 from collections.abc import Iterable, Sequence
@@ -75,6 +76,7 @@ class Canvas:
         # plain copy plus the turtles, not a 500 x 500 alpha blend.
         self.base = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
         self._base_background: tuple[int, ...] | None = None
+        self._frame: pygame.Surface | None = None  # encode()'s, made on first use
         self.clear()
         self.screen: pygame.Surface | None = None
         if window:
@@ -146,6 +148,15 @@ class Canvas:
         frame = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
         self.compose(frame, background, turtles)
         pygame.image.save(frame, path)
+
+    def encode(self, kind: str, background: Sequence[int], turtles: Iterable[Turtle]) -> bytes:
+        """The canvas as it looks now, as the bytes of a 'png' or 'jpeg' file."""
+        if self._frame is None:
+            self._frame = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
+        self.compose(self._frame, background, turtles)
+        encoded = io.BytesIO()
+        pygame.image.save(self._frame, encoded, f"canvas.{kind}")
+        return encoded.getvalue()
 
     def close(self) -> None:
         if self.screen is not None:
