@@ -66,7 +66,7 @@ DEFAULT_BACKGROUND = (69, 86, 255)  # 0x45, 0x56, 0xff
 FLOAT32_MAX = 3.4028234663852886e38
 REPAINT_HZ = 30
 CANVAS_HZ = 20  # the most frames a second on ~/canvas/compressed
-CANVAS_FORMAT = "png"  # lossless: a 2 px trail stays sharp (5 ms to encode, ~3-20 kB)
+CANVAS_FORMAT = "png"  # lossless: a thin trail stays sharp (2 ms to encode, 5-20 kB)
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
 

@@ -22,6 +22,7 @@ import pygame
 import pytest
 from helpers import BIN, TIMEOUT, ok, run
 
+from ros_tutorials_turtlesim.canvas import png_bytes
 from ros_tutorials_turtlesim.simulation import DEFAULT_PEN
 
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
@@ -103,6 +104,17 @@ def viewer(class_own_domain, class_node_process) -> str:
     found = re.search(r"Open (http://127\.0\.0\.1:\d+/) in a browser", line)
     assert found, line
     return found.group(1)
+
+
+def test_canvas_png_is_exact() -> None:
+    """turtlesim's own PNG writer (fast, lossless): another reader gets every pixel back."""
+    surface = pygame.Surface((37, 23))
+    surface.fill((69, 86, 255))
+    pygame.draw.line(surface, DEFAULT_PEN, (0, 0), (36, 22), 3)
+    surface.set_at((36, 0), (1, 2, 3))
+    image = pygame.image.load(io.BytesIO(png_bytes(surface)), "canvas.png")
+    assert image.get_size() == (37, 23)
+    assert pygame.image.tobytes(image, "RGB") == pygame.image.tobytes(surface, "RGB")
 
 
 class TestViewer:

@@ -1,0 +1,143 @@
+"""Web viewer figures: how late turtlesim's canvas reaches a browser, how often, and what it
+costs turtlesim and the viewer; at 1 and 10 turtles, all driven in circles at 10 Hz (so the
+canvas changes at every update).
+
+The browser is a WebSocket client in this process (aiohttp), the protocol the page speaks;
+latency is its arrival time less the frame's header stamp, which turtlesim sets just before
+it encodes the PNG (same machine, same clock): encode + DDS + viewer + WebSocket. The
+baseline is the same run with the viewer up but no tab open: turtlesim then publishes (and
+encodes) nothing. CPU is user + system time over the measured window, one core = 100 %.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import re
+import struct
+import threading
+import time
+
+import aiohttp
+import rclpy
+
+from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop, wait_for_lines
+from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
+
+CANVAS = "/turtlesim/canvas/compressed"
+LINK = r"http://\S+"  # the viewer prints where it listens
+
+
+class Tab(threading.Thread):
+    """A browser tab's WebSocket in a thread of its own: the latency of every canvas frame."""
+
+    def __init__(self, url: str) -> None:
+        super().__init__(daemon=True)
+        self.url = url
+        self.latencies: list[float] = []
+        self.arrivals: list[float] = []
+        self.stop = threading.Event()
+        self.error: BaseException | None = None
+
+    def run(self) -> None:
+        try:
+            asyncio.run(self._read())
+        except BaseException as error:
+            self.error = error
+
+    async def _read(self) -> None:
+        async with aiohttp.ClientSession() as client, client.ws_connect(self.url + "ws") as ws:
+            while not self.stop.is_set():
+                try:
+                    message = await ws.receive(timeout=0.2)
+                except asyncio.TimeoutError:
+                    continue
+                if message.type != aiohttp.WSMsgType.BINARY:
+                    continue
+                now = time.time()
+                (length,) = struct.unpack("!I", message.data[:4])
+                header = json.loads(message.data[4 : 4 + length])
+                if header["topic"] == CANVAS:
+                    self.latencies.append(now - header["stamp"])
+                    self.arrivals.append(time.monotonic())
+
+
+def _measure(bench: Bench, pids: list[int], seconds: float) -> list[float]:
+    """CPU share of each process over the next seconds (the bench keeps driving)."""
+    before, wall = [_cpu_seconds(pid) for pid in pids], time.monotonic()
+    bench.spin_for(seconds)
+    wall = time.monotonic() - wall
+    return [(_cpu_seconds(pid) - b) / wall for pid, b in zip(pids, before, strict=True)]
+
+
+def _run(turtles: int, seconds: float) -> dict:
+    sim = start(python("-m", "ros_tutorials_turtlesim.turtlesim_node"), env=HEADLESS)
+    viewer = start(python("-m", "ros_tutorials_web.viewer", "--port", "0"))
+    context = rclpy.Context()
+    rclpy.init(context=context)
+    bench = Bench(context)
+    try:
+        if not wait_for_lines(sim, lambda line: "Spawning turtle [turtle1]" in line, 60):
+            raise RuntimeError("turtlesim did not start")
+        link: list[str] = []
+        if not wait_for_lines(viewer, lambda line: link.extend(re.findall(LINK, line)) or link, 60):
+            raise RuntimeError("the viewer did not start")
+        for proc in (sim, viewer):  # their further lines are not needed; the pipes must not fill
+            threading.Thread(target=proc.stdout.read, daemon=True).start()
+        bench.drive(bench.spawn(turtles))
+        bench.spin_for(2.0)
+        idle = _measure(bench, [sim.pid, viewer.pid], seconds)
+        tab = Tab(link[0])
+        tab.start()
+        bench.spin_until(lambda: len(tab.arrivals) > 5 or tab.error is not None)
+        if tab.error is not None:
+            raise tab.error
+        tab.latencies.clear()
+        first = len(tab.arrivals)
+        watched = _measure(bench, [sim.pid, viewer.pid], seconds)
+        frames = tab.arrivals[first:]
+        tab.stop.set()
+        tab.join(5)
+        rate = (len(frames) - 1) / (frames[-1] - frames[0]) if len(frames) > 1 else 0.0
+        return {"idle": idle, "watched": watched, "latency": tab.latencies, "rate": rate}
+    finally:
+        bench.close()
+        context.try_shutdown()
+        stop(viewer)
+        stop(sim)
+
+
+def viewer_figures(seconds: float = 10.0) -> list[Row]:
+    rows = []
+    for turtles in (1, 10):
+        got = _run(turtles, seconds)
+        label = f"{turtles} turtle{'s' if turtles > 1 else ''} driven"
+        latency = got["latency"]
+        rows += [
+            Row(
+                f"web viewer: canvas frame draw -> WebSocket tab, median / p99, {label}",
+                f"{fmt_ms(p50(latency))} / {fmt_ms(p99(latency))}",
+                target="p99 under 100 ms",
+                met=p99(latency) < 0.1,
+            ),
+            Row(
+                f"web viewer: canvas frames a second at the tab, {label}",
+                f"{got['rate']:.1f}",
+                "turtlesim sends at most 20",
+                target="at least 10",
+                met=got["rate"] >= 10,
+            ),
+            Row(
+                f"turtlesim CPU with a viewer tab open, {label}",
+                f"{got['watched'][0] * 100:.1f} %",
+                f"{got['idle'][0] * 100:.1f} % (viewer up, no tab)",
+                got["watched"][0] / got["idle"][0] if got["idle"][0] else None,
+            ),
+            Row(
+                f"web viewer CPU with one tab open, {label}",
+                f"{got['watched'][1] * 100:.1f} %",
+                f"{got['idle'][1] * 100:.1f} % (no tab)",
+                got["watched"][1] / got["idle"][1] if got["idle"][1] else None,
+            ),
+        ]
+    return rows
