@@ -24,7 +24,7 @@ import rclpy
 from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop, wait_for_lines
 from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
 
-CANVAS = "/turtlesim/canvas/compressed"
+CANVAS = "/turtlesim/_canvas/compressed"
 LINK = r"http://\S+"  # the viewer prints where it listens
 
 

@@ -13,9 +13,10 @@ Parameters ``background_r/g/b`` (changeable while running) and ``holonomic``.
 
 Added here: ``headless``, ``snapshot_path`` and ``snapshot_on_exit`` parameters, and
 ``~/snapshot`` (std_srvs/srv/Trigger) or SIGUSR1 to write the canvas to a PNG while running;
-and ``~/canvas/compressed`` (sensor_msgs/msg/CompressedImage, PNG): the canvas as drawn, at
+and ``~/_canvas/compressed`` (sensor_msgs/msg/CompressedImage, PNG): the canvas as drawn, at
 most 20 frames a second and only when it changed, only while someone subscribes (the web
-viewer, ``ros2 run ros_tutorials_web viewer``, shows it in a browser).
+viewer, ``ros2 run ros_tutorials_web viewer``, shows it in a browser). Its name is hidden, so
+the tools list what the tutorials show.
 The simulation (``simulation.py``) is apart from the drawing (``canvas.py``).
 """
 
@@ -65,7 +66,7 @@ from ros_tutorials_turtlesim.simulation import (
 DEFAULT_BACKGROUND = (69, 86, 255)  # 0x45, 0x56, 0xff
 FLOAT32_MAX = 3.4028234663852886e38
 REPAINT_HZ = 30
-CANVAS_HZ = 20  # the most frames a second on ~/canvas/compressed
+CANVAS_HZ = 20  # the most frames a second on ~/_canvas/compressed
 CANVAS_FORMAT = "png"  # lossless: a thin trail stays sharp (2 ms to encode, 5-20 kB)
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
@@ -77,7 +78,7 @@ def topic_qos() -> QoSProfile:
 
 
 def canvas_qos() -> QoSProfile:
-    """~/canvas/compressed: reliable, and only the newest frame is kept for a slow reader."""
+    """~/_canvas/compressed: reliable, and only the newest frame is kept for a slow reader."""
     return QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
 
 
@@ -160,9 +161,11 @@ class TurtlesimNode(Node):
         self.create_service(Kill, "kill", self._on_kill)
         self.create_service(Trigger, "~/snapshot", self._on_snapshot)
         # The canvas as a picture, the way ROS 2 nodes publish pictures (image_transport's
-        # "compressed" topic): drawn and encoded only while someone subscribes.
+        # "compressed" topic): drawn and encoded only while someone subscribes. A hidden name
+        # ('_'): `ros2 topic list`, `node info` and `bag record -a` show what the tutorials
+        # show (`--include-hidden-topics` lists it).
         self.canvas_publisher = self.create_publisher(
-            CompressedImage, "~/canvas/compressed", canvas_qos()
+            CompressedImage, "~/_canvas/compressed", canvas_qos()
         )
 
         self.get_logger().info(
@@ -297,7 +300,7 @@ class TurtlesimNode(Node):
                 self._publish_canvas(now)
 
     def _publish_canvas(self, now: float) -> None:
-        """A frame on ~/canvas/compressed if the canvas changed, or a subscriber joined."""
+        """A frame on ~/_canvas/compressed if the canvas changed, or a subscriber joined."""
         subscribers = self.canvas_publisher.get_subscription_count()
         joined = subscribers > self._canvas_subscribers
         self._canvas_subscribers = subscribers

@@ -4,7 +4,7 @@
     ros2 run ros_tutorials_web viewer --port 9000  # exactly this port
     ros2 run ros_tutorials_web viewer --host 0.0.0.0   # reachable from other machines too
 
-One page shows, live: every turtlesim's canvas (its ~/canvas/compressed topic, any
+One page shows, live: every turtlesim's canvas (its ~/_canvas/compressed topic, any
 sensor_msgs/msg/CompressedImage topic in fact), the graph as rqt_graph draws it, the /rosout
 log with level and node filters, and any topic's newest message with a plot of one of its
 numbers over time. The viewer is an ordinary ROS 2 node (``web_viewer``, watch.py) and only
@@ -19,7 +19,8 @@ HTTP: ``/`` the page, ``/static/...`` its files, ``/ws`` the WebSocket,
 ``/api/log`` the newest /rosout entries (JSON).
 
 WebSocket, server to browser: text frames are JSON objects with a ``type``: ``graph``
-(``svg``, ``topics``), ``log`` (``entries``: time, level, node, msg), ``topic`` (``topic``,
+(``svg``, ``topics``: the visible ones and their types, ``pictures``: the picture
+topics), ``log`` (``entries``: time, level, node, msg), ``topic`` (``topic``,
 ``type_name``, ``count``, ``yaml``, ``numbers``: each numeric field by its dotted path);
 binary frames are pictures: a 4-byte big-endian length, that many bytes of JSON (``topic``,
 ``mime``, ``stamp``, ``count``), then the image file's bytes. Browser to server: JSON
@@ -194,8 +195,8 @@ class Hub:
         self._sent_at: dict[str, float] = {}
 
     # Called on the ROS thread: hand over, nothing more.
-    def graph_from_ros(self, svg: str, topics: dict[str, list[str]]) -> None:
-        self.loop.call_soon_threadsafe(self._graph, svg, topics)
+    def graph_from_ros(self, svg: str, topics: dict[str, list[str]], pictures: list[str]) -> None:
+        self.loop.call_soon_threadsafe(self._graph, svg, topics, pictures)
 
     def feed_from_ros(self, feed: Feed) -> None:
         self.loop.call_soon_threadsafe(self._feed, feed)
@@ -204,12 +205,14 @@ class Hub:
         self.loop.call_soon_threadsafe(self._log, feed)
 
     # On the event loop.
-    def _graph(self, svg: str, topics: dict[str, list[str]]) -> None:
+    def _graph(self, svg: str, topics: dict[str, list[str]], pictures: list[str]) -> None:
         self.graph_svg, self.topic_types = svg, topics
-        self.graph_payload = json.dumps({"type": "graph", "svg": svg, "topics": topics})
+        self.graph_payload = json.dumps(
+            {"type": "graph", "svg": svg, "topics": topics, "pictures": pictures}
+        )
         for tab in self.tabs:
             tab.offer("graph", self.graph_payload)
-        for topic in [t for t in self.pictures if t not in topics]:  # gone: forget its frame
+        for topic in [t for t in self.pictures if t not in pictures]:  # gone: forget its frame
             del self.pictures[topic]
 
     def _log(self, feed: LogFeed) -> None:

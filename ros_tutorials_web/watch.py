@@ -106,7 +106,7 @@ class Watcher(Node):
 
     def __init__(
         self,
-        on_graph: Callable[[str, dict[str, list[str]]], None],
+        on_graph: Callable[[str, dict[str, list[str]], list[str]], None],
         on_feed: Callable[[Feed], None],
         on_log: Callable[[LogFeed], None],
     ) -> None:
@@ -161,7 +161,8 @@ class Watcher(Node):
         self._follow(self.images, images, types, lambda name: IMAGE_TYPE)
         self._follow(self.topics, set(self.wanted), types, lambda name: types[name][0])
         if graph:
-            self._draw(self._graph.snapshot())
+            pictures = sorted(name for name, kinds in types.items() if IMAGE_TYPE in kinds)
+            self._draw(self._graph.snapshot(), pictures)
 
     def _follow(
         self,
@@ -198,7 +199,9 @@ class Watcher(Node):
             for p in self.get_publishers_info_by_topic(topic)
         }
 
-    def _draw(self, snapshot: Snapshot) -> None:
+    def _draw(self, snapshot: Snapshot, pictures: list[str]) -> None:
+        """The graph picture, the visible topics and the picture topics (hidden ones too:
+        turtlesim's canvas is), passed on when one of them changed."""
         own = self.get_fully_qualified_name()
         snapshot.nodes = [name for name in snapshot.nodes if name != own]
         for info in snapshot.topics.values():  # the viewer's own subscriptions: not shown
@@ -206,8 +209,8 @@ class Watcher(Node):
             info.publishers = [e for e in info.publishers if e.node != own]
         model = model_from_snapshot(snapshot)
         topics = {name: info.types for name, info in sorted(snapshot.topics.items())}
-        key = (sorted(model.vertices), model.edges, topics)
+        key = (sorted(model.vertices), model.edges, topics, pictures)
         if key == self._shown:
             return
         self._shown = key
-        self._on_graph(to_svg(layout(model, monospace_measure())), topics)
+        self._on_graph(to_svg(layout(model, monospace_measure())), topics, pictures)

@@ -96,9 +96,9 @@ async function drawPicture(picture) {
   picture.busy = false;
 }
 
-function forgetPictures(topics) {
+function forgetPictures(pictures) {
   for (const topic of Object.keys(state.pictures)) {
-    if (!(topic in topics)) {
+    if (!pictures.includes(topic)) {
       state.pictures[topic].canvas.parentElement.remove();
       delete state.pictures[topic];
       delete state.frames[topic];
@@ -111,7 +111,7 @@ function forgetPictures(topics) {
 
 function showGraph(message) {
   $("graph").innerHTML = message.svg; // made by the viewer from names it escaped
-  forgetPictures(message.topics);
+  forgetPictures(message.pictures);
   const select = $("topic-select");
   const chosen = select.value;
   select.replaceChildren(new Option("choose a topic\u2026", ""));
