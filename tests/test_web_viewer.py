@@ -224,6 +224,26 @@ class TestViewer:
 
         with_tab(viewer, check)
 
+    def test_graph_follows_nodes(self, viewer: str, node_process) -> None:
+        def graph(shown: bool) -> Callable[[Any], Any]:
+            def check(item: Any) -> Any:
+                is_graph = isinstance(item, dict) and item.get("type") == "graph"
+                return item if is_graph and (">/talker</text>" in item["svg"]) == shown else None
+
+            return check
+
+        async def check(tab: Tab) -> None:
+            await tab.until(graph(False), "the graph without /talker")
+            talker = await asyncio.to_thread(
+                node_process, str(BIN / "ros2"), "run", "ros_tutorials_topic", "talker"
+            )
+            found = await tab.until(graph(True), "the graph with /talker")
+            assert "/chatter" in found["topics"]
+            assert await asyncio.to_thread(talker.interrupt) == 0
+            await tab.until(graph(False), "the graph without /talker again")
+
+        with_tab(viewer, check)
+
     def test_bad_messages_and_a_tab_gone_mid_stream(self, viewer: str) -> None:
         async def rude() -> None:
             async with aiohttp.ClientSession() as client:
