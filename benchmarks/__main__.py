@@ -40,7 +40,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "graph": [graph.lists, graph.picture],
     "daemon": [daemon.startup, daemon.lists],
     "turtlesim": [turtlesim.update_rate],
-    "web": [web.viewer_figures],
+    "web": [web.viewer_figures, web.load],
 }
 
 
