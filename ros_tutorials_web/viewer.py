@@ -112,7 +112,8 @@ def listen(host: str, port: int | None) -> socket.socket:
         elif error.errno == errno.EACCES:
             reason = "needs root privileges (ports below 1024); choose one from 1024 up"
         elif error.errno == errno.EADDRNOTAVAIL:
-            reason = f"cannot be used: {host} is not an address of this machine"
+            message = f"error: cannot listen on {host}: not an address of this machine"
+            raise SystemExit(message) from None
         else:
             reason = f"cannot be used: {error.strerror}"
         raise SystemExit(f"error: port {wanted} on {host} {reason}") from None

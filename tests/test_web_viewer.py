@@ -288,6 +288,13 @@ class TestBadInput:
             "choose another with --port (0: any free)"
         )
 
+    def test_address_not_of_this_machine(self) -> None:
+        result = run("viewer", "--host", "192.0.2.1", "--port", "0")  # TEST-NET-1: never ours
+        assert result.returncode == 1
+        assert result.stderr == (
+            "error: cannot listen on 192.0.2.1: not an address of this machine\n"
+        )
+
     def test_unknown_host(self) -> None:
         result = run("viewer", "--host", "no-such-host.invalid", "--port", "0")
         assert result.returncode == 1
