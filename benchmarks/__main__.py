@@ -1,7 +1,7 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
 python -m benchmarks [GROUP ...]
-    groups: launch service topic rate memory setup bag graph daemon turtlesim (default: all)
+    groups: launch service topic rate memory setup bag graph daemon turtlesim web (default: all)
 """
 
 from __future__ import annotations
@@ -14,7 +14,18 @@ import signal
 import traceback
 from collections.abc import Callable
 
-from benchmarks import bag, daemon, graph, launch, memory, service, setup_time, topic, turtlesim
+from benchmarks import (
+    bag,
+    daemon,
+    graph,
+    launch,
+    memory,
+    service,
+    setup_time,
+    topic,
+    turtlesim,
+    web,
+)
 from benchmarks.common import Row, print_table, private_domain
 
 # Each group is a list of steps; a step that fails costs only its own rows.
@@ -29,6 +40,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "graph": [graph.lists, graph.picture],
     "daemon": [daemon.startup, daemon.lists],
     "turtlesim": [turtlesim.update_rate],
+    "web": [web.viewer_figures, web.load],
 }
 
 

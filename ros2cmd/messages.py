@@ -318,9 +318,11 @@ def _plain(
     if isinstance(value, (list, tuple, array.array)) or type(value).__name__ == "ndarray":
         if no_arr and slot_type is not None:
             return _array_summary(value, slot_type)
-        items = [_plain(item, None, truncate_length, no_arr, no_str) for item in value]
-        if truncate_length is not None and len(items) > truncate_length:
-            return [*items[:truncate_length], "..."]
+        # Only what is shown is converted: a 10 MB image's data is not walked to show 128 items.
+        shown = value if truncate_length is None else value[:truncate_length]
+        items = [_plain(item, None, truncate_length, no_arr, no_str) for item in shown]
+        if truncate_length is not None and len(value) > truncate_length:
+            return [*items, "..."]
         return items
     if hasattr(value, "get_fields_and_field_types"):
         return message_to_ordered(

@@ -13,8 +13,11 @@ and tail, turned to its heading, with a different shell colour per turtle.
 from __future__ import annotations
 
 import functools
+import io
 import math
 import os
+import struct
+import zlib
 from collections.abc import Iterable, Sequence
 
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")  # pygame greets on import otherwise
@@ -75,6 +78,7 @@ class Canvas:
         # plain copy plus the turtles, not a 500 x 500 alpha blend.
         self.base = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
         self._base_background: tuple[int, ...] | None = None
+        self._frame: pygame.Surface | None = None  # encode()'s, made on first use
         self.clear()
         self.screen: pygame.Surface | None = None
         if window:
@@ -147,10 +151,44 @@ class Canvas:
         self.compose(frame, background, turtles)
         pygame.image.save(frame, path)
 
+    def encode(self, kind: str, background: Sequence[int], turtles: Iterable[Turtle]) -> bytes:
+        """The canvas as it looks now, as the bytes of a 'png' or 'jpeg' file."""
+        if self._frame is None:
+            self._frame = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))
+        self.compose(self._frame, background, turtles)
+        if kind == "png":
+            return png_bytes(self._frame)
+        encoded = io.BytesIO()
+        pygame.image.save(self._frame, encoded, f"canvas.{kind}")
+        return encoded.getvalue()
+
     def close(self) -> None:
         if self.screen is not None:
             pygame.display.quit()
             self.screen = None
+
+
+def png_bytes(surface: pygame.Surface) -> bytes:
+    """A PNG file of the surface, with zlib's fastest level: a third of the CPU of pygame's
+    PNG (2 ms instead of 6 for the canvas), for files about twice as large (5-20 kB)."""
+    width, height = surface.get_size()
+    pixels = memoryview(pygame.image.tobytes(surface, "RGB"))
+    stride = width * 3
+    # Each row starts with its filter type, 0: none (the flat background compresses anyway).
+    rows = b"".join(b"\0" + pixels[y * stride : (y + 1) * stride] for y in range(height))
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (
+            struct.pack("!I", len(data)) + kind + data + struct.pack("!I", zlib.crc32(kind + data))
+        )
+
+    header = struct.pack("!IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", header)
+        + chunk(b"IDAT", zlib.compress(rows, 1))
+        + chunk(b"IEND", b"")
+    )
 
 
 def _ellipse(rx: float, ry: float, cx: float = 0.0, points: int = 24) -> list[tuple[float, float]]:

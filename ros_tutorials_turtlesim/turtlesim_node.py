@@ -12,7 +12,11 @@ serves ``NAME/set_pen``, ``NAME/teleport_absolute``, ``NAME/teleport_relative`` 
 Parameters ``background_r/g/b`` (changeable while running) and ``holonomic``.
 
 Added here: ``headless``, ``snapshot_path`` and ``snapshot_on_exit`` parameters, and
-``~/snapshot`` (std_srvs/srv/Trigger) or SIGUSR1 to write the canvas to a PNG while running.
+``~/snapshot`` (std_srvs/srv/Trigger) or SIGUSR1 to write the canvas to a PNG while running;
+and ``~/_canvas/compressed`` (sensor_msgs/msg/CompressedImage, PNG): the canvas as drawn, at
+most 20 frames a second and only when it changed, only while someone subscribes (the web
+viewer, ``ros2 run ros_tutorials_web viewer``, shows it in a browser). Its name is hidden, so
+the tools list what the tutorials show.
 The simulation (``simulation.py``) is apart from the drawing (``canvas.py``).
 """
 
@@ -41,6 +45,7 @@ from rclpy.parameter import Parameter
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from rclpy.signals import SignalHandlerOptions
 from rclpy.task import Future
+from sensor_msgs.msg import CompressedImage
 from std_srvs.srv import Empty, Trigger
 from turtlesim.action import RotateAbsolute
 from turtlesim.msg import Color, Pose
@@ -61,6 +66,8 @@ from ros_tutorials_turtlesim.simulation import (
 DEFAULT_BACKGROUND = (69, 86, 255)  # 0x45, 0x56, 0xff
 FLOAT32_MAX = 3.4028234663852886e38
 REPAINT_HZ = 30
+CANVAS_HZ = 20  # the most frames a second on ~/_canvas/compressed
+CANVAS_FORMAT = "png"  # lossless: a thin trail stays sharp (2 ms to encode, 5-20 kB)
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
 LONGEST_ENDPOINT = "rotate_absolute/_action/get_result"
@@ -69,6 +76,11 @@ LONGEST_ENDPOINT = "rotate_absolute/_action/get_result"
 def topic_qos() -> QoSProfile:
     """turtlesim's QoS for cmd_vel, pose and color_sensor: keep last 7, reliable."""
     return QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)
+
+
+def canvas_qos() -> QoSProfile:
+    """~/_canvas/compressed: reliable, and only the newest frame is kept for a slow reader."""
+    return QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
 
 
 class WindowClosed(Exception):
@@ -124,6 +136,9 @@ class TurtlesimNode(Node):
             False,
             ParameterDescriptor(description="Write the canvas to snapshot_path when the node ends"),
         )
+        # What is drawn changed: counted, so the window and the canvas topic each know
+        # whether they have shown the latest.
+        self._changes = 1
         self.add_on_set_parameters_callback(self._check_parameters)
         self.add_post_set_parameters_callback(self._parameters_set)
         self._parameters_set([])
@@ -133,8 +148,11 @@ class TurtlesimNode(Node):
         self._id_counter = 0  # for turtleN names
         self._spawned = 0  # for shell colours
         self._retired: list[TurtleEntry] = []  # killed, their action servers still to go
-        self._dirty = True  # the window needs a repaint
+        self._painted = 0  # the window shows self._changes as it was then
         self._last_paint = -math.inf
+        self._published = 0  # the canvas topic's last frame, likewise
+        self._last_frame = -math.inf
+        self._canvas_subscribers = 0
         self._snapshot_requested = threading.Event()
         self._lock = threading.RLock()  # SIGUSR1 and tests may ask for a PNG from elsewhere
 
@@ -143,6 +161,13 @@ class TurtlesimNode(Node):
         self.create_service(Spawn, "spawn", self._on_spawn)
         self.create_service(Kill, "kill", self._on_kill)
         self.create_service(Trigger, "~/snapshot", self._on_snapshot)
+        # The canvas as a picture, the way ROS 2 nodes publish pictures (image_transport's
+        # "compressed" topic): drawn and encoded only while someone subscribes. A hidden name
+        # ('_'): `ros2 topic list`, `node info` and `bag record -a` show what the tutorials
+        # show (`--include-hidden-topics` lists it).
+        self.canvas_publisher = self.create_publisher(
+            CompressedImage, "~/_canvas/compressed", canvas_qos()
+        )
 
         self.get_logger().info(
             f"Starting turtlesim with node name {self.get_fully_qualified_name()}"
@@ -190,7 +215,7 @@ class TurtlesimNode(Node):
         # Read here once, not every update: 62.5 updates/s times every turtle's colour sensor.
         self.background = tuple(self.get_parameter(f"background_{c}").value for c in "rgb")
         self.holonomic = self.get_parameter("holonomic").value
-        self._dirty = True
+        self._changes += 1
 
     def request_snapshot(self) -> None:
         """Write a PNG at the next update (safe from a signal handler)."""
@@ -258,7 +283,7 @@ class TurtlesimNode(Node):
                 self.canvas.draw_strokes(strokes)
                 self._publish(entry)
                 if strokes or old != (turtle.x, turtle.y, turtle.theta):
-                    self._dirty = True
+                    self._changes += 1
             self._retire_action_servers(now)
             if self._snapshot_requested.is_set():
                 self._snapshot_requested.clear()
@@ -268,9 +293,27 @@ class TurtlesimNode(Node):
                     raise WindowClosed()
                 # Repaint what changed, at most REPAINT_HZ times a second: the simulation
                 # keeps its 16 ms steps even when the display is slow.
-                if self._dirty and now - self._last_paint >= 1 / REPAINT_HZ:
+                if self._painted != self._changes and now - self._last_paint >= 1 / REPAINT_HZ:
                     self.canvas.show(self.background, [e.turtle for e in self.turtles.values()])
-                    self._dirty, self._last_paint = False, now
+                    self._painted, self._last_paint = self._changes, now
+            # Half an update early: frames then come every 3 updates (48 ms), not 4.
+            if now - self._last_frame >= 1 / CANVAS_HZ - UPDATE_PERIOD / 2:
+                self._publish_canvas(now)
+
+    def _publish_canvas(self, now: float) -> None:
+        """A frame on ~/_canvas/compressed if the canvas changed, or a subscriber joined."""
+        subscribers = self.canvas_publisher.get_subscription_count()
+        joined = subscribers > self._canvas_subscribers
+        self._canvas_subscribers = subscribers
+        if not subscribers or (self._published == self._changes and not joined):
+            return
+        turtles = [entry.turtle for entry in self.turtles.values()]
+        image = CompressedImage(format=CANVAS_FORMAT)
+        image.header.stamp = self.get_clock().now().to_msg()  # when it was drawn
+        image.header.frame_id = self.get_name()
+        image.data = self.canvas.encode(CANVAS_FORMAT, self.background, turtles)
+        self.canvas_publisher.publish(image)
+        self._published, self._last_frame = self._changes, now
 
     def _publish(self, entry: TurtleEntry) -> None:
         turtle = entry.turtle
@@ -312,7 +355,7 @@ class TurtlesimNode(Node):
                 raise
             self._spawned += 1
             self.turtles[name] = entry
-            self._dirty = True
+            self._changes += 1
         self.get_logger().info(
             f"Spawning turtle [{name}] at x=[{x:f}], y=[{y:f}], theta=[{theta:f}]"
         )
@@ -383,7 +426,7 @@ class TurtlesimNode(Node):
                 self._destroy(endpoint)
             # The action server goes once the goal it just ended has sent its result.
             self._retired.append(entry)
-            self._dirty = True
+            self._changes += 1
         return True
 
     def _destroy(self, endpoint) -> None:
@@ -433,7 +476,7 @@ class TurtlesimNode(Node):
         self.get_logger().info("Clearing turtlesim.")
         with self._lock:
             self.canvas.clear()
-            self._dirty = True
+            self._changes += 1
         return response
 
     def _on_reset(self, _request: Empty.Request, response: Empty.Response) -> Empty.Response:

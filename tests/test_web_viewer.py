@@ -1,0 +1,361 @@
+"""The web viewer (`ros2 run ros_tutorials_web viewer`) against a real headless turtlesim:
+its HTTP endpoints and its WebSocket protocol from Python (aiohttp's client), its bad input,
+and the page itself in a headless browser where one is installed (Debian's chromium with
+chromedriver, driven by selenium); skipped with the reason where there is none.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import io
+import json
+import re
+import shutil
+import socket
+import struct
+import time
+from collections.abc import Callable
+from typing import Any
+
+import aiohttp
+import pygame
+import pytest
+from helpers import BIN, TIMEOUT, ok, run
+
+from ros_tutorials_turtlesim.canvas import png_bytes
+from ros_tutorials_turtlesim.simulation import DEFAULT_PEN
+
+HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
+CANVAS = "/turtlesim/_canvas/compressed"
+DRIVE = ("{linear: {x: 2.0}, angular: {z: 1.8}}", "{linear: {x: 2.0}, angular: {z: -1.8}}")
+
+
+def drive(twist: str = DRIVE[0]) -> None:
+    """The learner's command: the turtle drives (and draws) for a second."""
+    ok("ros2", "topic", "pub", "--once", "/turtle1/cmd_vel", "geometry_msgs/msg/Twist", twist)
+
+
+def trail_pixels(png: bytes) -> int:
+    """How many pixels of the picture have the pen's colour."""
+    image = pygame.image.load(io.BytesIO(png), "canvas.png")
+    raw = pygame.image.tobytes(image, "RGB")
+    pen = bytes(DEFAULT_PEN)
+    return sum(raw[i : i + 3] == pen for i in range(0, len(raw), 3))
+
+
+def picture(data: bytes) -> tuple[dict[str, Any], bytes]:
+    """A binary frame of the viewer: its JSON header and the image file."""
+    (length,) = struct.unpack("!I", data[:4])
+    return json.loads(data[4 : 4 + length]), data[4 + length :]
+
+
+class Tab:
+    """A WebSocket to the viewer, as a browser tab holds one; messages read on demand."""
+
+    def __init__(self, ws: aiohttp.ClientWebSocketResponse) -> None:
+        self.ws = ws
+
+    async def until(self, found: Callable[[Any], Any], what: str, timeout: float = TIMEOUT):
+        """Read messages (JSON dicts, or (header, image) for pictures) until found() gives
+        something truthy; return it."""
+        deadline = time.monotonic() + timeout
+        while True:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                pytest.fail(f"{what}: not seen from the viewer within {timeout:.0f} s")
+            try:
+                message = await self.ws.receive(timeout=remaining)
+            except asyncio.TimeoutError:
+                continue
+            if message.type == aiohttp.WSMsgType.BINARY:
+                result = found(picture(message.data))
+            elif message.type == aiohttp.WSMsgType.TEXT:
+                result = found(json.loads(message.data))
+            else:
+                pytest.fail(f"{what}: the viewer closed the WebSocket ({message.type})")
+            if result:
+                return result
+
+
+def with_tab(url: str, test: Callable[[Tab], Any]) -> Any:
+    """Run the async test(tab) with a WebSocket open to the viewer."""
+
+    async def session() -> Any:
+        async with aiohttp.ClientSession() as client, client.ws_connect(url + "ws") as ws:
+            return await test(Tab(ws))
+
+    return asyncio.run(session())
+
+
+def canvas_frame(item: Any) -> tuple[dict, bytes] | None:
+    return item if isinstance(item, tuple) and item[0]["topic"] == CANVAS else None
+
+
+@pytest.fixture(scope="class")
+def viewer(class_own_domain, class_node_process) -> str:
+    """A headless turtlesim and the viewer (on a free port) in a domain of their own; the
+    viewer's address, as it prints it."""
+    sim = class_node_process(str(BIN / "ros2"), "run", "turtlesim", "turtlesim_node", env=HEADLESS)
+    sim.wait_for_text("Spawning turtle [turtle1]")
+    process = class_node_process(
+        str(BIN / "ros2"), "run", "ros_tutorials_web", "viewer", "--port", "0"
+    )
+    line = process.wait_for_text("in a browser")[-1]
+    found = re.search(r"Open (http://127\.0\.0\.1:\d+/) in a browser", line)
+    assert found, line
+    return found.group(1)
+
+
+def test_canvas_png_is_exact() -> None:
+    """turtlesim's own PNG writer (fast, lossless): another reader gets every pixel back."""
+    surface = pygame.Surface((37, 23))
+    surface.fill((69, 86, 255))
+    pygame.draw.line(surface, DEFAULT_PEN, (0, 0), (36, 22), 3)
+    surface.set_at((36, 0), (1, 2, 3))
+    image = pygame.image.load(io.BytesIO(png_bytes(surface)), "canvas.png")
+    assert image.get_size() == (37, 23)
+    assert pygame.image.tobytes(image, "RGB") == pygame.image.tobytes(surface, "RGB")
+
+
+class TestViewer:
+    """One turtlesim and one viewer for the class; each test drives or asks, none stops them."""
+
+    def test_page_and_endpoints(self, viewer: str) -> None:
+        async def check() -> None:
+            async with aiohttp.ClientSession() as client:
+                async with client.get(viewer) as page:
+                    assert page.status == 200
+                    text = await page.text()
+                    assert 'src="static/viewer.js"' in text and "http" not in text.split("-->")[1]
+                for name in ("viewer.js", "viewer.css"):
+                    async with client.get(viewer + "static/" + name) as file:
+                        assert file.status == 200
+                deadline = time.monotonic() + TIMEOUT
+                while True:  # the graph is looked at every second
+                    async with client.get(viewer + "api/topics") as answer:
+                        topics = await answer.json()
+                    if "/turtle1/pose" in topics or time.monotonic() > deadline:
+                        break
+                    await asyncio.sleep(0.2)
+                assert topics["/turtle1/pose"] == ["turtlesim/msg/Pose"]
+                assert CANVAS not in topics  # hidden, as `ros2 topic list` hides it
+                async with client.get(viewer + "api/graph.svg") as answer:
+                    svg = await answer.text()
+                    assert answer.content_type == "image/svg+xml"
+                assert svg.startswith("<svg") and ">/turtlesim</text>" in svg
+                assert "web_viewer" not in svg  # the viewer leaves itself out, as rqt_graph
+                async with client.get(viewer + "api/log") as answer:
+                    log = await answer.json()
+                assert any(e["msg"].startswith("Spawning turtle [turtle1]") for e in log)
+                async with client.get(viewer + "no/such/page") as answer:
+                    assert answer.status == 404
+
+        asyncio.run(check())
+
+    def test_canvas_frames_follow_the_turtle(self, viewer: str) -> None:
+        async def check(tab: Tab) -> None:
+            header, first = await tab.until(canvas_frame, "a first canvas frame")
+            assert header["mime"] == "image/png"
+            assert pygame.image.load(io.BytesIO(first), "c.png").get_size() == (500, 500)
+            before = trail_pixels(first)
+            await asyncio.to_thread(drive)
+
+            def more_trail(item: Any) -> Any:
+                frame = canvas_frame(item)
+                return frame if frame and trail_pixels(frame[1]) > before + 100 else None
+
+            later, _ = await tab.until(more_trail, "a frame with the new trail")
+            assert later["count"] > header["count"]
+            assert later["stamp"] > header["stamp"]
+
+        with_tab(viewer, check)
+
+    def test_rosout_entries_arrive(self, viewer: str) -> None:
+        def spawned(name: str) -> Callable[[Any], bool]:
+            return lambda item: (
+                isinstance(item, dict)
+                and any(
+                    entry["msg"].startswith(f"Spawning turtle [{name}]")
+                    and entry["level"] == "INFO"
+                    for entry in item.get("entries", [])
+                )
+            )
+
+        async def check(tab: Tab) -> None:
+            await tab.until(spawned("turtle1"), "turtlesim's first lines (history)")
+            await asyncio.to_thread(
+                ok,
+                "ros2",
+                "service",
+                "call",
+                "/spawn",
+                "turtlesim/srv/Spawn",
+                "{x: 2.0, y: 2.0, name: 'log_probe'}",
+            )
+            await tab.until(spawned("log_probe"), "the line about the new turtle")
+
+        with_tab(viewer, check)
+
+    def test_topic_values_arrive(self, viewer: str) -> None:
+        def pose(item: Any) -> Any:
+            is_topic = isinstance(item, dict) and item.get("type") == "topic"
+            return item if is_topic and item["topic"] == "/turtle1/pose" else None
+
+        async def check(tab: Tab) -> None:
+            await tab.ws.send_str(json.dumps({"watch": "/turtle1/pose"}))
+            first = await tab.until(pose, "a /turtle1/pose message")
+            assert first["type_name"] == "turtlesim/msg/Pose"
+            assert set(first["numbers"]) == {
+                "x",
+                "y",
+                "theta",
+                "linear_velocity",
+                "angular_velocity",
+            }
+            assert first["yaml"].startswith("x: ")
+            await asyncio.to_thread(drive, DRIVE[1])
+            moving = await tab.until(
+                lambda item: (
+                    (found := pose(item)) and found["numbers"]["linear_velocity"] > 0 and found
+                ),
+                "a pose of the moving turtle",
+            )
+            assert moving["count"] > first["count"]
+
+        with_tab(viewer, check)
+
+    def test_graph_follows_nodes(self, viewer: str, node_process) -> None:
+        def graph(shown: bool) -> Callable[[Any], Any]:
+            def check(item: Any) -> Any:
+                is_graph = isinstance(item, dict) and item.get("type") == "graph"
+                return item if is_graph and (">/talker</text>" in item["svg"]) == shown else None
+
+            return check
+
+        async def check(tab: Tab) -> None:
+            await tab.until(graph(False), "the graph without /talker")
+            talker = await asyncio.to_thread(
+                node_process, str(BIN / "ros2"), "run", "ros_tutorials_topic", "talker"
+            )
+            found = await tab.until(graph(True), "the graph with /talker")
+            assert "/chatter" in found["topics"]
+            assert await asyncio.to_thread(talker.interrupt) == 0
+            await tab.until(graph(False), "the graph without /talker again")
+
+        with_tab(viewer, check)
+
+    def test_bad_messages_and_a_tab_gone_mid_stream(self, viewer: str) -> None:
+        async def rude() -> None:
+            async with aiohttp.ClientSession() as client:
+                ws = await client.ws_connect(viewer + "ws")
+                for junk in ("not json", '{"watch": 5}', '{"watch": "no_slash"}', "[]", "{}"):
+                    await ws.send_str(junk)
+                await ws.send_bytes(b"\x00" * 1000)
+                await ws.send_str(json.dumps({"watch": "/turtle1/pose"}))
+                await ws.receive(timeout=TIMEOUT)
+                # Gone without a goodbye, in the middle of the stream.
+                assert ws._response.connection is not None
+                ws._response.connection.transport.abort()
+
+        asyncio.run(rude())
+
+        async def still_serves(tab: Tab) -> None:
+            await tab.ws.send_str(json.dumps({"watch": "/turtle1/pose"}))
+            await tab.until(
+                lambda item: isinstance(item, dict) and item.get("type") == "topic",
+                "a message after the other tab went",
+            )
+
+        with_tab(viewer, still_serves)
+
+
+class TestBadInput:
+    def test_port_out_of_range(self) -> None:
+        result = run("viewer", "--port", "70000")
+        assert result.returncode == 2, result.stderr
+        assert result.stderr.splitlines()[-1] == (
+            "viewer: error: argument --port: 70000 is not a port number (0 to 65535)"
+        )
+        assert "Traceback" not in result.stderr
+
+    def test_port_taken(self) -> None:
+        with socket.create_server(("127.0.0.1", 0)) as taken:
+            port = taken.getsockname()[1]
+            result = run("ros2", "run", "ros_tutorials_web", "viewer", "--port", str(port))
+        assert result.returncode == 1, result.stderr
+        assert result.stderr.strip() == (
+            f"error: port {port} on 127.0.0.1 is in use by another program; "
+            "choose another with --port (0: any free)"
+        )
+
+    def test_address_not_of_this_machine(self) -> None:
+        result = run("viewer", "--host", "192.0.2.1", "--port", "0")  # TEST-NET-1: never ours
+        assert result.returncode == 1
+        assert result.stderr == (
+            "error: cannot listen on 192.0.2.1: not an address of this machine\n"
+        )
+
+    def test_unknown_host(self) -> None:
+        result = run("viewer", "--host", "no-such-host.invalid", "--port", "0")
+        assert result.returncode == 1
+        line = result.stderr.strip()
+        assert line.startswith("error: cannot listen on 'no-such-host.invalid': ")
+        assert "\n" not in line
+
+
+def _browser() -> tuple[str, str]:
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    driver = shutil.which("chromedriver")
+    if not chromium or not driver:
+        pytest.skip("no headless browser here: needs Debian's chromium and chromium-driver")
+    return chromium, driver
+
+
+class TestInBrowser:
+    """The page in headless Chromium: the canvas shows the turtle's trail after a pub."""
+
+    def test_canvas_shows_the_trail(self, viewer: str, tmp_path) -> None:
+        chromium, driver_path = _browser()
+        webdriver = pytest.importorskip("selenium.webdriver")
+        from selenium.webdriver.chrome.service import Service
+
+        options = webdriver.ChromeOptions()
+        options.binary_location = chromium
+        for argument in (
+            "--headless=new",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--window-size=1400,1000",
+        ):
+            options.add_argument(argument)
+        browser = webdriver.Chrome(options=options, service=Service(driver_path))
+        # The pen's pixels in the canvas the page drew (read back from the page).
+        count_trail = """
+            const [topic, r, g, b] = arguments;
+            const canvas = document.querySelector(`canvas[data-topic="${topic}"]`);
+            if (!canvas || !window.viewerState.frames[topic]) return -1;
+            const box = [0, 0, canvas.width, canvas.height];
+            const data = canvas.getContext("2d").getImageData(...box).data;
+            let n = 0;
+            for (let i = 0; i < data.length; i += 4)
+              if (data[i] === r && data[i + 1] === g && data[i + 2] === b) n++;
+            return n;
+        """
+        try:
+            browser.set_script_timeout(TIMEOUT)
+            browser.get(viewer)
+            deadline = time.monotonic() + TIMEOUT
+            while (before := browser.execute_script(count_trail, CANVAS, *DEFAULT_PEN)) < 0:
+                assert time.monotonic() < deadline, "the page never drew a canvas frame"
+                time.sleep(0.1)
+            drive()
+            deadline = time.monotonic() + TIMEOUT
+            while (
+                after := browser.execute_script(count_trail, CANVAS, *DEFAULT_PEN)
+            ) <= before + 100:
+                assert time.monotonic() < deadline, f"no trail drawn: {before} -> {after} pixels"
+                time.sleep(0.1)
+            assert "live" in browser.find_element("id", "status").text
+            browser.save_screenshot(str(tmp_path / "web_viewer.png"))
+        finally:
+            browser.quit()
