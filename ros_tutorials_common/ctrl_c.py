@@ -52,6 +52,7 @@ PACKAGES = frozenset(
         "ros_tutorials_service",
         "ros_tutorials_topic",
         "ros_tutorials_turtlesim",
+        "ros_tutorials_web",
     }
 )
 PTH_NAME = "00_ros_tutorials_ctrl_c.pth"  # sorted before every other .pth file
