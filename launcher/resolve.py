@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import shlex
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
@@ -36,7 +37,9 @@ from ros_tutorials_common.bounded import (
     read_params_file,
     read_text,
 )
-from ros_tutorials_common.names import valid_remap_name
+from ros_tutorials_common.names import TOKEN, valid_remap_name
+
+_TOKEN = re.compile(TOKEN)
 
 # How many times in a row a respawning process may fail quickly before we give up.
 DEFAULT_RESPAWN_MAX_RETRIES = 10
@@ -243,7 +246,9 @@ def remap_problem(name: str, side: str) -> str | None:
 
 
 def valid_name(name: str) -> bool:
-    return bool(name) and (name[0].isalpha() or name[0] == "_") and name.replace("_", "a").isalnum()
+    """One part of a ROS name: ASCII letters, digits and _, not starting with a digit (rcl
+    refuses 'pé' and 'nsü', which str.isalnum takes)."""
+    return _TOKEN.fullmatch(name) is not None
 
 
 def _written_in(fmt: str, element: Element) -> bool:

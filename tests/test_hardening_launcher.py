@@ -297,3 +297,19 @@ def test_command_substitution_output_is_bounded(tmp_path):
     done = run_launcher(str(path), "--print", "--allow-code")
     assert done.returncode == 1 and "Traceback" not in done.stderr, done.stderr
     assert f"{path}:2: $(command yes) printed more than 1 MiB" in done.stderr
+
+
+@pytest.mark.parametrize(
+    ("body", "expected"),
+    [
+        (
+            '<group ns="nsü"><node pkg="turtlesim" type="turtlesim_node" name="sim"/></group>',
+            "invalid namespace 'nsü'",
+        ),
+        ('<node pkg="turtlesim" type="turtlesim_node" name="pé"/>', "invalid node name 'pé'"),
+    ],
+)
+def test_non_ascii_names_are_refused_before_anything_starts(tmp_path, body, expected):
+    """rcl takes ASCII letters, digits and _ only; str.isalnum() took 'é' and the node failed
+    at run time with rcl's raw message."""
+    assert expected in refused(ros1_file(tmp_path, body))
