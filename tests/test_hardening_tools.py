@@ -196,3 +196,16 @@ def bounded_wait() -> float:
     from ros_tutorials_common import bounded
 
     return bounded.MAX_INPUT_WAIT
+
+
+@pytest.mark.parametrize("tool_name", [("rosbag", "record"), ("ros2", "bag", "record")])
+def test_bag_record_refuses_a_topic_name_that_can_never_appear(tmp_path, tool_name):
+    """It waited for ever for '/bad topic'."""
+    line = fails(*tool_name, "-o", str(tmp_path / "bag"), "bad topic")
+    assert line.startswith("error: invalid topic name '/bad topic'")
+    assert not (tmp_path / "bag").exists()
+
+
+def test_bag_record_refuses_an_output_name_too_long_for_the_file_system(tmp_path):
+    line = fails("rosbag", "record", "-O", str(tmp_path / ("a" * 5000)), "/chatter")
+    assert "File name too long" in line and "characters)" in line and len(line) < 300

@@ -46,6 +46,7 @@ from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, is_hidden
 from ros2cmd.qos import compatible_qos
 from ros2cmd.typenames import load_type
+from ros_tutorials_common.ros import RCLError
 
 SPIN_PERIOD = 0.05
 FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
@@ -312,7 +313,18 @@ class _StopFlag:
         self.signal_name = signal.Signals(number).name
 
 
+def _check_names(graph: Graph, names: list[str]) -> None:
+    """A name rcl refuses ('bad topic') can never appear: refuse it now instead of waiting."""
+    for name in names:
+        try:
+            graph.node.resolve_topic_name(name)
+        except RCLError as error:
+            reason = str(error).split(", at ")[0].removeprefix("failed to resolve name: ")
+            raise ToolError(f"invalid topic name '{name}': {reason}") from None
+
+
 def record(graph: Graph, options: RecordOptions, output: str | None) -> None:
+    _check_names(graph, [*options.topics, *options.services, *options.exclude_topics])
     stop = _StopFlag()
     writer = BagWriter(output or default_bag_name(), custom_data=options.custom_data)
     node = None

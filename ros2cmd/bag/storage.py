@@ -276,6 +276,12 @@ def default_bag_name() -> str:
     return datetime.datetime.now().strftime("rosbag2_%Y_%m_%d-%H_%M_%S")
 
 
+def _shown(path: Path, most: int = 120) -> str:
+    """A path for an error line: a 5,000-character -O shows its start and its length."""
+    text = str(path)
+    return text if len(text) <= most else f"{text[:most]}... ({len(text)} characters)"
+
+
 class BagWriter:
     """Write one rosbag2 bag: a new folder, its .mcap file and metadata.yaml.
 
@@ -294,12 +300,14 @@ class BagWriter:
     ) -> None:
         self.folder = Path(folder)
         self.custom_data = custom_data
-        if self.folder.exists():
-            raise BagError(f"{self.folder} already exists; not overwriting it (choose another -o)")
         try:
             self.folder.mkdir(parents=True)
-        except OSError as error:
-            raise BagError(f"cannot create {self.folder}: {error.strerror}") from None
+        except FileExistsError:
+            raise BagError(
+                f"{_shown(self.folder)} already exists; not overwriting it (choose another -o)"
+            ) from None
+        except OSError as error:  # a name too long, a folder that cannot be written
+            raise BagError(f"cannot create {_shown(self.folder)}: {error.strerror}") from None
         self.file_info = FileInfo(bag_file_name(self.folder))
         self.path = self.folder / self.file_info.path
         if ros_distro is None:  # rosbag2 takes it from the environment of a sourced ROS
