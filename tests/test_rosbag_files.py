@@ -409,3 +409,37 @@ def test_qos_of_every_metadata_version_reads_as_names() -> None:
     new = [{"history": "keep_last", "reliability": "reliable", "durability": "volatile"}]
     assert storage.qos_profiles_from_yaml(new)[0]["reliability"] == "reliable"
     assert storage.qos_profiles_from_yaml("") == []
+
+
+def _with_metadata(tmp_path: Path, small_bag: Path, change) -> Path:
+    """A copy of small_bag whose metadata.yaml change() rewrote."""
+    folder = tmp_path / f"bag{len(list(tmp_path.iterdir()))}"
+    shutil.copytree(small_bag, folder)
+    path = folder / "metadata.yaml"
+    path.write_text(change(path.read_text()))
+    return folder
+
+
+def test_metadata_of_the_wrong_shape_or_size_is_refused(tmp_path, small_bag) -> None:
+    """metadata.yaml is input like any other: an int where a list goes, a 5,000-character
+    file name, a 20,000-deep list, a 200 MB file gave tracebacks, a RecursionError, 651 MB."""
+    inner = "rosbag2_bagfile_information:\n  storage_identifier: mcap\n"
+    cases = {
+        "topics_with_message_count is not a list": lambda text: re.sub(
+            r"topics_with_message_count:.*?(\n  \w)",
+            r"topics_with_message_count: 7\1",
+            text,
+            flags=re.S,
+        ),
+        "not a file of the bag's folder": lambda text: text.replace(
+            "- small_0.mcap", "- " + "x" * 5000
+        ),
+        "nested more than": lambda text: (
+            inner + "  relative_file_paths: " + "[" * 20000 + "]" * 20000
+        ),
+        "larger than": lambda text: inner + "  custom: '" + "x" * (20 * 1024 * 1024) + "'\n",
+    }
+    for expected, change in cases.items():
+        folder = _with_metadata(tmp_path, small_bag, change)
+        assert expected in fails("rosbag", "info", str(folder)), expected
+    assert expected in fails("ros2", "bag", "play", str(folder))

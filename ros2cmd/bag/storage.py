@@ -53,8 +53,11 @@ from mcap.stream_reader import MAGIC_SIZE, StreamReader, breakup_chunk
 from mcap.writer import CompressionType, Writer
 
 from ros2cmd.errors import ToolError
+from ros_tutorials_common import bounded
 
 METADATA_FILE = "metadata.yaml"
+MAX_METADATA_BYTES = bounded.MAX_INPUT_BYTES  # about 5,000 topics' metadata.yaml
+MAX_FILE_NAME = 255  # bytes in a file name on Linux file systems
 METADATA_VERSION = 9  # what rosbag2 0.26 (Jazzy) writes
 STORAGE_ID = "mcap"
 PROFILE = "ros2"
@@ -507,13 +510,41 @@ def _load_metadata(folder: Path) -> dict[str, Any]:
         mcaps = sorted(folder.glob("*.mcap"))
         hint = f" (to read its MCAP file alone, name it: {mcaps[0]})" if mcaps else ""
         raise BagError(f"{folder} is not a bag: it has no {METADATA_FILE}{hint}")
-    try:
-        data = yaml.safe_load(path.read_text())
-    except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
+    try:  # within bounded's limits on size, aliases and nesting, like every file a user hands us
+        data = bounded.load_yaml(bounded.read_text(path, MAX_METADATA_BYTES), str(path))
+    except bounded.InputError as error:
+        raise BagError(str(error)) from None
+    except yaml.YAMLError as error:
         raise BagError(f"cannot read {path}: {_short(error)}") from None
     if not isinstance(data, dict) or not isinstance(data.get("rosbag2_bagfile_information"), dict):
         raise BagError(f"{path} is not rosbag2 metadata (no rosbag2_bagfile_information)")
-    return data["rosbag2_bagfile_information"]
+    metadata = data["rosbag2_bagfile_information"]
+    problem = _metadata_problem(metadata)
+    if problem:
+        raise BagError(f"{path}: {problem}")
+    return metadata
+
+
+def _metadata_problem(metadata: dict[str, Any]) -> str | None:
+    """What in rosbag2 metadata does not have the shape rosbag2 writes, as one line."""
+    names = metadata.get("relative_file_paths")
+    if names is not None and (
+        not isinstance(names, list) or not all(isinstance(n, str) for n in names)
+    ):
+        return "relative_file_paths is not a list of file names"
+    for name in names or []:
+        if not name or len(name) > MAX_FILE_NAME or "/" in name or name in (".", ".."):
+            shown = name if len(name) <= 60 else f"{name[:60]}... ({len(name)} characters)"
+            return f"relative_file_paths names '{shown}', not a file of the bag's folder"
+    topics = metadata.get("topics_with_message_count")
+    if topics is not None and not (
+        isinstance(topics, list) and all(isinstance(item, dict) for item in topics)
+    ):
+        return "topics_with_message_count is not a list of topics"
+    for key in ("storage_identifier", "ros_distro"):
+        if key in metadata and not isinstance(metadata[key], str | None):
+            return f"{key} is not a string"
+    return None
 
 
 def _short(error: BaseException) -> str:
