@@ -73,6 +73,12 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
 LONGEST_ENDPOINT = "rotate_absolute/_action/get_result"
 
 
+def default_snapshot_name(node: str) -> str:
+    """turtlesim.png for /turtlesim; for another name its own file (/turtlesim1/sim:
+    turtlesim1_sim.png), so that two simulators started together do not write one file."""
+    return "turtlesim.png" if node == "/turtlesim" else node.strip("/").replace("/", "_") + ".png"
+
+
 def topic_qos() -> QoSProfile:
     """turtlesim's QoS for cmd_vel, pose and color_sensor: keep last 7, reliable."""
     return QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)
@@ -128,7 +134,7 @@ class TurtlesimNode(Node):
         )
         self.declare_parameter(
             "snapshot_path",
-            "turtlesim.png",
+            default_snapshot_name(self.get_fully_qualified_name()),
             ParameterDescriptor(description="Where ~/snapshot, SIGUSR1 and the exit write the PNG"),
         )
         self.declare_parameter(

@@ -460,3 +460,19 @@ def test_reset_mid_rotation_aborts_and_the_new_turtle1_takes_goals(sim, probe):
     spin_until(probe.executor, lambda: not sim._retired, what="the old action server to go")
     for theta in (1.0, -1.0):
         assert Rotation(probe, theta).result()[0] == GoalStatus.STATUS_SUCCEEDED
+
+
+def test_each_simulator_has_a_snapshot_file_of_its_own(context):
+    """multisim's two simulators wrote one turtlesim.png; each now names its own."""
+    paths = []
+    for namespace in ("turtlesim1", "turtlesim2"):
+        node = TurtlesimNode(
+            context=context,
+            namespace=namespace,
+            parameter_overrides=[Parameter("headless", value=True)],
+        )
+        try:
+            paths.append(node.get_parameter("snapshot_path").value)
+        finally:
+            node.destroy_node()
+    assert paths == ["turtlesim1_turtlesim.png", "turtlesim2_turtlesim.png"]
