@@ -127,6 +127,7 @@ def hold() -> None:
 # program then ends through ExternalShutdownException even without the KeyboardInterrupt).
 pressed = False
 ros_stopped = False
+terminated = False  # a SIGTERM came (node_main.py): the program ends by it, not by SIGINT
 # A KeyboardInterrupt raised in Python code that rclpy's C++ calls while it converts a value
 # (a message's __init__ inside take_message) comes out of pybind11 as this RuntimeError, the
 # KeyboardInterrupt gone (seen once: turtlesim's mimic stopped by Ctrl-C as a pose arrived).
@@ -153,16 +154,18 @@ def interrupted(error: BaseException | None) -> bool:
 
 
 def _end_as_interrupted() -> None:
-    """End now, killed by SIGINT like an uncaught KeyboardInterrupt (a shell's status 130)."""
+    """End now, killed by SIGINT like an uncaught KeyboardInterrupt (a shell's status 130),
+    or by SIGTERM (143) if that is what stopped the program."""
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()
         except Exception:
             pass
-    _signal.signal(_signal.SIGINT, _signal.SIG_DFL)
-    _signal.pthread_sigmask(_signal.SIG_UNBLOCK, _SIGINT)
-    os.kill(os.getpid(), _signal.SIGINT)
-    os._exit(130)
+    number = _signal.SIGTERM if terminated and not pressed else _signal.SIGINT
+    _signal.signal(number, _signal.SIG_DFL)
+    _signal.pthread_sigmask(_signal.SIG_UNBLOCK, {number})
+    os.kill(os.getpid(), number)
+    os._exit(128 + number)
 
 
 def _quiet_excepthook(kind, value, traceback) -> None:

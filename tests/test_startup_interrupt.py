@@ -298,3 +298,35 @@ def test_a_ctrl_c_that_lands_in_a_del_is_not_lost(node_process):
     program = node_process("-c", code)
     assert program.wait() == 0, program.output
     assert program.lines == ["stopped by Ctrl-C"], program.output
+
+
+def test_sigterm_at_any_instant_of_a_nodes_start_ends_it_by_sigterm_or_normally(ros_domain: int):
+    """A talker sent SIGTERM as it started died by SIGINT in 5 of 20 runs (rclpy's handler shut
+    ROS down under the node being created, and the error ended it as a Ctrl-C would)."""
+
+    def terminate_after(delay: float) -> tuple[int, str]:
+        process = subprocess.Popen(
+            [str(BIN / "talker")],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.PIPE,
+            env=user_env(),
+        )
+        time.sleep(delay)  # where in the start it falls; nothing depends on the exact time
+        process.terminate()
+        try:
+            _, err = process.communicate(timeout=TIMEOUT)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            pytest.fail(f"talker still running {TIMEOUT:.0f} s after SIGTERM at {delay} s")
+        return process.returncode, err.decode(errors="replace")
+
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        runs = list(pool.map(terminate_after, DELAYS))
+    ended = {0, -signal.SIGTERM, 128 + signal.SIGTERM}
+    bad = [
+        f"SIGTERM after {delay} s: status {status}\n{err}"
+        for delay, (status, err) in zip(DELAYS, runs, strict=True)
+        if status not in ended or "Traceback" in err or "Fatal Python error" in err
+    ]
+    assert not bad, f"{len(bad)} of {len(DELAYS)} runs:\n" + "\n".join(bad[:2])

@@ -67,7 +67,28 @@ def ros_args(argv: Sequence[str] | None = None) -> list[str]:
         raise SystemExit(f"error: {problem}")
     apply_dds_defaults()
     _CtrlCOnceRosIsDown.install()
+    _note_sigterm()
     return argv
+
+
+def _note_sigterm() -> None:
+    """Remember a SIGTERM (ctrl_c.terminated), so that a program it stops while starting
+    (rclpy's handler shut ROS down under a node being created: an RCLError) ends by SIGTERM,
+    not by SIGINT as after a Ctrl-C. rclpy.init puts its own handler in front and calls this
+    one after it; where rclpy does not handle SIGTERM, this ends the program as before."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    if signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+        return  # the program's own
+
+    def noted(signum: int, frame: object) -> None:
+        ctrl_c.terminated = True
+        options = get_current_signal_handlers_options()
+        if options not in (SignalHandlerOptions.SIGTERM, SignalHandlerOptions.ALL):
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
+            signal.raise_signal(signal.SIGTERM)
+
+    signal.signal(signal.SIGTERM, noted)
 
 
 class _CtrlCOnceRosIsDown:
