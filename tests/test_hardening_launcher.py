@@ -313,3 +313,26 @@ def test_non_ascii_names_are_refused_before_anything_starts(tmp_path, body, expe
     """rcl takes ASCII letters, digits and _ only; str.isalnum() took 'é' and the node failed
     at run time with rcl's raw message."""
     assert expected in refused(ros1_file(tmp_path, body))
+
+
+def _tenfold(tmp_path: Path, ros2: bool) -> Path:
+    """Ten levels of arguments whose defaults repeat the one before ten times (1.3 KB):
+    10^11 characters at the last level, which took the launcher to 10.8 GB."""
+    declare, use = (
+        ('<let name="a{i}" value="{v}"/>', "$(var a{i})")
+        if ros2
+        else ('<arg name="a{i}" default="{v}"/>', "$(arg a{i})")
+    )
+    lines = [declare.format(i=0, v="x" * 10)]
+    lines += [declare.format(i=i, v=use.format(i=i - 1) * 10) for i in range(1, 11)]
+    exec_attr = "exec" if ros2 else "type"
+    lines.append(
+        f'<node pkg="turtlesim" {exec_attr}="turtlesim_node" name="sim" args="{use.format(i=10)}"/>'
+    )
+    return ros1_file(tmp_path, "\n".join(lines), "bomb.launch.xml" if ros2 else "bomb.launch")
+
+
+@pytest.mark.parametrize("ros2", [False, True], ids=["ros1 arg", "ros2 let"])
+def test_substitutions_that_expand_without_bound_are_refused(tmp_path, ros2):
+    line = refused(_tenfold(tmp_path, ros2))
+    assert "substitutions expand to more than 1,048,576 characters" in line
