@@ -43,8 +43,9 @@ import subprocess
 import sys
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import IO
+from typing import IO, ClassVar
 
 from launcher import LaunchError, guardian
 from launcher.ament import apply_ament_defaults
@@ -147,6 +148,50 @@ class GroupKeeper:
     def close(self) -> None:
         os.close(self._write_end)
         os.waitpid(self.pid, 0)
+
+
+class LogSink:
+    """A child's log file, written as its output comes. When the file cannot be written (the
+    disk is full) it says so once, through ``say``, and the output goes on to the screen:
+    an OSError here ended the thread that relays the child's output (``No space left on
+    device`` in the pump), and nothing of that child reached the screen any more."""
+
+    def __init__(self, path: Path, label: str, say: Callable[[str], None]) -> None:
+        self.path, self.label, self.say = path, label, say
+        self.file: IO[bytes] | None = None
+        try:
+            self.file = path.open("ab")
+        except OSError as error:
+            self._give_up(error)
+
+    def write(self, raw: bytes) -> None:
+        if self.file is None:
+            return
+        try:
+            self.file.write(raw)
+            self.file.flush()
+        except OSError as error:
+            self._give_up(error)
+
+    _told: ClassVar[set[Path]] = set()  # the child's stdout and stderr share a file: say it once
+
+    def _give_up(self, error: OSError) -> None:
+        if self.file is not None:
+            with contextlib.suppress(OSError):
+                self.file.close()
+        self.file = None
+        if self.path in LogSink._told:
+            return
+        LogSink._told.add(self.path)
+        self.say(
+            f"cannot write {self.path} ({error.strerror or error}): {self.label}'s output "
+            "is no longer logged (what goes to the screen still does)"
+        )
+
+    def close(self) -> None:
+        if self.file is not None:
+            with contextlib.suppress(OSError):
+                self.file.close()
 
 
 class Child:
@@ -356,11 +401,11 @@ class Supervisor:
             assert stream is not None
             held: list[str] = []
             cut = False  # the rest of a line already cut on the screen
-            with log_path.open("ab") as log:
+            log = LogSink(log_path, child.spec.label, self.say)
+            try:
                 # readline(limit): a 200 MB line without a newline is read 64 KiB at a time.
                 for raw in iter(lambda: stream.readline(MAX_LINE_BYTES), b""):
                     log.write(raw)
-                    log.flush()
                     if listened and raw.strip():  # an OnProcessIO handler: not blank lines
                         self.lines.put((index, name, raw.decode(errors="replace")))
                     if screen is None:
@@ -376,6 +421,8 @@ class Supervisor:
                     self._relay(child, line, screen, held)
                 if held and screen is not None:
                     self._flush_held(child, screen, held)
+            finally:
+                log.close()
             stream.close()
 
         thread = threading.Thread(target=pump, daemon=True)

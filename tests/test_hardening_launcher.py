@@ -336,3 +336,17 @@ def _tenfold(tmp_path: Path, ros2: bool) -> Path:
 def test_substitutions_that_expand_without_bound_are_refused(tmp_path, ros2):
     line = refused(_tenfold(tmp_path, ros2))
     assert "substitutions expand to more than 1,048,576 characters" in line
+
+
+def test_a_log_file_that_cannot_be_written_is_said_once_and_output_goes_on():
+    """A full disk (/dev/full: every write fails with ENOSPC) ended the thread that relays a
+    child's output to the screen; now the log says so once and the relay carries on."""
+    from launcher.supervise import LogSink
+
+    said: list[str] = []
+    sinks = [LogSink(Path("/dev/full"), "ns1/talker", said.append) for _ in range(2)]
+    for sink in sinks:  # stdout's and stderr's: one file, one message
+        for _ in range(3):
+            sink.write(b"hello world\n" * 1000)
+        sink.close()
+    assert len(said) == 1 and "No space left on device" in said[0] and "ns1/talker" in said[0]
