@@ -67,9 +67,14 @@ def level_command(graph: Graph, node: str | None, level: str | None) -> None:
     if node is None:
         graph.settle()
         services = graph.service_types()
-        for full_name in graph.node_names():
-            if f"{full_name}/{GET}" in services:
-                print(f"{full_name}: {_described(get_level(graph, full_name))}")
+        serving = [name for name in graph.node_names() if f"{name}/{GET}" in services]
+        if not serving:
+            raise ToolError(
+                f"no running node serves {GET}: a node does when created with "
+                "enable_logger_service=True (the lessons' talker and listener are)"
+            )
+        for full_name in serving:
+            print(f"{full_name}: {_described(get_level(graph, full_name))}")
         return
     if level is not None:
         set_level(graph, node, level)

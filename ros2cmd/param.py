@@ -24,6 +24,7 @@ types each value from its text, so a quoted ``'5'`` is loaded as the integer 5.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import re
 import sys
@@ -99,16 +100,55 @@ def name_matches(key: str, node: str) -> bool:
 def _ask(graph: Graph, node: str, call: Callable[[AsyncParameterClient], Future]) -> Any:
     """Wait for the node and its parameter services, make one call, wait for its answer."""
     node = graph.wait_for_node(node)  # "unknown node '/x'" if it never appears
-    clients = _clients.setdefault(graph, {})
-    if node not in clients:
-        clients[node] = AsyncParameterClient(graph.node, node)
-    client = clients[node]
+    client = _client(graph, node)
     graph.wait_for(
         client.services_are_ready, f"node '{node}' does not answer: no parameter services"
     )
     future = call(client)
     graph.wait_for(future.done, f"node '{node}' does not answer")
     return future.result()
+
+
+def _client(graph: Graph, node: str) -> AsyncParameterClient:
+    clients = _clients.setdefault(graph, {})
+    if node not in clients:
+        clients[node] = AsyncParameterClient(graph.node, node)
+    return clients[node]
+
+
+def names_of_each(
+    graph: Graph, nodes: list[str], prefixes: list[str] | None = None
+) -> tuple[dict[str, list[str]], list[str]]:
+    """Each node's parameter names, asked of all the nodes at once: ({node: names} of those
+    that answered within --timeout, [those that did not]). One slow or stuck node costs one
+    wait, and the others' answers are kept (a stuck node made `rosparam list` print nothing)."""
+    clients = {node: _client(graph, node) for node in nodes}
+    futures: dict[str, Future] = {}
+
+    def all_answered() -> bool:
+        for node, client in clients.items():
+            if node not in futures and client.services_are_ready():
+                futures[node] = client.list_parameters(prefixes=prefixes)
+        return len(futures) == len(clients) and all(f.done() for f in futures.values())
+
+    with contextlib.suppress(ToolError):  # after --timeout: what did answer
+        graph.wait_for(all_answered, "")
+    answers = {
+        node: sorted(future.result().result.names)
+        for node, future in futures.items()
+        if future.done() and future.result() is not None
+    }
+    return answers, [node for node in nodes if node not in answers]
+
+
+def silent_nodes_error(graph: Graph, silent: list[str], where: str) -> ToolError:
+    """The error for nodes that did not answer, once the others' answers are out."""
+    quoted = ", ".join(f"'{node}'" for node in silent)
+    nodes = "node" if len(silent) == 1 else "nodes"
+    return ToolError(
+        f"no answer from {nodes} {quoted} within {graph.timeout:g} s: "
+        f"{'its' if len(silent) == 1 else 'their'} parameters are missing {where}"
+    )
 
 
 def names(graph: Graph, node: str, prefixes: list[str] | None = None) -> list[str]:
@@ -274,13 +314,16 @@ def list_command(
         regex = re.compile(pattern) if pattern is not None else None
     except re.error as error:
         raise ToolError(f"invalid --filter regular expression {pattern!r}: {error}") from None
+    silent: list[str] = []
     if node:
         nodes = [graph.wait_for_node(node)]
+        answers = {nodes[0]: names(graph, nodes[0], prefixes or None)}
     else:
         nodes = sorted(nodes_with_parameters(graph), key=_listing_order)
+        answers, silent = names_of_each(graph, nodes, prefixes or None)
     listing = []
-    for full_name in nodes:
-        found = names(graph, full_name, prefixes or None)
+    for full_name in (n for n in nodes if n in answers):
+        found = answers[full_name]
         if regex is not None:
             found = [name for name in found if regex.match(name)]
         types = {}
@@ -292,12 +335,15 @@ def list_command(
                 d.name: DESCRIBED_TYPES.get(d.type, "unknown") for d in descriptors.descriptors
             }
         listing.append((full_name, found, types))
-    graph.finish()
+    if not silent:
+        graph.finish()
     for full_name, found, types in listing:
         if not node and found:
             print(f"{full_name}:")
         for name in found:
             print(f"  {name} (type: {types[name]})" if with_types else f"  {name}")
+    if silent:
+        raise silent_nodes_error(graph, silent, "above")
 
 
 def nodes_with_parameters(graph: Graph) -> list[str]:

@@ -147,12 +147,18 @@ def _absolute(name: str | None) -> str:
 def rosparam_list(graph: Graph, namespace: str | None = None) -> None:
     """`rosparam list [NAMESPACE]`: /node/parameter names, those under NAMESPACE if given."""
     namespace = _absolute(namespace)
-    for node_name in param.nodes_with_parameters(graph):
-        if not (_under(node_name, namespace) or namespace.startswith(node_name + "/")):
-            continue  # ask only the nodes that can hold a name in the namespace
-        for name in param.names(graph, node_name):
+    nodes = [  # ask only the nodes that can hold a name in the namespace
+        node_name
+        for node_name in param.nodes_with_parameters(graph)
+        if _under(node_name, namespace) or namespace.startswith(node_name + "/")
+    ]
+    answers, silent = param.names_of_each(graph, nodes)
+    for node_name in nodes:
+        for name in answers.get(node_name, []):
             if _under(f"{node_name}/{name}", namespace):
                 print(f"{node_name}/{name}")
+    if silent:
+        raise param.silent_nodes_error(graph, silent, "above")
 
 
 def rosparam_get(graph: Graph, name: str) -> None:
@@ -200,8 +206,12 @@ def rosparam_set(graph: Graph, name: str, value: str) -> None:
 
 
 def rosparam_dump(graph: Graph, path: str | None) -> None:
+    """Every node's parameters as one params file; a node that does not answer is left out
+    and named after the rest is written (exit status 1)."""
+    nodes = param.nodes_with_parameters(graph)
+    answers, silent = param.names_of_each(graph, nodes)
     data: dict[str, Any] = {}
-    for node_name in param.nodes_with_parameters(graph):
+    for node_name in (n for n in nodes if n in answers):
         data.update(param.dump_data(graph, node_name))
     text = yaml.safe_dump(data, default_flow_style=False)
     if path:
@@ -211,6 +221,8 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
             raise ToolError(f"cannot write {path}: {error.strerror}") from None
     else:
         print(text.rstrip())
+    if silent:
+        raise param.silent_nodes_error(graph, silent, f"from {path}" if path else "above")
 
 
 def rosparam_load(graph: Graph, path: str) -> None:
