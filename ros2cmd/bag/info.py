@@ -78,6 +78,8 @@ def ros2_info(bag: Bag, only_topics: bool = False) -> str:
     lines.append(f"End:               {_time_point(bag.end)}")
     event_count = sum(t.message_count for t in services)
     lines.append(f"Messages:          {bag.message_count - event_count}")
+    if bag.lost:  # this project's: what the recording lost before it received it (loss.py)
+        lines.append(f"Messages lost:     {_lost_text(bag.lost)}")
     topic_lines = [
         f"Topic: {t.name} | Type: {t.type} | Count: {t.message_count} | "
         f"Serialization Format: {t.serialization_format}"
@@ -96,6 +98,11 @@ def ros2_info(bag: Bag, only_topics: bool = False) -> str:
     if service_lines:
         text += f"\n{PAD}  ".join(service_lines) + "\n"
     return text
+
+
+def _lost_text(lost: dict[str, int]) -> str:
+    per_topic = ", ".join(f"{topic} {count}" for topic, count in sorted(lost.items()))
+    return f"{sum(lost.values())} before the recorder received them ({per_topic})"
 
 
 def topic_names(bag: Bag) -> str:
@@ -173,6 +180,8 @@ def ros1_info(bag: Bag) -> str:
         f"{t.name:<{name_width}}  {t.message_count:>{count_width}} msgs : {t.type}" for t in topics
     ]
     lines.append("topics:      " + f"\n{pad}".join(topic_lines))
+    if bag.lost:
+        lines.append(f"lost:        {_lost_text(bag.lost)}")
     return "\n".join(lines)
 
 

@@ -28,12 +28,14 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import rclpy.logging
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.qos import HistoryPolicy, QoSProfile
 
 from ros2cmd.bag import definitions
 from ros2cmd.bag.info import is_service_event_topic, ros1_info, service_type
 from ros2cmd.bag.keyboard import Keyboard
+from ros2cmd.bag.loss import LossCount
 from ros2cmd.bag.storage import (
     BagError,
     BagReader,
@@ -51,6 +53,7 @@ from ros_tutorials_common.ros import RCLError
 SPIN_PERIOD = 0.05
 FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
 DRAIN_LIMIT = 1000  # messages taken per topic in one go, so that no topic starves the others
+LOSS_REPORT_PERIOD = 1.0  # s between reports of messages lost before the recorder got them
 
 
 @dataclass
@@ -183,6 +186,7 @@ class Recorder:
         self.discovering = True
         self.limit_reached = False  # --max-messages: nothing more is written
         self.stop_ns = 0  # once stopping: messages received after this are not written
+        self.loss = LossCount()
 
     # What the user sees
 
@@ -248,12 +252,18 @@ class Recorder:
         # Keep all: a reliable publisher then waits for the recorder rather than the
         # recorder's queue dropping what it has not taken yet (a burst while writing a chunk).
         qos.history = HistoryPolicy.KEEP_ALL
+        lost = SubscriptionEventCallbacks(
+            message_lost=lambda event, name=topic: self.loss.middleware_lost(
+                name, event.total_count
+            )
+        )
         self.subscriptions[topic] = self.node.create_subscription(
             msg_type,
             topic,
             lambda data, message_info, name=topic: self._received(name, data, message_info),
             qos,
             raw=True,
+            event_callbacks=lost,
         )
         if self.options.ros1:
             self.info(f"Subscribed to topic '{topic}' ({type_name})")
@@ -286,6 +296,7 @@ class Recorder:
 
     def _received(self, topic: str, data: bytes, message_info: dict[str, Any]) -> None:
         received = message_info.get("received_timestamp") or time.time_ns()
+        self.loss.received(topic, message_info.get("publication_sequence_number"))
         if self.paused or self.limit_reached or (self.stop_ns and received > self.stop_ns):
             return
         self.writer.write(topic, data, received, message_info.get("source_timestamp") or 0)
@@ -295,6 +306,21 @@ class Recorder:
         ):
             self.limit_reached = True
             self.stop_reason = f"{self.options.max_messages} messages recorded"
+
+    def report_loss(self) -> None:
+        """Say what was lost since the last report, per topic (loss.py)."""
+        self.loss.look_at_publishers(self.graph.node.count_publishers)
+        for topic, new, total in self.loss.news():
+            self.warn(
+                f"{new} messages on {topic} were lost before the recorder received them "
+                f"({total} in all)"
+            )
+
+    def warn(self, text: str) -> None:
+        if self.options.ros1:
+            print(f"warning: {text}", file=sys.stderr, flush=True)
+        else:
+            self.node.get_logger().warning(text)
 
     def toggle_paused(self) -> None:
         self.paused = not self.paused
@@ -341,6 +367,9 @@ def record(graph: Graph, options: RecordOptions, output: str | None) -> None:
         error = failure
     finally:
         keyboard.restore()
+        recorder.report_loss()
+        if recorder.loss.totals():
+            writer.custom_data = {**(writer.custom_data or {}), **recorder.loss.custom_data()}
         for subscription in recorder.subscriptions.values():
             recorder.node.destroy_subscription(subscription)
         if not options.ros1:
@@ -396,6 +425,7 @@ def _run(
     recorder.discovering = not options.no_discovery
     start = time.monotonic()
     last_discovery = 0.0  # the discovery thread's first round comes at once
+    last_loss_report = start
     while not (stop.signal_name or recorder.stop_reason):
         now = time.monotonic()
         if options.duration is not None and now - start >= options.duration:
@@ -409,6 +439,9 @@ def _run(
         if keyboard.active and keyboard.wait(0) == "SPACE":
             recorder.toggle_paused()
         writer.flush_if_due()  # quiet topics too: nothing older than a period is at risk
+        if now - last_loss_report >= LOSS_REPORT_PERIOD:
+            last_loss_report = now
+            recorder.report_loss()
     # What arrived before the stop is recorded too, however late this process got to it.
     recorder.stop_ns = time.time_ns()
     deadline = time.monotonic() + FINAL_DRAIN_TIME

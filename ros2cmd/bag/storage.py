@@ -52,6 +52,7 @@ from mcap.records import (
 from mcap.stream_reader import MAGIC_SIZE, StreamReader, breakup_chunk
 from mcap.writer import CompressionType, Writer
 
+from ros2cmd.bag.loss import lost_in
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import bounded
 
@@ -498,6 +499,7 @@ class Bag:
     complete: bool  # every file had its summary (False: scanned, e.g. a killed recording)
     version: str = ""  # of the rosbag2 metadata ("" for a lone .mcap file)
     warnings: list[str] = field(default_factory=list)
+    lost: dict[str, int] = field(default_factory=dict)  # per topic, before recording (loss.py)
 
     @property
     def duration(self) -> int:
@@ -831,6 +833,7 @@ class BagReader:
             complete=all(f.complete for f in self.files),
             version=str(self.metadata.get("version", "")),
             warnings=warnings,
+            lost=lost_in(self.metadata.get("custom_data")),
         )
 
     def messages(self, topics: Iterable[str] | None = None, start: int = 0) -> Iterator[BagMessage]:
