@@ -39,7 +39,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "bag": [bag.bag_benchmarks],
     "graph": [graph.lists, graph.picture],
     "daemon": [daemon.startup, daemon.lists],
-    "turtlesim": [turtlesim.update_rate],
+    "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
 }
 

@@ -158,3 +158,56 @@ def update_rate(seconds: float = 20.0) -> list[Row]:
             )
         )
     return rows
+
+
+SCALE = (50, 100, 200)  # turtles, spawned one after another, none driven
+
+
+def many_turtles(seconds: float = 5.0) -> list[Row]:
+    """How many turtles one headless turtlesim keeps at 62.5 Hz, and how long /reset takes
+    with the most of them (the limit is one core: rclpy's executor and the updates)."""
+    from std_srvs.srv import Empty
+
+    proc = start(python("-m", "ros_tutorials_turtlesim.turtlesim_node"), env=HEADLESS)
+    context = rclpy.Context()
+    rclpy.init(context=context)
+    bench = Bench(context)
+    rows = []
+    try:
+        if not wait_for_lines(proc, lambda line: "Spawning turtle [turtle1]" in line, 60):
+            raise RuntimeError("turtlesim did not start")
+        threading.Thread(target=proc.stdout.read, daemon=True).start()
+        bench.spin_until(lambda: len(bench.arrivals) > 10)
+        spawn = bench.node.create_client(Spawn, "/spawn")
+        bench.spin_until(spawn.service_is_ready)
+        count = 1
+        for target in SCALE:
+            while count < target:
+                future = spawn.call_async(
+                    Spawn.Request(x=1.0 + count % 9, y=1.0 + count // 9 % 9, theta=0.0)
+                )
+                bench.spin_until(future.done)
+                count += 1
+            mean, _, cpu = bench.measure(proc.pid, seconds)
+            rows.append(
+                Row(
+                    f"turtlesim with {target} turtles (headless, none driven): turtle1/pose "
+                    "rate, CPU",
+                    f"{1 / mean:.1f} Hz, {cpu * 100:.0f} %",
+                    "62.5 Hz (one update every 16 ms)",
+                    (1 / mean) / 62.5,
+                    "62.5 Hz",
+                    abs(mean - PERIOD) / PERIOD <= 0.01,
+                )
+            )
+        reset = bench.node.create_client(Empty, "/reset")
+        started = time.monotonic()
+        future = reset.call_async(Empty.Request())
+        bench.spin_until(future.done)
+        took = time.monotonic() - started
+        rows.append(Row(f"turtlesim /reset with {SCALE[-1]} turtles", f"{took:.2f} s"))
+        return rows
+    finally:
+        bench.close()
+        context.try_shutdown()
+        stop(proc)
