@@ -68,6 +68,12 @@ def to_pixels(x: float, y: float) -> tuple[float, float]:
     )
 
 
+# What SDL says when (part of) the window becomes visible again.
+EXPOSED_EVENTS = frozenset(
+    {pygame.VIDEOEXPOSE, pygame.WINDOWEXPOSED, pygame.WINDOWSHOWN, pygame.WINDOWRESTORED}
+)
+
+
 class Canvas:
     """The path image and, when windowed, the window it is shown in."""
 
@@ -81,6 +87,7 @@ class Canvas:
         self._frame: pygame.Surface | None = None  # encode()'s, made on first use
         self.clear()
         self.screen: pygame.Surface | None = None
+        self.exposed = False  # the window must be repainted (see window_closed)
         if window:
             # The display that is named, and no other: SDL would otherwise fall back to an
             # invisible "offscreen" window when it cannot reach it.
@@ -141,10 +148,15 @@ class Canvas:
             pygame.display.flip()
 
     def window_closed(self) -> bool:
-        """Handle the window's events; True once the user has closed it."""
+        """Handle the window's events; True once the user has closed it. A window that was
+        covered, hidden or minimised and is shown again sets ``exposed``: it must be
+        repainted even if nothing changed (it kept the other window's pixels)."""
         if self.screen is None:
             return False
-        return any(event.type == pygame.QUIT for event in pygame.event.get())
+        events = pygame.event.get()
+        if any(event.type in EXPOSED_EVENTS for event in events):
+            self.exposed = True
+        return any(event.type == pygame.QUIT for event in events)
 
     def save_png(self, path: str, background: Sequence[int], turtles: Iterable[Turtle]) -> None:
         frame = pygame.Surface((CANVAS_PIXELS, CANVAS_PIXELS))

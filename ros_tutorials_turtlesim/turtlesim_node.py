@@ -299,9 +299,11 @@ class TurtlesimNode(Node):
                     raise WindowClosed()
                 # Repaint what changed, at most REPAINT_HZ times a second: the simulation
                 # keeps its 16 ms steps even when the display is slow.
-                if self._painted != self._changes and now - self._last_paint >= 1 / REPAINT_HZ:
+                changed = self._painted != self._changes or self.canvas.exposed
+                if changed and now - self._last_paint >= 1 / REPAINT_HZ:
                     self.canvas.show(self.background, [e.turtle for e in self.turtles.values()])
                     self._painted, self._last_paint = self._changes, now
+                    self.canvas.exposed = False
             # Half an update early: frames then come every 3 updates (48 ms), not 4.
             if now - self._last_frame >= 1 / CANVAS_HZ - UPDATE_PERIOD / 2:
                 self._publish_canvas(now)
