@@ -45,7 +45,7 @@ $(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
 
 # `source .venv/bin/activate` sets ROS_VERSION, ROS_PYTHON_VERSION and ROS_DISTRO, as a ROS
 # install's setup.bash does (the official "Configuring environment" tutorial looks for them).
-$(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py
+$(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.py
 	$(PY) tools/ros_environment.py
 	touch $@
 
