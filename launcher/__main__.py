@@ -108,7 +108,8 @@ def find_launch_file(names: list[str]) -> Path:
             found = (package,)
         if not found:
             known = ", ".join(packages.package_dirs())
-            raise LaunchError(f"unknown package {package!r}; known packages: {known}")
+            hint = packages.not_sourced_hint(package)
+            raise LaunchError(hint or f"unknown package {package!r}; known packages: {known}")
         for pkg in found:  # share/PKG/launch/NAME, as `ros2 launch PKG NAME` finds it
             path = packages.share_directory(pkg) / "launch" / name
             if path.is_file():

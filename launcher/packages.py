@@ -16,6 +16,12 @@ turns (package, executable) into a command line for the launcher and for ``rosru
 
 The seeds name their packages differently (``rosrun beginner_tutorials talker``);
 ``PACKAGE_ALIASES`` says where their executables are here.
+
+Any other package of the ament index runs as ROS 2 runs it: its executables are the files in
+<prefix>/lib/<package>/ (``installed_executables``), what colcon installs for a learner's own
+package (`ros2 pkg create`, `colcon build`, `source install/setup.bash`). A package of a
+sourced workspace (an overlay: a prefix other than this environment) shadows a seed's name
+(the tutorials' own `my_package`, not seed 004's).
 """
 
 from __future__ import annotations
@@ -23,6 +29,7 @@ from __future__ import annotations
 import ast
 import importlib.metadata
 import importlib.util
+import os
 import pkgutil
 import sys
 from functools import cache
@@ -166,14 +173,70 @@ def _script_command(script: importlib.metadata.EntryPoint) -> list[str]:
     return [sys.executable, "-c", code]
 
 
+def installed_executables(package: str) -> dict[str, list[str]]:
+    """Executable name -> command line, for a package of the ament index: the files in
+    <prefix>/lib/<package>/ that can be run, as ros2pkg finds them ({} if none)."""
+    try:
+        lib = ament.package_prefix(package) / "lib" / package
+    except ament.PackageNotFound:
+        return {}
+    found = {}
+    for folder, subfolders, files in os.walk(lib):
+        subfolders[:] = sorted(sub for sub in subfolders if not sub.startswith("."))
+        for file in files:
+            path = os.path.join(folder, file)
+            if os.access(path, os.X_OK) and os.path.isfile(path):
+                found.setdefault(file, [path])
+    return dict(sorted(found.items()))
+
+
+def overlay_package(name: str) -> bool:
+    """Whether NAME is a package of a sourced workspace (a prefix other than this
+    environment's), not one of this project's."""
+    prefix = ament.packages().get(name)
+    here = os.path.realpath(sys.prefix)
+    return prefix is not None and os.path.realpath(prefix) != here and name not in package_dirs()
+
+
+def unsourced_install(package: str) -> Path | None:
+    """The install/ folder of a workspace, here or above, where PACKAGE is built though no
+    sourced setup file put it in the ament index; None if there is none."""
+    here = Path.cwd()
+    for folder in (here, *here.parents):
+        install = folder / "install"
+        for prefix in (install / package, install):  # isolated (the default), or merged
+            marker = prefix / "share" / "ament_index" / "resource_index" / "packages" / package
+            if marker.is_file():
+                return install
+    return None
+
+
+def not_sourced_hint(package: str) -> str:
+    """'PACKAGE is built in ... : run `source .../setup.bash`' when it is built but not sourced;
+    '' when it is not."""
+    install = unsourced_install(package)
+    if install is None:
+        return ""
+    shown = install.relative_to(Path.cwd()) if install.parent == Path.cwd() else install
+    return (
+        f"{package!r} is built in {install} but that workspace is not sourced: "
+        f"run `source {shown}/setup.bash`"
+    )
+
+
 def runnable_packages() -> list[str]:
-    return [package for package in package_dirs() if executables(package)]
+    ours = [package for package in package_dirs() if executables(package)]
+    overlays = [name for name in ament.packages() if overlay_package(name)]
+    return ours + [name for name in overlays if installed_executables(name)]
 
 
 def resolve_package(name: str) -> tuple[str, ...]:
-    """The packages of this project a package name stands for: itself, or a seed's alias."""
+    """The packages of this project a package name stands for: itself, or a seed's alias
+    (none for a package of a sourced workspace, which shadows a seed's name)."""
     if name in package_dirs():
         return (name,)
+    if overlay_package(name):
+        return ()
     target = PACKAGE_ALIASES.get(name, ())
     targets = (target,) if isinstance(target, str) else target
     return tuple(package for package in targets if package in package_dirs())
@@ -195,6 +258,16 @@ def _tools() -> dict[str, list[str]]:
     return {s.name: _script_command(s) for s in scripts if s.group == "console_scripts"}
 
 
+def executable_commands(package: str) -> dict[str, list[str]]:
+    """Executable name -> command line, for any package name `ros2 run` and rosrun take: the
+    installed package's lib/<package>/, then this project's packages the name stands for."""
+    known = installed_executables(package)
+    for name in resolve_package(package):
+        for found, line in executables(name).items():
+            known.setdefault(found, line)
+    return known
+
+
 def command(package: str, executable: str) -> list[str]:
     """The command line that runs EXECUTABLE of PACKAGE, as rosrun and launch files name them.
 
@@ -202,10 +275,7 @@ def command(package: str, executable: str) -> list[str]:
     rqt_graph`` (a tool whose package and executable have one name) runs this project's
     command of that name. Raises UnknownExecutable naming the candidates.
     """
-    known: dict[str, list[str]] = {}
-    for name in resolve_package(package):
-        for found, line in executables(name).items():
-            known.setdefault(found, line)
+    known = executable_commands(package)
     if not known:
         if package == executable and executable in _tools():
             return list(_tools()[executable])
@@ -213,6 +283,11 @@ def command(package: str, executable: str) -> list[str]:
             raise UnknownExecutable(
                 f"{package} is a GUI tool this project does not have; {MISSING_TOOLS[package]}"
             )
+        if package in ament.packages():
+            raise UnknownExecutable(f"package {package!r} has no executables")
+        hint = not_sourced_hint(package)
+        if hint:
+            raise PackageNotFound(hint)
         raise PackageNotFound(
             f"unknown package {package!r}; known packages: {known_package_names()}"
         )
@@ -220,6 +295,9 @@ def command(package: str, executable: str) -> list[str]:
     name = executable.removesuffix(".py")
     name = EXECUTABLE_ALIASES.get((package, name), name)
     if name not in known:
+        hint = not_sourced_hint(package)
+        if hint:  # a seed's name (my_package) that the learner's own package has too
+            raise PackageNotFound(hint)
         have = ", ".join(sorted(known))
         raise UnknownExecutable(
             f"package {package!r} has no executable {executable!r}; it has: {have}"

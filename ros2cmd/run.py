@@ -34,6 +34,7 @@ from launcher import packages
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import ctrl_c, names
 from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
 # ROS 1 special keys with no ROS 2 meaning, and what to do instead.
@@ -136,6 +137,8 @@ def ros2_command_line(package: str, executable: str, args: Sequence[str]) -> lis
     try:
         packages.command(package, executable)
     except packages.PackageNotFound as error:
+        if packages.unsourced_install(package):
+            raise ToolError(f"Package '{package}' not found: {error}") from None
         raise ToolError(f"Package '{package}' not found ({error})") from None
     except packages.UnknownExecutable as error:
         raise ToolError(f"No executable found ({error})") from None
@@ -150,6 +153,12 @@ def run(package: str, executable: str, args: Sequence[str], prefix: str | None =
 
 
 def _exec(command: list[str], prefix: list[str]) -> None:
+    # Any executable, a learner's own plain rclpy node too, starts with the project's DDS
+    # defaults, and not at all with a ROS_DOMAIN_ID rcl would fail on (one line instead).
+    problem = environment_problem()
+    if problem:
+        raise ToolError(problem)
+    apply_dds_defaults()
     command = [*prefix, *command]
     sys.stdout.flush()
     sys.stderr.flush()
@@ -176,8 +185,7 @@ def rosrun(argv: Sequence[str] | None = None) -> int:
         if not argv:
             raise ToolError(f"{USAGE}; packages: {packages.known_package_names()}")
         if len(argv) == 1:
-            known = packages.resolve_package(argv[0])
-            names = sorted({name for pkg in known for name in packages.executables(pkg)})
+            names = sorted(packages.executable_commands(argv[0]))
             if not names:
                 # ROS 1's tools are packages of one executable: `rosrun rqt_graph rqt_graph`.
                 # command() raises the one-line error for a tool that is not here.
