@@ -3,7 +3,10 @@
     roscd ros_tutorials_topic      error: roscd changes your shell's folder, which a program
                                    cannot do; type: cd /.../ros_tutorials_topic
     rosed PKG FILE                 the same for an editor: ${EDITOR:-nano} /.../FILE
-    catkin_make                    nothing to build: what to run after changing what
+    catkin_make                    `colcon build` in your workspace; `make interfaces` here
+    catkin_create_pkg PKG DEPS     the `ros2 pkg create` line that makes PKG (rospy -> rclpy)
+    catkin_init_workspace          ROS 2 workspaces need none: `mkdir -p ~/ros2_ws/src`
+    roscp PKG FILE DEST            the `cp` to type
     rqt                            a GUI tool this project does not have, and what does its job
 
 ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See the README's
@@ -73,10 +76,50 @@ def rosed(argv: Sequence[str] | None = None) -> int:
 
 
 @quiet_on_closed_pipe
+def roscp(argv: Sequence[str] | None = None) -> int:
+    return _pointed(
+        argv,
+        3,
+        "usage: roscp PKG FILE DEST; here: cp $(rospack find PKG)/FILE DEST",
+        "roscp is ROS 1's; type: cp {folder}/{args[1]} {args[2]}",
+    )
+
+
+@quiet_on_closed_pipe
 def catkin_make(argv: Sequence[str] | None = None) -> int:
     return _say(
-        "nothing to build here: the Python nodes run from their source; after changing a "
-        ".msg/.srv/.action file run `make interfaces`, after changing pyproject.toml `make setup`"
+        "catkin_make is ROS 1's; in your workspace (~/ros2_ws) type: colcon build, then "
+        "source install/setup.bash (this project's own interfaces/: run `make interfaces`)"
+    )
+
+
+# ROS 1 package dependencies and what a ROS 2 Python package depends on instead.
+ROS2_DEPENDENCIES = {"rospy": "rclpy", "roscpp": "rclpy", "message_generation": "", "": ""}
+
+
+@quiet_on_closed_pipe
+def catkin_create_pkg(argv: Sequence[str] | None = None) -> int:
+    """Not catkin_pkg's tool (a catkin package that nothing here builds): the ROS 2 line."""
+    args = [arg for arg in _args(argv) if not arg.startswith("-")]
+    if not args:
+        return _say(
+            "catkin_create_pkg is ROS 1's; in ~/ros2_ws/src type: ros2 pkg create "
+            "--build-type ament_python PKG --dependencies rclpy std_msgs"
+        )
+    dependencies = dict.fromkeys(ROS2_DEPENDENCIES.get(dep, dep) for dep in args[1:])
+    dependencies.pop("", None)
+    depends = f" --dependencies {' '.join(dependencies)}" if dependencies else ""
+    return _say(
+        "catkin_create_pkg is ROS 1's; in ~/ros2_ws/src type: ros2 pkg create "
+        f"--build-type ament_python {shlex.quote(args[0])}{depends}"
+    )
+
+
+@quiet_on_closed_pipe
+def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
+    return _say(
+        "catkin_init_workspace is ROS 1's; a ROS 2 workspace needs no set-up: mkdir -p "
+        "~/ros2_ws/src, create packages there, run colcon build in ~/ros2_ws"
     )
 
 

@@ -276,6 +276,15 @@ def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
         (("roscd",), "usage: roscd PKG[/DIR]"),
         (("rosed", "ros_tutorials_topic", "talker.py"), "ros_tutorials_topic/talker.py"),
         (("catkin_make",), "run `make interfaces`"),
+        (("catkin_make",), "type: colcon build, then source install/setup.bash"),
+        (
+            ("catkin_create_pkg", "beginner_tutorials", "std_msgs", "rospy", "roscpp"),
+            "type: ros2 pkg create --build-type ament_python beginner_tutorials "
+            "--dependencies std_msgs rclpy",
+        ),
+        (("catkin_init_workspace",), "mkdir -p ~/ros2_ws/src"),
+        (("roscp", "ros_tutorials_topic", "talker.py", "."), "type: cp "),
+        (("roscp", "nope", "a", "b"), "unknown package 'nope'"),
         (("rqt",), "call services with `ros2 service call` (`rosservice call`)"),
     ],
 )
