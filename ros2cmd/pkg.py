@@ -23,6 +23,7 @@ import argparse
 import getpass
 import importlib.metadata
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -40,6 +41,8 @@ KNOWN_LICENSES = (
     "GPL-3.0-only", "LGPL-3.0-only",
 )  # fmt: skip
 BUILD_TYPES = ("ament_cmake", "ament_python")
+# REP 144: what colcon, CMake and Python (an ament_python package is a Python package) accept.
+PACKAGE_NAME = r"[a-z][a-z0-9_]*"
 
 
 def package_prefix(name: str) -> Path:
@@ -538,6 +541,15 @@ def create(args: argparse.Namespace) -> None:
         node_name += "_node"
         print("[WARNING] node name can not be equal to the library name", file=sys.stderr)
         print(f"[WARNING] renaming node to {node_name}", file=sys.stderr)
+    if not re.fullmatch(PACKAGE_NAME, args.package_name):
+        # ros2pkg writes it anyway; colcon and CMake then fail on it far from here.
+        raise ToolError(
+            f"'{args.package_name}' is not a valid package name: lower-case letters, digits "
+            "and underscores, starting with a letter (REP 144), e.g. my_package"
+        )
+    for what, name in (("node", node_name), ("library", library_name)):
+        if name is not None and not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
+            raise ToolError(f"--{what}-name '{name}' is not a valid name: letters, digits, '_'")
     if args.build_type == "ament_python" and args.package_name == "test":
         # The package's code folder and its tests' folder would be the same.
         raise ToolError(
