@@ -1,13 +1,16 @@
 """Generate and install the interface packages in interfaces/ into this virtual environment.
 
 Each folder of interfaces/ with a package.xml is one ROS 2 interface package
-(ros_tutorials_interfaces, turtlesim). This runs the real rosidl tool chain from the ROS 2
-Jazzy wheels through CMake on each, the way colcon would, and installs into sys.prefix: the
-Python package lands in site-packages and the type-support libraries in sys.prefix/lib, where
-the wheels' loader already looks. The build trees (build/interfaces/PKG) are kept, so a
-changed definition rebuilds only what changed. It builds with Ninja when the set-up installed
-it, and compiles each type-support library as one unit (interfaces/cmake/unity_build.cmake):
-half the CPU time, the same libraries (README: "What the interface build costs").
+(ros_tutorials_interfaces, turtlesim; example_interfaces and action_tutorials_interfaces as
+ROS 2 Jazzy ships them, unchanged, for the tutorials' code). This runs the real rosidl tool
+chain from the ROS 2 Jazzy wheels through CMake on each, the way colcon would, and installs into
+sys.prefix: the Python package lands in site-packages and the type-support libraries in
+sys.prefix/lib, where the wheels' loader already looks. The build trees (build/interfaces/PKG)
+are kept, so a changed definition rebuilds only what changed. It builds with Ninja when the
+set-up installed it, and compiles each type-support library as one unit
+(interfaces/cmake/unity_build.cmake, through interfaces/cmake/colcon_toolchain.cmake, which the
+learner's colcon builds get too): half the CPU time, the same libraries (README: "What the
+interface build costs").
 
     .venv/bin/python tools/build_interfaces.py
     .venv/bin/python tools/build_interfaces.py --sources DIR --prefix DIR --build DIR
@@ -29,10 +32,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 SOURCES = ROOT / "interfaces"
 BUILD = ROOT / "build" / "interfaces"
-# Repairs the wheels' exported CMake targets; see the file. Not needed in a ROS 2 workspace.
-FIX_WHEEL_TARGETS = SOURCES / "cmake" / "fix_wheel_targets.cmake"
-# One compile per type-support library instead of one per interface; see the file.
-UNITY_BUILD = SOURCES / "cmake" / "unity_build.cmake"
+# What the learner's `colcon build` gets from the activated environment too (the wheels'
+# exported targets repaired, unity builds, no linters); see the file.
+TOOLCHAIN = SOURCES / "cmake" / "colcon_toolchain.cmake"
 
 
 def interface_packages(sources: Path = SOURCES) -> list[Path]:
@@ -115,8 +117,7 @@ def build_package(
         f"-DCMAKE_INSTALL_PREFIX={prefix}",
         f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
         f"-DPython3_EXECUTABLE={sys.executable}",
-        f"-DROS_TUTORIALS_FIX_WHEEL_TARGETS={FIX_WHEEL_TARGETS}",
-        f"-DCMAKE_PROJECT_INCLUDE={UNITY_BUILD}",
+        f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}",
         "-DBUILD_TESTING=OFF",
     ]
     log_path = build / "build.log"
