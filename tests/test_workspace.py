@@ -1,0 +1,299 @@
+"""The learner's own packages, as the official Jazzy tutorials build them: `ros2 pkg create`,
+the real colcon, `source install/setup.bash`, then `ros2 run` and the other tools
+("Creating your first ROS 2 package", "Writing a simple publisher and subscriber (Python)",
+"Creating custom msg and srv files").
+
+Each test makes a workspace in a temporary folder and types the pages' commands in bash, as
+a learner does in a terminal: the build after `source .venv/bin/activate` (what `source
+/opt/ros/jazzy/setup.bash` is elsewhere), the rest in a new shell that only sources the
+workspace's install/setup.bash. The pages' code is in tests/data/workspace/, as printed.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shlex
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from helpers import NodeProcess
+
+DATA = Path(__file__).parent / "data" / "workspace"
+ACTIVATE = Path(sys.prefix) / "bin" / "activate"
+BUILD_TIMEOUT = 600.0  # a colcon build of an interface package on a loaded 2-core machine
+TIMEOUT = 60.0
+
+
+def learner_environment() -> dict[str, str]:
+    """A new terminal's environment: nothing of this environment activated, this test
+    session's ROS domain (tests/conftest.py) and log folder kept."""
+    env = {"PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": os.environ.get("HOME", "/tmp")}
+    for name in ("ROS_DOMAIN_ID", "ROS_LOG_DIR", "ROS_HOME", "LANG", "TMPDIR"):
+        if name in os.environ:
+            env[name] = os.environ[name]
+    return env
+
+
+def bash(script: str, cwd: Path, timeout: float = TIMEOUT) -> subprocess.CompletedProcess:
+    """Run SCRIPT in a new bash in CWD; fails the test if it does not end within timeout."""
+    try:
+        return subprocess.run(
+            ["bash", "-c", script],
+            cwd=cwd,
+            env=learner_environment(),
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+    except subprocess.TimeoutExpired as error:
+        pytest.fail(f"{script!r} did not finish within {timeout:.0f} s: {error.stdout!r}")
+
+
+def ok(script: str, cwd: Path, timeout: float = TIMEOUT) -> str:
+    result = bash(script, cwd, timeout)
+    assert result.returncode == 0, f"{script} failed:\n{result.stdout}\n{result.stderr}"
+    assert "Traceback" not in result.stderr, result.stderr
+    return result.stdout
+
+
+def activated(script: str) -> str:
+    return f". {shlex.quote(str(ACTIVATE))}\n{script}"
+
+
+def sourced(script: str) -> str:
+    return f"source install/setup.bash\n{script}"
+
+
+def colcon_build(workspace: Path, *args: str) -> str:
+    return ok(activated(f"colcon build {' '.join(args)}"), workspace, BUILD_TIMEOUT)
+
+
+def new_workspace(tmp_path: Path) -> Path:
+    workspace = tmp_path / "ros2_ws"
+    (workspace / "src").mkdir(parents=True)
+    return workspace
+
+
+def create(workspace: Path, arguments: str) -> str:
+    return ok(activated(f"ros2 pkg create {arguments}"), workspace / "src")
+
+
+def add_line_after(path: Path, anchor: str, line: str) -> None:
+    """Add LINE after the first line containing ANCHOR, as the learner edits the file."""
+    text = path.read_text()
+    at = text.index("\n", text.index(anchor)) + 1
+    path.write_text(text[:at] + line + "\n" + text[at:])
+
+
+def add_entry_points(setup_py: Path, *entries: str) -> None:
+    """The page's `entry_points` edit of setup.py: lines within the console_scripts brackets."""
+    text = setup_py.read_text()
+    lines = "".join(f"\n            '{entry}'," for entry in entries)
+    new = re.sub(r"'console_scripts': \[\n", lambda m: m.group(0) + lines[1:] + "\n", text)
+    assert new != text
+    setup_py.write_text(new)
+
+
+def test_first_package_ament_python_builds_and_runs(tmp_path):
+    """Creating-Your-First-ROS2-Package: ament_python with --node-name, colcon build, then
+    `ros2 run my_package my_node` prints "Hi from my_package." and the tools find it."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace, "--build-type ament_python --license Apache-2.0 --node-name my_node my_package"
+    )
+    built = colcon_build(workspace)
+    assert "Summary: 1 package finished" in built
+    assert ok(sourced("ros2 run my_package my_node"), workspace) == "Hi from my_package.\n"
+    prefix = workspace / "install" / "my_package"
+    listed = ok(sourced("ros2 pkg list"), workspace).splitlines()
+    assert "my_package" in listed and "std_msgs" in listed
+    assert ok(sourced("ros2 pkg prefix my_package"), workspace) == f"{prefix}\n"
+    assert ok(sourced("ros2 pkg executables my_package"), workspace) == "my_package my_node\n"
+    # rosrun finds it the same way, and the node runs by hand too, as colcon installed it.
+    assert ok(sourced("rosrun my_package my_node"), workspace) == "Hi from my_package.\n"
+    node = "install/my_package/lib/my_package/my_node"
+    assert ok(sourced(node), workspace) == "Hi from my_package.\n"
+
+
+def test_a_package_built_but_not_sourced_says_source_install_setup_bash(tmp_path):
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python --node-name my_node my_package")
+    colcon_build(workspace)
+    for command in ("ros2 run my_package my_node", "rosrun my_package my_node"):
+        result = bash(activated(command), workspace)
+        assert result.returncode == 1 and result.stdout == ""
+        assert result.stderr.count("\n") == 1, result.stderr
+        assert "run `source install/setup.bash`" in result.stderr
+
+
+def test_ros2_pkg_create_refuses_a_bad_name_and_an_existing_package(tmp_path):
+    workspace = new_workspace(tmp_path)
+    result = bash(activated("ros2 pkg create My-Package"), workspace / "src")
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr == (
+        "error: 'My-Package' is not a valid package name: lower-case letters, digits and "
+        "underscores, starting with a letter (REP 144), e.g. my_package\n"
+    )
+    create(workspace, "my_package")
+    result = bash(activated("ros2 pkg create my_package"), workspace / "src")
+    assert result.returncode == 1 and result.stderr.count("\n") == 1
+    assert "The directory already exists: ./my_package" in result.stderr
+
+
+def test_the_environment_a_sourced_workspace_gives_its_nodes(tmp_path):
+    """install/setup.bash in a new terminal activates the environment it was built in (as it
+    sources /opt/ros/jazzy elsewhere): DDS stays on this machine, the index has both."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python --node-name my_node my_package")
+    colcon_build(workspace)
+    shown = ok(
+        sourced("printenv ROS_AUTOMATIC_DISCOVERY_RANGE AMENT_PREFIX_PATH ROS_DISTRO"), workspace
+    )
+    assert shown.splitlines() == [
+        "LOCALHOST",
+        f"{workspace / 'install' / 'my_package'}:{sys.prefix}",
+        "jazzy",
+    ]
+    # The user's own setting stays.
+    script = sourced("printenv ROS_AUTOMATIC_DISCOVERY_RANGE")
+    assert ok(f"export ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET\n{script}", workspace) == "SUBNET\n"
+
+
+def terminal(workspace: Path, command: str) -> NodeProcess:
+    """COMMAND running in a new terminal in which the workspace was sourced."""
+    script = f"cd {shlex.quote(str(workspace))} && {sourced(f'exec {command}')}"
+    variables = [f"{name}={value}" for name, value in learner_environment().items()]
+    # NodeProcess appends its interpreter's path: the script's $1, unused.
+    return NodeProcess(prefix=["env", "-i", *variables, "bash", "-c", script, "bash"])
+
+
+def talker_and_listener(workspace: Path, package: str, heard: str) -> None:
+    """`ros2 run PACKAGE talker` and `ros2 run PACKAGE listener` in two terminals: the
+    listener prints what the talker publishes."""
+    talker = terminal(workspace, f"ros2 run {package} talker")
+    listener = terminal(workspace, f"ros2 run {package} listener")
+    try:
+        talker.wait_for_text("Publishing: ", timeout=TIMEOUT)
+        listener.wait_for_text(heard, timeout=TIMEOUT)
+    finally:
+        talker.kill()
+        listener.kill()
+
+
+def py_pubsub(workspace: Path, publisher: str, subscriber: str, *depends: str) -> None:
+    """The page's py_pubsub: `ros2 pkg create`, the two files, package.xml and setup.py."""
+    create(workspace, "--build-type ament_python --license Apache-2.0 py_pubsub")
+    package = workspace / "src" / "py_pubsub"
+    (package / "py_pubsub" / "publisher_member_function.py").write_text(
+        (DATA / publisher).read_text()
+    )
+    (package / "py_pubsub" / "subscriber_member_function.py").write_text(
+        (DATA / subscriber).read_text()
+    )
+    for depend in reversed(depends):
+        add_line_after(
+            package / "package.xml", "<license>", f"  <exec_depend>{depend}</exec_depend>"
+        )
+    add_entry_points(
+        package / "setup.py",
+        "talker = py_pubsub.publisher_member_function:main",
+        "listener = py_pubsub.subscriber_member_function:main",
+    )
+
+
+def test_simple_py_publisher_and_subscriber(tmp_path):
+    """Writing-A-Simple-Py-Publisher-And-Subscriber: the page's code, `colcon build
+    --packages-select py_pubsub`, talker and listener in two terminals."""
+    workspace = new_workspace(tmp_path)
+    py_pubsub(
+        workspace,
+        "publisher_member_function.py",
+        "subscriber_member_function.py",
+        "rclpy",
+        "std_msgs",
+    )
+    colcon_build(workspace, "--packages-select py_pubsub")
+    talker_and_listener(workspace, "py_pubsub", 'I heard: "Hello World: ')
+
+
+# Custom-ROS2-Interfaces: the files of tutorial_interfaces and the lines the page adds to
+# CMakeLists.txt and package.xml (in tests/data/workspace/, as printed).
+INTERFACE_FILES = {
+    "msg/Num.msg": "int64 num\n",
+    "msg/Sphere.msg": "geometry_msgs/Point center\nfloat64 radius\n",
+    "srv/AddThreeInts.srv": "int64 a\nint64 b\nint64 c\n---\nint64 sum\n",
+}
+CMAKE_LINES = (DATA / "tutorial_interfaces_CMakeLists.txt").read_text()
+PACKAGE_XML_LINES = (DATA / "tutorial_interfaces_package.xml").read_text().rstrip("\n")
+# What `ros2 interface show` prints, as the page shows it.
+SHOWN = {
+    "tutorial_interfaces/msg/Num": "int64 num\n",
+    "tutorial_interfaces/msg/Sphere": (
+        "geometry_msgs/Point center\n\tfloat64 x\n\tfloat64 y\n\tfloat64 z\nfloat64 radius\n"
+    ),
+    "tutorial_interfaces/srv/AddThreeInts": "int64 a\nint64 b\nint64 c\n---\nint64 sum\n",
+}
+
+
+def tutorial_interfaces(workspace: Path) -> Path:
+    create(workspace, "--build-type ament_cmake --license Apache-2.0 tutorial_interfaces")
+    package = workspace / "src" / "tutorial_interfaces"
+    for name, text in INTERFACE_FILES.items():
+        (package / name).parent.mkdir(exist_ok=True)
+        (package / name).write_text(text)
+    add_line_after(package / "CMakeLists.txt", "find_package(ament_cmake REQUIRED)", CMAKE_LINES)
+    add_line_after(package / "package.xml", "<license>", PACKAGE_XML_LINES)
+    return package
+
+
+def test_custom_interfaces_build_show_and_carry_messages(tmp_path):
+    """Custom-ROS2-Interfaces: tutorial_interfaces with the page's lines only, built by
+    `colcon build --packages-select tutorial_interfaces`; `ros2 interface show` prints what
+    the page shows; the page's Num publisher and subscriber talk."""
+    workspace = new_workspace(tmp_path)
+    tutorial_interfaces(workspace)
+    colcon_build(workspace, "--packages-select tutorial_interfaces")
+    for name, text in SHOWN.items():
+        assert ok(sourced(f"ros2 interface show {name}"), workspace) == text
+    py_pubsub(
+        workspace,
+        "num_publisher_member_function.py",
+        "num_subscriber_member_function.py",
+        "rclpy",
+        "tutorial_interfaces",
+    )
+    colcon_build(workspace, "--packages-select py_pubsub")
+    talker_and_listener(workspace, "py_pubsub", 'I heard: "')
+
+
+@pytest.mark.long  # a C++ compile
+def test_first_package_ament_cmake_builds_and_runs(tmp_path):
+    """Creating-Your-First-ROS2-Package, the CMake tab: its C++ node, compiled, runs."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace, "--build-type ament_cmake --license Apache-2.0 --node-name my_node my_package"
+    )
+    colcon_build(workspace)
+    shown = ok(sourced("ros2 run my_package my_node"), workspace)
+    assert shown == "hello world my_package package\n"
+
+
+@pytest.mark.long  # two interface builds
+def test_a_failing_interface_build_leaves_the_last_good_install(tmp_path):
+    """A syntax error in a .msg: the build fails naming the line; what was installed before
+    still works."""
+    workspace = new_workspace(tmp_path)
+    package = tutorial_interfaces(workspace)
+    colcon_build(workspace)
+    (package / "msg" / "Num.msg").write_text("int64 num num\n")
+    result = bash(activated("colcon build"), workspace, BUILD_TIMEOUT)
+    assert result.returncode != 0
+    # colcon's and rosidl's own report, as on a ROS 2 installation: the line and the reason.
+    assert "Failed   <<< tutorial_interfaces" in result.stderr
+    assert "Error processing 'int64 num num' of 'tutorial_interfaces/Num'" in result.stderr
+    assert (
+        ok(sourced("ros2 interface show tutorial_interfaces/msg/Num"), workspace) == "int64 num\n"
+    )
