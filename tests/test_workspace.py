@@ -297,3 +297,45 @@ def test_a_failing_interface_build_leaves_the_last_good_install(tmp_path):
     assert (
         ok(sourced("ros2 interface show tutorial_interfaces/msg/Num"), workspace) == "int64 num\n"
     )
+
+
+SHOW_RANGE = """\
+import os
+
+
+def main():
+    print('range:', os.environ.get('ROS_AUTOMATIC_DISCOVERY_RANGE', 'unset'))
+"""
+LAUNCH_FILE = """\
+<launch>
+  <node pkg="my_package" exec="my_node" output="screen"/>
+</launch>
+"""
+
+
+def test_a_workspace_node_keeps_dds_on_this_machine_however_started(tmp_path):
+    """`ros2 run`, `ros2 launch` (an XML launch file the package installs) and the installed
+    script by hand: the node starts with ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST, even from a
+    shell where it was unset after sourcing, and with the user's own value when set."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python --node-name my_node my_package")
+    package = workspace / "src" / "my_package"
+    (package / "my_package" / "my_node.py").write_text(SHOW_RANGE)
+    (package / "launch").mkdir()
+    (package / "launch" / "my.launch.xml").write_text(LAUNCH_FILE)
+    setup_py = package / "setup.py"
+    setup_py.write_text("import os\nfrom glob import glob\n" + setup_py.read_text())
+    add_line_after(
+        setup_py,
+        "('share/' + package_name, ['package.xml']),",
+        "        (os.path.join('share', package_name, 'launch'), glob('launch/*')),",
+    )
+    colcon_build(workspace)
+    unset = "unset ROS_AUTOMATIC_DISCOVERY_RANGE; "
+    assert ok(sourced(unset + "ros2 run my_package my_node"), workspace) == "range: LOCALHOST\n"
+    launched = ok(sourced(unset + "ros2 launch my_package my.launch.xml"), workspace)
+    assert "[my_node] range: LOCALHOST" in launched
+    by_hand = sourced("install/my_package/lib/my_package/my_node")
+    assert ok(by_hand, workspace) == "range: LOCALHOST\n"
+    chosen = "export ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET\n"
+    assert ok(chosen + sourced("ros2 run my_package my_node"), workspace) == "range: SUBNET\n"
