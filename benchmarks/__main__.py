@@ -1,7 +1,8 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
 python -m benchmarks [GROUP ...]
-    groups: launch service topic rate memory setup bag graph daemon turtlesim web (default: all)
+    groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
+    (default: all)
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from benchmarks import (
     topic,
     turtlesim,
     web,
+    workspace,
 )
 from benchmarks.common import Row, print_table, private_domain
 
@@ -41,6 +43,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "daemon": [daemon.startup, daemon.lists],
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
+    "workspace": [workspace.build_times],
 }
 
 

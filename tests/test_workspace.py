@@ -339,3 +339,33 @@ def test_a_workspace_node_keeps_dds_on_this_machine_however_started(tmp_path):
     assert ok(by_hand, workspace) == "range: LOCALHOST\n"
     chosen = "export ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET\n"
     assert ok(chosen + sourced("ros2 run my_package my_node"), workspace) == "range: SUBNET\n"
+
+
+def test_simple_py_service_and_client(tmp_path):
+    """Writing-A-Simple-Py-Service-And-Client: py_srvcli on example_interfaces (as ROS 2
+    ships it); `ros2 run py_srvcli client 2 3` prints the page's result line."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace,
+        "--build-type ament_python --license Apache-2.0 py_srvcli "
+        "--dependencies rclpy example_interfaces",
+    )
+    package = workspace / "src" / "py_srvcli"
+    for name in ("service_member_function.py", "client_member_function.py"):
+        (package / "py_srvcli" / name).write_text((DATA / name).read_text())
+    add_entry_points(
+        package / "setup.py",
+        "service = py_srvcli.service_member_function:main",
+        "client = py_srvcli.client_member_function:main",
+    )
+    colcon_build(workspace, "--packages-select py_srvcli")
+    service = terminal(workspace, "ros2 run py_srvcli service")
+    try:
+        result = bash(sourced("ros2 run py_srvcli client 2 3"), workspace)
+        assert result.returncode == 0, result.stderr
+        # rclpy's log lines go to standard error.
+        assert "[minimal_client_async]: Result of add_two_ints: for 2 + 3 = 5" in result.stderr
+        service.wait_for_text("[minimal_service]: Incoming request")
+        service.wait_for_text("a: 2 b: 3")
+    finally:
+        service.kill()
