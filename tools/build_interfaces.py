@@ -27,6 +27,8 @@ import os
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ElementTree
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -40,6 +42,14 @@ TOOLCHAIN = SOURCES / "cmake" / "colcon_toolchain.cmake"
 def interface_packages(sources: Path = SOURCES) -> list[Path]:
     """The interface packages in interfaces/ (folders holding a package.xml), by name."""
     return sorted(path.parent for path in sources.glob("*/package.xml"))
+
+
+def dependencies(source: Path) -> set[str]:
+    """The packages a package's package.xml names as dependencies of any kind."""
+    root = ElementTree.parse(source / "package.xml").getroot()
+    return {
+        element.text.strip() for element in root if element.tag.endswith("depend") and element.text
+    }
 
 
 def find_cmake() -> str:
@@ -184,10 +194,28 @@ def main(argv: list[str] | None = None) -> int:
     env["CMAKE_PREFIX_PATH"] = search
     env["PATH"] = f"{Path(sys.prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
     cmake = find_cmake()
-    for source in interface_packages(options.sources):
-        if not build_package(source, cmake, env, prefix, options.build.absolute()):
-            return 1
-        print(f"{source.name} generated and installed into {prefix}")
+    remaining = interface_packages(options.sources)
+    names = {source.name for source in remaining}
+    built: set[str] = set()
+    fixed = (cmake, env, prefix, options.build.absolute())  # build_package's other arguments
+    # Two packages at a time, each one's dependencies among these first: rosidl's generators
+    # and CMake's configure step are one process each, which leaves a core idle.
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        while remaining:
+            ready = [s for s in remaining if dependencies(s) & names <= built]
+            if not ready:
+                print(
+                    "build_interfaces: the packages depend on each other in a circle",
+                    file=sys.stderr,
+                )
+                return 1
+            results = pool.map(build_package, ready, *[[x] * len(ready) for x in fixed])
+            for source, result in zip(ready, list(results), strict=True):
+                if not result:
+                    return 1
+                print(f"{source.name} generated and installed into {prefix}")
+                built.add(source.name)
+            remaining = [source for source in remaining if source not in ready]
     return 0
 
 
