@@ -369,3 +369,54 @@ def test_simple_py_service_and_client(tmp_path):
         service.wait_for_text("a: 2 b: 3")
     finally:
         service.kill()
+
+
+ACTION_CMAKE_LINES = """\
+find_package(rosidl_default_generators REQUIRED)
+
+rosidl_generate_interfaces(${PROJECT_NAME}
+  "action/Fibonacci.action"
+)
+"""
+ACTION_PACKAGE_XML_LINES = """\
+  <buildtool_depend>rosidl_default_generators</buildtool_depend>
+  <member_of_group>rosidl_interface_packages</member_of_group>"""
+
+
+@pytest.mark.long  # an interface build, and the page's goal takes 9 s
+def test_creating_an_action_and_its_python_server_and_client(tmp_path):
+    """Creating-an-Action (custom_action_interfaces, as the page builds it) and
+    Writing-an-Action-Server-Client (Python): the page's server and client, each run with
+    `python3 FILE` in a terminal where the workspace is sourced (install/local_setup.bash
+    over the activated environment)."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--license Apache-2.0 custom_action_interfaces")
+    package = workspace / "src" / "custom_action_interfaces"
+    (package / "action").mkdir()
+    (package / "action" / "Fibonacci.action").write_text(
+        "int32 order\n---\nint32[] sequence\n---\nint32[] partial_sequence\n"
+    )
+    cmakelists = package / "CMakeLists.txt"
+    text = cmakelists.read_text()
+    cmakelists.write_text(text.replace("ament_package()", ACTION_CMAKE_LINES + "\nament_package()"))
+    add_line_after(package / "package.xml", "<license>", ACTION_PACKAGE_XML_LINES)
+    colcon_build(workspace)
+    local = "source install/local_setup.bash\n"
+    shown = ok(
+        activated(local + "ros2 interface show custom_action_interfaces/action/Fibonacci"),
+        workspace,
+    )
+    assert shown == "int32 order\n---\nint32[] sequence\n---\nint32[] partial_sequence\n"
+    for name in ("fibonacci_action_server.py", "fibonacci_action_client.py"):
+        (workspace / name).write_text((DATA / name).read_text())
+    server = terminal(workspace, "python3 fibonacci_action_server.py")
+    client = terminal(workspace, "python3 fibonacci_action_client.py")
+    try:
+        client.wait_for_text("[fibonacci_action_client]: Goal accepted :)")
+        server.wait_for_text("[fibonacci_action_server]: Executing goal...")
+        client.wait_for_text("Received feedback: array('i', [0, 1, 1])")
+        result = "Result: array('i', [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55])"
+        client.wait_for_text(f"[fibonacci_action_client]: {result}", timeout=2 * TIMEOUT)
+    finally:
+        server.kill()
+        client.kill()
