@@ -420,3 +420,34 @@ def test_creating_an_action_and_its_python_server_and_client(tmp_path):
     finally:
         server.kill()
         client.kill()
+
+
+def test_using_parameters_in_a_class_python(tmp_path):
+    """Using-Parameters-In-A-Class-Python: the node says "Hello world!" each second, and
+    "Hello earth!" once `ros2 param set` changed its parameter (it sets it back itself)."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace,
+        "--build-type ament_python --license Apache-2.0 python_parameters --dependencies rclpy",
+    )
+    package = workspace / "src" / "python_parameters"
+    (package / "python_parameters" / "python_parameters_node.py").write_text(
+        (DATA / "python_parameters_node.py").read_text()
+    )
+    add_entry_points(
+        package / "setup.py", "minimal_param_node = python_parameters.python_parameters_node:main"
+    )
+    colcon_build(workspace, "--packages-select python_parameters")
+    node = terminal(workspace, "ros2 run python_parameters minimal_param_node")
+    try:
+        node.wait_for_text("[minimal_param_node]: Hello world!")
+        changed = ok(sourced("ros2 param set /minimal_param_node my_parameter earth"), workspace)
+        assert changed == "Set parameter successful\n"
+        lines = node.wait_for_text("[minimal_param_node]: Hello earth!")
+        earth = next(i for i, line in enumerate(lines) if "Hello earth!" in line)
+        node.wait_for_output(
+            lambda lines: any("Hello world!" in line for line in lines[earth + 1 :]),
+            what="Hello world! after Hello earth!",
+        )
+    finally:
+        node.kill()
