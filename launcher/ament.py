@@ -5,10 +5,12 @@ AMENT_PREFIX_PATH holds share/ament_index/resource_index/<type>/<name> files: `p
 says std_msgs is installed in that prefix, `rosidl_interfaces/std_msgs` lists its interface
 files; a package's own files are in <prefix>/share/<package>/. The ROS 2 wheels install that
 layout into this environment (sys.prefix), `make setup` adds this project's packages to it
-(tools/build_interfaces.py, tools/register_packages.py), but nothing sets AMENT_PREFIX_PATH,
-which a ROS installation's setup.bash would.
+(tools/build_interfaces.py, tools/register_packages.py). `source .venv/bin/activate` sets
+AMENT_PREFIX_PATH to it, as a ROS installation's setup.bash does (tools/ros_environment.py),
+and a colcon workspace's install/setup.bash puts its own prefixes in front; a program started
+without either (`.venv/bin/ros2 ...`) has no AMENT_PREFIX_PATH at all.
 
-This module is the one place that does: ``apply_ament_defaults()`` puts sys.prefix last in
+So the tools do not depend on it: ``apply_ament_defaults()`` puts sys.prefix last in
 AMENT_PREFIX_PATH unless it is already there, so this environment is the underlay every user
 setting is laid over, as /opt/ros/jazzy is the underlay of a sourced workspace. The prefixes a
 user names stay first and win (an overlay's package shadows this environment's). Every lookup

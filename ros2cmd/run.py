@@ -1,13 +1,14 @@
-"""`rosrun PKG EXECUTABLE [ARGS]` (and `ros2 run ...`): start one executable of this project.
+"""`rosrun PKG EXECUTABLE [ARGS]` (and `ros2 run ...`): start one executable of a package.
 
     rosrun ros_tutorials_topic topic_publisher
     rosrun beginner_tutorials talker __name:=my_talker chatter:=other
     rosrun ros_tutorials_parameter dynamics_talker _talker_str:=Goodbye
 
-PKG and EXECUTABLE are the seeds' names, looked up in the launcher's package table
-(launcher/packages.py, the one place that turns them into a command line). The process is
-replaced by the executable (as ROS 1's rosrun does with `exec`), so its output, Ctrl-C and
-exit status are the executable's own.
+PKG and EXECUTABLE are the seeds' names, or any package of the ament index (a learner's own,
+built with colcon: `source install/setup.bash` first), looked up in the launcher's package
+table (launcher/packages.py, the one place that turns them into a command line). The process
+is replaced by the executable (as ROS 1's rosrun does with `exec`), so its output, Ctrl-C and
+exit status are the executable's own; it starts with this project's DDS defaults.
 
 The ROS 1 argument forms the seeds use are translated to ROS 2's:
 
