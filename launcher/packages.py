@@ -74,9 +74,13 @@ MISSING_TOOLS: dict[str, str] = {
     "rqt_bag": "record, inspect and replay with `ros2 bag record`, `ros2 bag info`, "
     "`ros2 bag play` (`rosbag record`, `rosbag info`, `rosbag play`)",
     "rqt_reconfigure": "change parameters with `ros2 param set NODE PARAM VALUE` (`rosparam set`)",
-    "rqt_plot": "watch values with `ros2 topic echo TOPIC` (`ros2 topic hz` for the rate)",
+    "rqt_plot": "plot a topic's numeric field in a browser with `ros2 run ros_tutorials_web "
+    "viewer`, or watch values with `ros2 topic echo TOPIC`",
     "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
-    "rviz": "a ROS 2 installation has it as rviz2",
+    "rviz": "a ROS 2 installation has it as rviz2; to watch turtlesim, the graph and topics "
+    "without one: `ros2 run ros_tutorials_web viewer`",
+    "rviz2": "it is not on PyPI; to watch turtlesim, the graph and topics: "
+    "`ros2 run ros_tutorials_web viewer`",
 }
 
 

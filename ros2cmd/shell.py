@@ -126,3 +126,17 @@ def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
 @quiet_on_closed_pipe
 def rqt(argv: Sequence[str] | None = None) -> int:
     return _say(f"rqt is a GUI tool this project does not have; {packages.MISSING_TOOLS['rqt']}")
+
+
+def rviz(argv: Sequence[str] | None = None) -> int:
+    return _say(f"rviz is a GUI tool this project does not have; {packages.MISSING_TOOLS['rviz']}")
+
+
+def rviz2(argv: Sequence[str] | None = None) -> int:
+    return _say(
+        f"rviz2 is a GUI tool this project does not have; {packages.MISSING_TOOLS['rviz2']}"
+    )
+
+
+def roswtf(argv: Sequence[str] | None = None) -> int:
+    return _say("roswtf is ROS 1's; here: ros2 doctor (or ros2 wtf), ros2 doctor --report")

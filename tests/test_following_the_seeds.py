@@ -286,6 +286,9 @@ def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
         (("roscp", "ros_tutorials_topic", "talker.py", "."), "type: cp "),
         (("roscp", "nope", "a", "b"), "unknown package 'nope'"),
         (("rqt",), "call services with `ros2 service call` (`rosservice call`)"),
+        (("rviz",), "`ros2 run ros_tutorials_web viewer`"),
+        (("rviz2",), "`ros2 run ros_tutorials_web viewer`"),
+        (("roswtf",), "here: ros2 doctor"),
     ],
 )
 def test_ros1_shell_commands_say_what_to_type_instead(command, expected):
