@@ -246,9 +246,11 @@ def test_show_args_prints_as_ros2_launch(tutorial_package):
     ]
 
 
-def test_using_event_handlers_becomes_processes_and_steps_that_wait(tutorial_package):
+def test_using_event_handlers_becomes_processes_and_steps_that_wait(tutorial_package, monkeypatch):
     path = tutorial_package / "example_event_handlers_launch.py"
-    os.environ.setdefault("USER", "learner")  # the page's note: EnvironmentVariable('USER')
+    # The page's note: EnvironmentVariable('USER'). Set for this test only: the session's
+    # environment must stay as the warm-start server imported it (tests/warm.py).
+    monkeypatch.setenv("USER", os.environ.get("USER", "learner"))
     launch, specs = planned(path, use_provided_red="True")
     sim, spawn, purple, pink = specs
     assert sim.when == When()

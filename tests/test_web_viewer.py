@@ -228,7 +228,10 @@ class TestViewer:
         def graph(shown: bool) -> Callable[[Any], Any]:
             def check(item: Any) -> Any:
                 is_graph = isinstance(item, dict) and item.get("type") == "graph"
-                return item if is_graph and (">/talker</text>" in item["svg"]) == shown else None
+                if not is_graph or (">/talker</text>" in item["svg"]) != shown:
+                    return None
+                # The node may be discovered a refresh before its publisher: wait for both.
+                return item if not shown or "/chatter" in item["topics"] else None
 
             return check
 
@@ -237,8 +240,7 @@ class TestViewer:
             talker = await asyncio.to_thread(
                 node_process, str(BIN / "ros2"), "run", "ros_tutorials_topic", "talker"
             )
-            found = await tab.until(graph(True), "the graph with /talker")
-            assert "/chatter" in found["topics"]
+            await tab.until(graph(True), "the graph with /talker and /chatter")
             assert await asyncio.to_thread(talker.interrupt) == 0
             await tab.until(graph(False), "the graph without /talker again")
 
