@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import shlex
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from launcher import packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
@@ -124,18 +124,20 @@ def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
 
 
 @quiet_on_closed_pipe
-def rqt(argv: Sequence[str] | None = None) -> int:
-    return _say(f"rqt is a GUI tool this project does not have; {packages.MISSING_TOOLS['rqt']}")
+def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
+    """A console script for a GUI tool this project does not have: one line, what instead."""
+
+    def say(argv: Sequence[str] | None = None) -> int:
+        return _say(
+            f"{name} is a GUI tool this project does not have; {packages.MISSING_TOOLS[name]}"
+        )
+
+    return say
 
 
-def rviz(argv: Sequence[str] | None = None) -> int:
-    return _say(f"rviz is a GUI tool this project does not have; {packages.MISSING_TOOLS['rviz']}")
-
-
-def rviz2(argv: Sequence[str] | None = None) -> int:
-    return _say(
-        f"rviz2 is a GUI tool this project does not have; {packages.MISSING_TOOLS['rviz2']}"
-    )
+rqt = _missing_gui_tool("rqt")
+rviz = _missing_gui_tool("rviz")
+rviz2 = _missing_gui_tool("rviz2")
 
 
 def roswtf(argv: Sequence[str] | None = None) -> int:

@@ -280,8 +280,8 @@ def default_bag_name() -> str:
     return datetime.datetime.now().strftime("rosbag2_%Y_%m_%d-%H_%M_%S")
 
 
-def _shown(path: Path, most: int = 120) -> str:
-    """A path for an error line: a 5,000-character -O shows its start and its length."""
+def _shown(path: Path | str, most: int = 120) -> str:
+    """A path for an error line: a 5,000-character name shows its start and its length."""
     text = str(path)
     return text if len(text) <= most else f"{text[:most]}... ({len(text)} characters)"
 
@@ -536,8 +536,7 @@ def _metadata_problem(metadata: dict[str, Any]) -> str | None:
         return "relative_file_paths is not a list of file names"
     for name in names or []:
         if not name or len(name) > MAX_FILE_NAME or "/" in name or name in (".", ".."):
-            shown = name if len(name) <= 60 else f"{name[:60]}... ({len(name)} characters)"
-            return f"relative_file_paths names '{shown}', not a file of the bag's folder"
+            return f"relative_file_paths names '{_shown(name, 60)}', not a file of the bag's folder"
     topics = metadata.get("topics_with_message_count")
     if topics is not None and not (
         isinstance(topics, list) and all(isinstance(item, dict) for item in topics)
