@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import signal
 import sys
+import time
 from typing import Any
 
 from action_msgs.msg import GoalStatus
@@ -93,6 +94,29 @@ def info(graph: Graph, action: str, show_types: bool = False, count: bool = Fals
                 print(f"    {node} [{', '.join(entry.types)}]" if show_types else f"    {node}")
 
 
+class _OtherTypes:
+    """Called while send_goal waits: true once the action's servers are seen to offer only
+    other types than the one wanted (then ``seen`` holds them). Asks the graph at most every
+    CHECK_PERIOD seconds."""
+
+    CHECK_PERIOD = 0.25
+
+    def __init__(self, graph: Graph, action: str, wanted: str):
+        self.graph, self.action, self.wanted = graph, action, wanted
+        self.seen: list[str] = []
+        self.next_check = 0.0
+
+    def __call__(self) -> bool:
+        now = time.monotonic()
+        if now < self.next_check:
+            return False
+        self.next_check = now + self.CHECK_PERIOD
+        types = _server_types(self.graph, self.action)
+        if types and self.wanted not in types:
+            self.seen = types
+        return bool(self.seen)
+
+
 def _block(title: str, msg: Any, indent: str = "    ") -> str:
     # ros2action prints `Title:\n    ` + the YAML (which ends with a newline) + print's own
     # newline: the first line indented, a blank line after.
@@ -129,18 +153,22 @@ def send_goal(
     sent = result = None
     try:
         print("Waiting for an action server to become available...", flush=True)
-        if not spin_until(
-            graph.executor, client.server_is_ready, graph.timeout, interrupted=interrupted
-        ):
-            # A server of another type is never ready for this client: say which type it is.
-            types = _server_types(graph, action)
-            wanted = full_type_name(action_type)
-            if types and wanted not in types:
-                raise ToolError(
-                    f"action '{action}' has type {', '.join(types)}, not {wanted} "
-                    f"(`ros2 action type {action}` says its type)"
-                )
+        # A server of another type is never ready for this client: say so once it is seen.
+        wanted = full_type_name(action_type)
+        other_types = _OtherTypes(graph, action, wanted)
+        found = spin_until(
+            graph.executor,
+            lambda: client.server_is_ready() or other_types(),
+            graph.timeout,
+            interrupted=interrupted,
+        )
+        if not found:
             raise ToolError(f"no action server for '{action}' (waited {graph.timeout:g} s)")
+        if other_types.seen:
+            raise ToolError(
+                f"action '{action}' has type {', '.join(other_types.seen)}, not {wanted} "
+                f"(`ros2 action type {action}` says its type)"
+            )
         print(_block("Sending goal", goal, indent="     "), flush=True)
         sent = client.send_goal_async(goal, feedback_callback=on_feedback if feedback else None)
         # From now on the server must stay (client=): one that crashed would never answer.

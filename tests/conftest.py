@@ -24,7 +24,7 @@ from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
 
 from launcher.ament import apply_ament_defaults
-from ros2cmd import daemon
+from ros2cmd import daemon, graph
 from ros2cmd.local_participants import domain_processes
 from ros_tutorials_common.dds import (
     PRIVATE_DOMAIN_IDS,
@@ -97,6 +97,10 @@ def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     apply_ament_defaults()
     # Lists discover for themselves unless a test asks for the daemon (tests/test_daemon.py).
     os.environ[daemon.NO_DAEMON_VARIABLE] = "1"
+    # A tool waits up to 30 s, not 5, for a node, topic or server that is running: once, under
+    # CI's load, `ros2 param load /turtlesim` did not see a running turtlesim within 5 s.
+    # Tests of the "unknown ..." errors give --timeout themselves.
+    os.environ[graph.TIMEOUT_VARIABLE] = str(helpers.TIMEOUT)
     # The processes of this project that the tests start, forked from one that has imported
     # it (tests/warm.py): a third of the CPU a cold start costs.
     helpers.warm = Starter(str(tmp_path_factory.mktemp("warm")))
