@@ -62,6 +62,11 @@ EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
     ("pub_sub", "subscriber"): "num_subscriber",
     ("service", "add_two_int"): "add_two_ints_server",  # seed 003's targets (CMakeLists.txt)
     ("service", "client"): "add_two_ints_client",
+    # seed 004's rospy scripts print what the seed shows ("Receive : ", "Returning [...]")
+    ("my_package", "talker"): "workshop_talker",
+    ("my_package", "listener"): "workshop_listener",
+    ("my_package", "add_two_ints_server"): "workshop_add_two_ints_server",
+    ("my_package", "add_two_ints_client"): "workshop_add_two_ints_client",
 }
 # ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
 # and what does their job here.

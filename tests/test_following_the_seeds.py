@@ -85,7 +85,13 @@ def test_the_seeds_package_names_find_this_projects_executables():
     assert module("service", "add_two_ints_server") == "ros_tutorials_service.add_two_ints_server"
     assert module("service", "add_two_int") == "ros_tutorials_service.add_two_ints_server"
     assert module("service", "client") == "ros_tutorials_service.add_two_ints_client"
-    assert module("my_package", "talker.py") == "ros_tutorials_topic.talker"
+    # Seed 004's rospy scripts print what the seed shows (workshop_*), not seed 001's lines.
+    assert module("my_package", "talker.py") == "ros_tutorials_topic.workshop_talker"
+    assert module("my_package", "listener.py") == "ros_tutorials_topic.workshop_listener"
+    assert (
+        module("my_package", "add_two_ints_client.py")
+        == "ros_tutorials_service.workshop_add_two_ints_client"
+    )
     assert module("my_package", "dynamics_talker.py") == "ros_tutorials_parameter.talker"
     assert module("ros_tutorials_topic", "topic_publisher") == "ros_tutorials_topic.publisher"
     with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
@@ -143,6 +149,24 @@ def test_rosrun_runs_the_seeds_talker_and_listener_with_ros1_arguments(node_proc
     assert listener.interrupt() == 0
 
 
+def test_seed_004s_rospy_scripts_print_what_the_seed_shows(node_process):
+    # The seed: rospy.loginfo("hello world"); rospy.get_caller_id() + "Receive : %s";
+    # print "Ready to add two ints.", "Returning [%s + %s = %s]", "Requesting %s+%s", ...
+    listener = node_process(script("rosrun"), "my_package", "listener.py")
+    talker = node_process(script("rosrun"), "my_package", "talker.py")
+    talker.wait_for_output(lambda lines: any(x.endswith("[talker]: hello world") for x in lines))
+    listener.wait_for_text("[listener]: /listenerReceive : hello world")
+    assert talker.interrupt() == 0 and listener.interrupt() == 0
+    server = node_process(script("rosrun"), "my_package", "add_two_ints_server.py")
+    server.wait_for_text("Ready to add two ints.")
+    client = finished("rosrun", "my_package", "add_two_ints_client.py", "1", "2")
+    assert (client.returncode, client.stdout) == (0, "Requesting 1+2\n1 + 2 = 3\n"), client
+    server.wait_for_text("Returning [1 + 2 = 3]")
+    assert server.interrupt() == 0
+    usage = finished("rosrun", "my_package", "add_two_ints_client.py", "1")
+    assert usage.returncode == 1 and usage.stdout.endswith(" [x y]\n"), usage
+
+
 def test_rosrun_private_parameter_and_ros2cli_run(node_process):
     talker = node_process(
         script("ros2"), "run", "my_package", "dynamics_talker.py", "_talker_str:=Goodbye"
@@ -154,7 +178,7 @@ def test_rosrun_private_parameter_and_ros2cli_run(node_process):
 def test_roslaunch_is_the_launcher_and_finds_the_seeds_launch_files():
     result = finished("roslaunch", "my_package", "talker.launch", "--print")
     assert result.returncode == 0, result.stderr
-    assert "ros_tutorials_topic.talker" in result.stdout and "/talker" in result.stdout
+    assert "ros_tutorials_topic.workshop_talker" in result.stdout and "/talker" in result.stdout
     result = finished("roslaunch", "ros_tutorials_topic", "union.launch", "--print")
     assert result.returncode == 0 and result.stdout.count("ros_tutorials_topic.publisher") == 2
     result = finished("roslaunch", "my_package", "nope.launch")

@@ -1,0 +1,47 @@
+"""AddTwoInts server of seed 004 (the "ROS Overview" workshop's add_two_ints_server.py).
+
+Serves AddTwoInts on ``add_two_ints`` and prints, as the seed does, "Ready to add two ints."
+and "Returning [a + b = sum]" for each request.
+
+    ros2 run ros_tutorials_service workshop_add_two_ints_server
+    (or, as the seed: rosrun my_package add_two_ints_server.py)
+"""
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from ros_tutorials_interfaces.srv import AddTwoInts
+
+INT64 = 2**63
+
+
+class AddTwoIntsServer(Node):
+    def __init__(self):
+        super().__init__("add_two_ints_server", enable_logger_service=True)
+        self.srv = self.create_service(AddTwoInts, "add_two_ints", self.handle_add_two_ints)
+        print("Ready to add two ints.", flush=True)
+
+    def handle_add_two_ints(self, req, response):
+        total = req.a + req.b
+        if not -INT64 <= total < INT64:  # Python's ints do not overflow; int64 does
+            print(f"Cannot return [{req.a} + {req.b}]: the sum does not fit in int64", flush=True)
+            return response  # sum 0
+        print(f"Returning [{req.a} + {req.b} = {total}]", flush=True)
+        response.sum = total
+        return response
+
+
+def main(args=None):
+    rclpy.init(args=args)
+    node = AddTwoIntsServer()
+    try:
+        rclpy.spin(node)  # rospy.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+
+if __name__ == "__main__":
+    main()
