@@ -168,7 +168,7 @@ class TestTheTopicsPage:
     def test_a_wrong_type_is_said_not_waited_for_in_silence(self, turtlesim):
         # ros2cli waits (pub --once) or prints nothing (echo) for ever, without a word.
         color = "turtlesim/msg/Color"
-        echo = run("ros2", "topic", "echo", "/turtle1/pose", color, "--timeout", "3")
+        echo = run("ros2", "topic", "echo", "/turtle1/pose", color, "--timeout", "8")
         assert echo.returncode == 0 and echo.stdout == ""
         assert echo.stderr == (
             "warning: /turtle1/pose carries turtlesim/msg/Pose, not turtlesim/msg/Color: "
