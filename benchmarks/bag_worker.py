@@ -3,6 +3,8 @@
     python -m benchmarks.bag_worker publish SECONDS   1 kHz MsgTutorial + 30 Hz 1 MB Image
     python -m benchmarks.bag_worker listen COUNT      receive COUNT messages, note arrival times
     python -m benchmarks.bag_worker bare              a raw subscription that only counts
+    python -m benchmarks.bag_worker publish_many N SECONDS   N topics of MsgTutorial at 1 kHz each
+    python -m benchmarks.bag_worker bare_many N       a plain rclpy subscriber per topic, counting
 
 Each prints one JSON line on stdout when done ("ready" lines before that).
 """
@@ -10,6 +12,7 @@ Each prints one JSON line on stdout when done ("ready" lines before that).
 from __future__ import annotations
 
 import json
+import signal
 import sys
 import time
 
@@ -130,6 +133,68 @@ def bare() -> dict:
     return {"tutorial": counts[TUTORIAL_TOPIC], "image": counts[IMAGE_TOPIC]}
 
 
+MANY_TOPIC = "/bench_many_{}"
+MANY_SUBSCRIBERS = 2  # the recorder and the bare subscriber, in the same run
+
+
+def publish_many(topics: int, seconds: float) -> dict:
+    """TOPICS topics at 1 kHz each (a burst of one message per topic every millisecond)."""
+    node = Node("bag_bench_many_publisher")
+    publishers = [
+        node.create_publisher(MsgTutorial, MANY_TOPIC.format(i), QOS) for i in range(topics)
+    ]
+    print("ready", flush=True)
+    deadline = time.monotonic() + 120
+    while min(p.get_subscription_count() for p in publishers) < MANY_SUBSCRIBERS:
+        if time.monotonic() > deadline:
+            raise SystemExit("not every topic had its subscribers within 120 s")
+        time.sleep(0.01)
+    time.sleep(1.0)  # the recorder prints and settles after subscribing
+    print("publishing", flush=True)
+    sent = 0
+    start = next_tick = time.monotonic()
+    msg = MsgTutorial()
+    while time.monotonic() - start < seconds:
+        msg.stamp = node.get_clock().now().to_msg()
+        msg.data = sent
+        for publisher in publishers:
+            publisher.publish(msg)
+        sent += topics
+        next_tick += 0.001
+        wait = next_tick - time.monotonic()
+        if wait > 0:
+            time.sleep(wait)
+    for publisher in publishers:
+        publisher.wait_for_all_acked(Duration(seconds=30))
+    elapsed = time.monotonic() - start
+    return {"sent": sent, "seconds": elapsed, "rate": sent / elapsed / topics}
+
+
+def bare_many(topics: int) -> dict:
+    """The baseline: one plain rclpy subscription per topic (raw, as the recorder's), whose
+    callback counts; spun by rclpy.spin."""
+    node = Node("bag_bench_bare_many")
+    received = [0]
+
+    def count(_data: bytes) -> None:
+        received[0] += 1
+
+    for i in range(topics):
+        node.create_subscription(MsgTutorial, MANY_TOPIC.format(i), count, RECORDER_QOS, raw=True)
+    stopped: list[int] = []
+    signal.signal(signal.SIGINT, lambda number, _frame: stopped.append(number))  # a flag only
+    print("Subscribed", flush=True)
+    while not stopped:
+        rclpy.spin_once(node, timeout_sec=0.1)
+    deadline = time.monotonic() + 5  # what has arrived still counts, as for the recorder
+    while time.monotonic() < deadline:
+        before = received[0]
+        rclpy.spin_once(node, timeout_sec=0.05)
+        if received[0] == before:
+            break
+    return {"received": received[0]}
+
+
 def main() -> None:
     init([sys.argv[0]], signal_handler_options=SignalHandlerOptions.NO)
     kind = sys.argv[1]
@@ -137,6 +202,10 @@ def main() -> None:
         result = publish(float(sys.argv[2]))
     elif kind == "listen":
         result = listen(int(sys.argv[2]))
+    elif kind == "publish_many":
+        result = publish_many(int(sys.argv[2]), float(sys.argv[3]))
+    elif kind == "bare_many":
+        result = bare_many(int(sys.argv[2]))
     else:
         result = bare()
     print(json.dumps(result), flush=True)
