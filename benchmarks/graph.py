@@ -104,16 +104,17 @@ def lists(runs: int = 10) -> list[Row]:
 
 def picture(runs: int = 5) -> list[Row]:
     """Layout and drawing alone (no ROS), for a made-up graph of 50 nodes and 100 topics."""
-    from ros2cmd import graph_view
+    from ros2cmd.graph_view.model import example_model
+    from ros2cmd.graph_view.render import write
 
-    model = graph_view.example_model(50, 100)
+    model = example_model(50, 100)
     rows = []
     with tempfile.TemporaryDirectory() as out:
         for suffix in ("svg", "png"):
             seconds = []
             for _ in range(runs):
                 began = time.monotonic()
-                graph_view.write(model, Path(out) / f"g.{suffix}")
+                write(model, Path(out) / f"g.{suffix}")
                 seconds.append(time.monotonic() - began)
             rows.append(
                 Row(

@@ -64,6 +64,23 @@ class WallHit:
 
 
 @dataclass
+class AbsoluteTeleport:
+    """A queued teleport_absolute: to this pose."""
+
+    x: float
+    y: float
+    theta: float
+
+
+@dataclass
+class RelativeTeleport:
+    """A queued teleport_relative: turn by angular, then move linear along the new heading."""
+
+    linear: float
+    angular: float
+
+
+@dataclass
 class Turtle:
     name: str
     x: float
@@ -75,7 +92,7 @@ class Turtle:
     angular: float = 0.0
     last_command: float = -math.inf  # time of the last velocity command (s, any clock)
     pen: Pen = field(default_factory=Pen)
-    teleports: list[tuple[str, float, float, float]] = field(default_factory=list)
+    teleports: list[AbsoluteTeleport | RelativeTeleport] = field(default_factory=list)
 
     def command_velocity(
         self, linear_x: float, linear_y: float, angular: float, now: float
@@ -88,10 +105,10 @@ class Turtle:
 
     def teleport_absolute(self, x: float, y: float, theta: float) -> None:
         """Queued, and done at the next update (as turtlesim does)."""
-        self.teleports.append(("absolute", x, y, theta))
+        self.teleports.append(AbsoluteTeleport(x, y, theta))
 
     def teleport_relative(self, linear: float, angular: float) -> None:
-        self.teleports.append(("relative", linear, 0.0, angular))
+        self.teleports.append(RelativeTeleport(linear, angular))
 
     @property
     def linear_speed(self) -> float:
@@ -100,15 +117,16 @@ class Turtle:
     def update(self, dt: float, now: float) -> tuple[list[Stroke], WallHit | None]:
         """One simulation step of dt seconds; returns the pen strokes and any wall hit."""
         strokes = []
-        for kind, a, b, c in self.teleports:
+        for teleport in self.teleports:
             start = (self.x, self.y)
-            if kind == "relative":
-                self.theta += c
-                self.x += math.cos(self.theta) * a
-                self.y += math.sin(self.theta) * a
+            if isinstance(teleport, RelativeTeleport):
+                self.theta += teleport.angular
+                self.x += math.cos(self.theta) * teleport.linear
+                self.y += math.sin(self.theta) * teleport.linear
             else:
                 # as turtlesim: y is kept below the top edge here, the rest is clamped below
-                self.x, self.y, self.theta = a, min(b, WORLD_SIZE), c
+                self.x, self.y = teleport.x, min(teleport.y, WORLD_SIZE)
+                self.theta = teleport.theta
             strokes += self._draw(start)
         self.teleports.clear()
 

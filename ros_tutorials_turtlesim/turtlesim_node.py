@@ -22,6 +22,7 @@ The simulation (``simulation.py``) is apart from the drawing (``canvas.py``).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 import os
@@ -42,8 +43,11 @@ from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.logging import get_logger
 from rclpy.node import Node
 from rclpy.parameter import Parameter
+from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rclpy.service import Service
 from rclpy.signals import SignalHandlerOptions
+from rclpy.subscription import Subscription
 from rclpy.task import Future
 from sensor_msgs.msg import CompressedImage
 from std_srvs.srv import Empty, Trigger
@@ -94,12 +98,32 @@ class WindowClosed(Exception):
 
 
 @dataclass
+class TurtleEndpoints:
+    """One turtle's ROS endpoints, each by its name."""
+
+    cmd_vel: Subscription
+    pose: Publisher
+    color_sensor: Publisher
+    set_pen: Service
+    teleport_absolute: Service
+    teleport_relative: Service
+    rotate_absolute: ActionServer
+
+    def destroy_topics_and_services(self, node: Node) -> None:
+        """All but the action server, which a kill leaves until its goal's result is out."""
+        node.destroy_subscription(self.cmd_vel)
+        for publisher in (self.pose, self.color_sensor):
+            node.destroy_publisher(publisher)
+        for service in (self.set_pen, self.teleport_absolute, self.teleport_relative):
+            node.destroy_service(service)
+
+
+@dataclass
 class TurtleEntry:
-    """One turtle and its ROS endpoints."""
+    """One turtle, its ROS endpoints and its rotate_absolute goal."""
 
     turtle: Turtle
-    endpoints: list = field(default_factory=list)
-    action_server: ActionServer | None = None
+    endpoints: TurtleEndpoints = field(init=False)  # made once the entry exists (callbacks)
     goal: ServerGoalHandle | None = None
     goal_start: float = 0.0
     goal_delta: float = 0.0
@@ -260,8 +284,7 @@ class TurtlesimNode(Node):
         # An action server holds the node: destroyed first, so that destroy_node() really
         # ends it (and its /rosout publisher) rather than later, with the line below failing.
         for entry in [*self.turtles.values(), *self._retired]:
-            if entry.action_server is not None:
-                entry.action_server.destroy()
+            entry.endpoints.rotate_absolute.destroy()
         self.destroy_node()
         if wanted:
             try:
@@ -327,7 +350,7 @@ class TurtlesimNode(Node):
         """The turtle's pose and colour sensor, to whoever subscribes: a message nobody
         receives is not made (with 200 turtles, making them held the updates to 31 Hz)."""
         turtle = entry.turtle
-        publisher_pose, publisher_color = entry.endpoints[1], entry.endpoints[2]
+        publisher_pose, publisher_color = entry.endpoints.pose, entry.endpoints.color_sensor
         if publisher_pose.get_subscription_count():
             publisher_pose.publish(
                 Pose(
@@ -358,14 +381,7 @@ class TurtlesimNode(Node):
                 return ""
             turtle = Turtle(name, x, y, theta, index=self._spawned)
             entry = TurtleEntry(turtle)
-            try:
-                self._create_endpoints(entry, name)
-            except Exception:  # nothing of a turtle that could not be made stays behind
-                for endpoint in entry.endpoints:
-                    self._destroy(endpoint)
-                if entry.action_server is not None:
-                    entry.action_server.destroy()
-                raise
+            entry.endpoints = self._create_endpoints(entry, name)
             self._spawned += 1
             self.turtles[name] = entry
             self._changes += 1
@@ -374,42 +390,53 @@ class TurtlesimNode(Node):
         )
         return name
 
-    def _create_endpoints(self, entry: TurtleEntry, name: str) -> None:
+    def _create_endpoints(self, entry: TurtleEntry, name: str) -> TurtleEndpoints:
+        """The turtle's endpoints; should one fail, those made before it are destroyed, so
+        nothing of a turtle that could not be made stays behind."""
         qos = topic_qos()
-        entry.endpoints.append(
-            self.create_subscription(
+        with contextlib.ExitStack() as undo:
+            cmd_vel = self.create_subscription(
                 Twist, f"{name}/cmd_vel", lambda msg: self._on_cmd_vel(entry, msg), qos
             )
-        )
-        entry.endpoints.append(self.create_publisher(Pose, f"{name}/pose", qos))
-        entry.endpoints.append(self.create_publisher(Color, f"{name}/color_sensor", qos))
-        entry.endpoints.append(
-            self.create_service(
+            undo.callback(self.destroy_subscription, cmd_vel)
+            pose = self.create_publisher(Pose, f"{name}/pose", qos)
+            undo.callback(self.destroy_publisher, pose)
+            color_sensor = self.create_publisher(Color, f"{name}/color_sensor", qos)
+            undo.callback(self.destroy_publisher, color_sensor)
+            set_pen = self.create_service(
                 SetPen, f"{name}/set_pen", lambda rq, rs: self._on_set_pen(entry, rq, rs)
             )
-        )
-        entry.endpoints.append(
-            self.create_service(
+            undo.callback(self.destroy_service, set_pen)
+            teleport_absolute = self.create_service(
                 TeleportAbsolute,
                 f"{name}/teleport_absolute",
                 lambda rq, rs: self._on_teleport_absolute(entry, rq, rs),
             )
-        )
-        entry.endpoints.append(
-            self.create_service(
+            undo.callback(self.destroy_service, teleport_absolute)
+            teleport_relative = self.create_service(
                 TeleportRelative,
                 f"{name}/teleport_relative",
                 lambda rq, rs: self._on_teleport_relative(entry, rq, rs),
             )
-        )
-        entry.action_server = ActionServer(
-            self,
-            RotateAbsolute,
-            f"{name}/rotate_absolute",
-            execute_callback=functools.partial(self._execute_rotation, entry),
-            goal_callback=functools.partial(self._check_rotation_goal, entry),
-            handle_accepted_callback=lambda handle: self._accept_rotation(entry, handle),
-            cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+            undo.callback(self.destroy_service, teleport_relative)
+            rotate_absolute = ActionServer(
+                self,
+                RotateAbsolute,
+                f"{name}/rotate_absolute",
+                execute_callback=functools.partial(self._execute_rotation, entry),
+                goal_callback=functools.partial(self._check_rotation_goal, entry),
+                handle_accepted_callback=lambda handle: self._accept_rotation(entry, handle),
+                cancel_callback=lambda _handle: CancelResponse.ACCEPT,
+            )
+            undo.pop_all()  # all made: they stay
+        return TurtleEndpoints(
+            cmd_vel,
+            pose,
+            color_sensor,
+            set_pen,
+            teleport_absolute,
+            teleport_relative,
+            rotate_absolute,
         )
 
     def _name_problem(self, name: str) -> str | None:
@@ -435,20 +462,11 @@ class TurtlesimNode(Node):
                 return False
             entry.alive = False
             self._finish_rotation(entry, "abort")
-            for endpoint in entry.endpoints:
-                self._destroy(endpoint)
+            entry.endpoints.destroy_topics_and_services(self)
             # The action server goes once the goal it just ended has sent its result.
             self._retired.append(entry)
             self._changes += 1
         return True
-
-    def _destroy(self, endpoint) -> None:
-        if hasattr(endpoint, "publish"):
-            self.destroy_publisher(endpoint)
-        elif hasattr(endpoint, "srv_type"):
-            self.destroy_service(endpoint)
-        else:
-            self.destroy_subscription(endpoint)
 
     def _retire_action_servers(self, now: float) -> None:
         for entry in list(self._retired):
@@ -457,7 +475,7 @@ class TurtlesimNode(Node):
             if entry.retire_at is None:
                 entry.retire_at = now + 0.1  # a few updates for the result to go out
             elif now >= entry.retire_at:
-                entry.action_server.destroy()
+                entry.endpoints.rotate_absolute.destroy()
                 self._retired.remove(entry)
 
     def _on_spawn(self, request: Spawn.Request, response: Spawn.Response) -> Spawn.Response:

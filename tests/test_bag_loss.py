@@ -8,7 +8,8 @@ from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 
 from ros2cmd.bag.loss import LOST_PREFIX, LossCount, lost_in
-from ros2cmd.bag.storage import BagWriter, TopicInfo
+from ros2cmd.bag.metadata import TopicInfo
+from ros2cmd.bag.writer import BagWriter
 
 
 def test_sequence_gaps_count_while_the_topic_has_one_publisher():

@@ -18,15 +18,10 @@ from pathlib import Path
 import pytest
 from helpers import TIMEOUT, NodeProcess
 
-from ros2cmd import graph_view
-from ros2cmd.graph_view import (
-    GROUP_LABEL,
-    PAD_X,
-    GraphModel,
-    layout,
-    monospace_measure,
-)
-from ros2cmd.graph_view import example_model as generated_model
+from ros2cmd.graph_view import render
+from ros2cmd.graph_view.layout import GROUP_LABEL, PAD_X, layout, monospace_measure
+from ros2cmd.graph_view.model import GraphModel, Vertex
+from ros2cmd.graph_view.model import example_model as generated_model
 
 BIN = Path(sys.executable).parent
 
@@ -79,26 +74,26 @@ def test_layout_of_50_nodes_and_100_topics_has_no_overlapping_labels(tmp_path):
     assert sum(v.kind == "node" for v in model.vertices.values()) == 50
     assert sum(v.kind == "topic" for v in model.vertices.values()) == 100
     lay = check_readable(model, monospace_measure(12))
-    graph_view.write(model, tmp_path / "generated.png")  # to look at: pytest --basetemp=DIR
+    render.write(model, tmp_path / "generated.png")  # to look at: pytest --basetemp=DIR
     assert lay.edges
 
 
 def test_layout_without_groups_and_with_the_png_font_is_readable_too(tmp_path):
     model = generated_model(seed=3)
     flat = GraphModel(
-        {k: graph_view.Vertex(v.key, v.label, v.kind, "/") for k, v in model.vertices.items()},
+        {k: Vertex(v.key, v.label, v.kind, "/") for k, v in model.vertices.items()},
         model.edges,
     )
     check_readable(flat, monospace_measure(12))
-    pygame = graph_view._pygame(headless=True)
-    font = pygame.font.Font(None, graph_view.PNG_FONT_SIZE + 4)
-    check_readable(model, graph_view.pygame_measure(font))
+    pygame = render.load_pygame(headless=True)
+    font = pygame.font.Font(None, render.PNG_FONT_SIZE + 4)
+    check_readable(model, render.pygame_measure(font))
 
 
 def test_svg_png_and_dot_files(tmp_path):
     model = generated_model(nodes=10, topics=12)
     for suffix in ("svg", "png", "dot"):
-        graph_view.write(model, tmp_path / f"g.{suffix}")
+        render.write(model, tmp_path / f"g.{suffix}")
     svg = ET.parse(tmp_path / "g.svg").getroot()
     ns = "{http://www.w3.org/2000/svg}"
     assert len(svg.findall(f"{ns}ellipse")) == 12

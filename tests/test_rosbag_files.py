@@ -30,8 +30,12 @@ from rclpy.serialization import serialize_message
 from rosbags.rosbag2 import Reader
 from std_msgs.msg import String
 
-from ros2cmd.bag import definitions, storage
-from ros2cmd.bag.storage import BagError, BagReader, BagWriter, TopicInfo
+from ros2cmd.bag import definitions, offered_qos
+from ros2cmd.bag import writer as bag_writer
+from ros2cmd.bag.errors import BagError
+from ros2cmd.bag.metadata import TopicInfo
+from ros2cmd.bag.reader import BagReader
+from ros2cmd.bag.writer import BagWriter
 from ros2cmd.errors import ToolError
 
 ROS2_BAGS = Path(__file__).parent / "data" / "ros2_bags"
@@ -234,14 +238,14 @@ def test_other_bad_requests_are_one_line(ros_domain, small_bag) -> None:
 
 def test_a_full_disk_stops_the_write_and_keeps_what_was_written(tmp_path, monkeypatch) -> None:
     """Unit test: the .mcap file's writes fail with ENOSPC after 20 kB."""
-    real_write = storage._File.write
+    real_write = bag_writer._File.write
 
     def write(self, data):
         if self.offset + len(data) > 20_000:
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
         return real_write(self, data)
 
-    monkeypatch.setattr(storage._File, "write", write)
+    monkeypatch.setattr(bag_writer._File, "write", write)
     writer = BagWriter(tmp_path / "full", chunk_size=2_000, flush_period=3600)
     writer.add_topic(TopicInfo("/words", "std_msgs/msg/String"), "string data\n", "ros2msg")
     with pytest.raises(BagError, match="No space left on device") as failure:
@@ -404,11 +408,11 @@ def test_definitions_follow_rosbag2() -> None:
 
 def test_qos_of_every_metadata_version_reads_as_names() -> None:
     old = "- history: 3\n  depth: 0\n  reliability: 2\n  durability: 1\n"
-    assert storage.qos_profiles_from_yaml(old)[0]["reliability"] == "best_effort"
-    assert storage.qos_profiles_from_yaml(old)[0]["durability"] == "transient_local"
+    assert offered_qos.qos_profiles_from_yaml(old)[0]["reliability"] == "best_effort"
+    assert offered_qos.qos_profiles_from_yaml(old)[0]["durability"] == "transient_local"
     new = [{"history": "keep_last", "reliability": "reliable", "durability": "volatile"}]
-    assert storage.qos_profiles_from_yaml(new)[0]["reliability"] == "reliable"
-    assert storage.qos_profiles_from_yaml("") == []
+    assert offered_qos.qos_profiles_from_yaml(new)[0]["reliability"] == "reliable"
+    assert offered_qos.qos_profiles_from_yaml("") == []
 
 
 def _with_metadata(tmp_path: Path, small_bag: Path, change) -> Path:

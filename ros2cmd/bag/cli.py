@@ -162,7 +162,7 @@ def _run_play(graph: Any, bag: str, options: Any) -> None:
 
 
 def _reindex(path: str) -> None:
-    from ros2cmd.bag.storage import reindex
+    from ros2cmd.bag.reindex import reindex
 
     bag = reindex(path)
     print(f"Reindexed {path}: {bag.message_count} messages, metadata.yaml rewritten")

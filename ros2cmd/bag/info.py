@@ -11,7 +11,8 @@ from __future__ import annotations
 import sys
 import time
 
-from ros2cmd.bag.storage import NS, Bag, BagReader, TopicInfo
+from ros2cmd.bag.metadata import NS, TopicInfo
+from ros2cmd.bag.reader import Bag, BagReader
 
 
 def _stamp(nanoseconds: int) -> tuple[str, str, str]:

@@ -33,8 +33,10 @@ from rclpy.serialization import deserialize_message
 
 from ros2cmd.bag.info import is_service_event_topic, service_name, service_type
 from ros2cmd.bag.keyboard import Keyboard
+from ros2cmd.bag.mcap_file import BagMessage
+from ros2cmd.bag.metadata import NS, TopicInfo
+from ros2cmd.bag.reader import BagReader
 from ros2cmd.bag.record import message_class
-from ros2cmd.bag.storage import NS, BagMessage, BagReader, TopicInfo
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import load_type

@@ -33,17 +33,14 @@ from rclpy.node import Node
 from rclpy.qos import HistoryPolicy, QoSProfile
 
 from ros2cmd.bag import definitions
+from ros2cmd.bag.errors import BagError
 from ros2cmd.bag.info import is_service_event_topic, ros1_info, service_type
 from ros2cmd.bag.keyboard import Keyboard
 from ros2cmd.bag.loss import LossCount
-from ros2cmd.bag.storage import (
-    BagError,
-    BagReader,
-    BagWriter,
-    TopicInfo,
-    default_bag_name,
-    qos_to_dict,
-)
+from ros2cmd.bag.metadata import TopicInfo
+from ros2cmd.bag.offered_qos import qos_to_dict
+from ros2cmd.bag.reader import BagReader
+from ros2cmd.bag.writer import BagWriter, default_bag_name
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, is_hidden
 from ros2cmd.qos import compatible_qos
