@@ -467,9 +467,8 @@ launch:
 
 def test_deprecated_launch_file_says_so(tmp_path):
     path = write(tmp_path, "t.launch.xml", '<launch deprecated="use other.launch.xml"/>')
-    assert resolved(path).warnings == [
-        f"{path}:1: t.launch.xml is deprecated: use other.launch.xml"
-    ]
+    # ros2 launch's own words: [WARNING] [launch]: launch file [PATH] is deprecated: MESSAGE
+    assert resolved(path).warnings == [f"launch file [{path}] is deprecated: use other.launch.xml"]
 
 
 @pytest.mark.parametrize("fmt", ["xml", "py"])
