@@ -70,17 +70,17 @@ def _bounded(value: Any) -> Any:
 
 def _power(base: Any, exponent: Any) -> Any:
     # Checked before computing: 9 ** 9 ** 9 would take minutes only to be refused after.
-    if isinstance(base, int) and isinstance(exponent, int) and abs(base) > 1:
-        if exponent * max(base.bit_length() - 1, 1) > MAX_INT_BITS:
-            raise OverflowError(f"an integer of more than {MAX_INT_BITS} bits")
+    big = isinstance(base, int) and isinstance(exponent, int) and abs(base) > 1
+    if big and exponent * max(base.bit_length() - 1, 1) > MAX_INT_BITS:
+        raise OverflowError(f"an integer of more than {MAX_INT_BITS} bits")
     return base**exponent
 
 
 def _repeat(left: Any, right: Any) -> Any:
     for sequence, count in ((left, right), (right, left)):  # 'ab' * 3 or 3 * 'ab'
-        if isinstance(sequence, (str, list, tuple)) and isinstance(count, int):
-            if count * len(sequence) > MAX_LENGTH:
-                raise OverflowError(f"a value longer than {MAX_LENGTH} items")
+        repeated = isinstance(sequence, (str, list, tuple)) and isinstance(count, int)
+        if repeated and count * len(sequence) > MAX_LENGTH:
+            raise OverflowError(f"a value longer than {MAX_LENGTH} items")
     return left * right
 
 

@@ -602,8 +602,9 @@ class Resolver:
             for name, value in scope.args.items():
                 if name not in parent.args or parent.args[name] != value:
                     parent.args[name] = value
-                    parent.leaked[name] = where
                     parent.inherited.discard(name)
+                    if given.get(name) != value:  # not what the includer passed itself
+                        parent.leaked[name] = where
         return scope
 
     def _resolve_python(self, path: Path, scope: Scope, strict: bool) -> None:
@@ -792,7 +793,8 @@ class Resolver:
             value = scope.given[name]
         elif scope.fmt == "ros2" and name in scope.args:  # ros2 launch keeps a value set before
             value = scope.args[name]
-            if name in scope.inherited:
+            if name in scope.inherited:  # said once, here, not again where it is read
+                scope.inherited.discard(name)
                 self.warn(
                     f"{element.where}: argument {name!r} is {value!r}, the value of the file "
                     "including this one (not passed to it), not its default; ros2 launch lets "
@@ -991,7 +993,7 @@ class Resolver:
             namespace = join_namespace(namespace, self.text(element, "param", scope))
         if command == "dump":  # roslaunch wrote the parameter server to a file at the start
             self.warn(
-                f"{element.where}: <rosparam command=\"dump\"> does nothing: ROS 2 has no "
+                f'{element.where}: <rosparam command="dump"> does nothing: ROS 2 has no '
                 "parameter server (`ros2 param dump NODE` saves a node's parameters)"
             )
             return
@@ -1044,7 +1046,8 @@ class Resolver:
     # -- tags: processes ----------------------------------------------------------------------
 
     @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
-                          "required", "launch_prefix", "clear_params"}, marks={"type", "ns", "clear_params"})  # fmt: skip
+                          "required", "launch_prefix", "clear_params"},
+         marks={"type", "ns", "clear_params"})  # fmt: skip
     @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args"} | PROCESS_ATTRS,
          marks={"exec", "namespace", "ros_args"})  # fmt: skip
     @tag("ros2", "executable", {"cmd", "name", "cwd"} | PROCESS_ATTRS)
