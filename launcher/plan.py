@@ -115,6 +115,8 @@ def _process_name(node: NodeDecl, command: list[str]) -> str:
     file name (turtlesim_node, ros2; with a launch-prefix, the prefix's program)."""
     if node.label:
         return node.label
+    if node.cmd is not None and node.name:  # <executable name=...>
+        return node.name
     if node.launch_prefix or node.cmd is not None:
         return os.path.basename(command[0])
     return node.executable or os.path.basename(command[0])

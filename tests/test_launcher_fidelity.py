@@ -9,7 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from helpers import run
+from helpers import fails, ok, run
 
 from launcher import CodeRefused, LaunchError
 from launcher.parse import parse_file
@@ -337,3 +337,19 @@ def test_a_deprecated_launch_file_prints_its_message(tmp_path):
     result = run("ros2", "launch", str(path), "--print")
     assert "command: true" in result.stdout
     assert result.stderr == f"warning: launch file [{path}] is deprecated: use new.launch.xml\n"
+
+
+def test_code_in_a_launch_file_is_refused_with_the_command_that_allows_it(tmp_path):
+    # Real launchers evaluate $(eval) with Python; here only what needs no code runs by itself
+    # (the Using-Substitutions YAML file does), and the rest asks for --allow-code.
+    path = write(
+        tmp_path,
+        "t.launch.xml",
+        """<launch><executable cmd="echo $(eval &quot;'a'.upper()&quot;)"/></launch>""",
+    )
+    line = fails("ros2", "launch", str(path), "--print")
+    assert line == (
+        f"error: {path}:1: $(eval 'a'.upper()) runs code written in the launch file "
+        f"('a'.upper()); to allow it, run: ros2 launch {path} --print --allow-code"
+    )
+    assert "command: echo A" in ok("ros2", "launch", str(path), "--print", "--allow-code")
