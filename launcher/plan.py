@@ -150,7 +150,9 @@ def make_plan(
         command = node.launch_prefix + command
         _check_program(command[0], node.where)
         label = _label(node)
-        full_name = "/" + label if node.name and node.cmd is None else None
+        full_name = None  # the node's own name, whatever its process is called (exec_name)
+        if node.name and node.cmd is None:
+            full_name = f"{node.namespace.rstrip('/')}/{node.name}"
         if full_name in named:
             raise LaunchError(
                 f"{node.where}: a second node named {full_name} "

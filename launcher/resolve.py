@@ -460,6 +460,54 @@ def _ros2_value(text: str) -> Any:
     return text if value is None or isinstance(value, dict) else value
 
 
+# launch's type names for a ROS 2 <param type=...>: the type, and whether it is a list of it.
+ROS2_TYPES: dict[str, tuple[type | None, bool]] = {
+    "str": (str, False), "int": (int, False), "float": (float, False), "bool": (bool, False),
+    "list_of_str": (str, True), "list_of_int": (int, True), "list_of_float": (float, True),
+    "list_of_bool": (bool, True), "yaml": (None, False),
+}  # fmt: skip
+PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep"})
+
+
+def _ros2_scalar(text: str, kind: type | None, element: Element) -> Any:
+    """One value of a ROS 2 parameter as launch's coerce_to_type reads it."""
+    if kind is None:
+        return _ros2_value(text)
+    if kind is str:
+        return text
+    if kind is bool and text in ("1", "0"):  # launch takes 1 and 0 for true and false
+        text = {"1": "true", "0": "false"}[text]
+    try:
+        value = kind(text) if kind in (int, float) else _ros2_value(text)
+    except ValueError:
+        value = None
+    if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+        name = element.attrs.get("name", "")
+        raise element.error(f"param {name!r}: {text!r} is not {kind.__name__}")
+    return value
+
+
+def _ros2_typed(texts: str | list[str], type_name: str | None, element: Element) -> Any:
+    """A ROS 2 parameter's value from its text (or texts, split by value-sep) and type."""
+    if type_name is not None and type_name not in ROS2_TYPES:
+        known = ", ".join(ROS2_TYPES)
+        raise element.error(f"unknown parameter type {type_name!r}; use one of {known}")
+    kind, is_list = ROS2_TYPES[type_name] if type_name else (None, False)
+    if isinstance(texts, list):
+        if type_name is not None and not is_list and kind is not None:
+            raise element.error(f"value-sep makes a list: use type='list_of_{type_name}'")
+        return [_ros2_scalar(text, kind, element) for text in texts]
+    if not is_list:
+        return _ros2_scalar(texts, kind, element)
+    items = _ros2_value(texts)
+    if not isinstance(items, list) or not all(
+        isinstance(item, kind) and not (kind is int and isinstance(item, bool)) for item in items
+    ):
+        name = element.attrs.get("name", "")
+        raise element.error(f"param {name!r}: {texts!r} is not a list of {kind.__name__}")
+    return items
+
+
 def _load_yaml(text: str, element: Element) -> Any:
     """YAML written in (or read by) a launch file, within the limits of bounded.load_yaml."""
     try:
@@ -931,16 +979,32 @@ class Resolver:
         scope.env[self.env_name(element, scope)] = None
 
     @tag("ros2", "set_parameter", {"name", "value"})
-    @tag("ros2", "param", {"name", "value", "from"}, under={"node"})
-    def on_ros2_param(self, element: Element, scope: Scope) -> None:
+    @tag("ros2", "param", PARAM_ATTRS, under={"node"}, marks={"value_sep"})
+    def on_ros2_param(self, element: Element, scope: Scope, prefix: str = "") -> None:
+        """A node's parameter (or <set_parameter>), typed as launch_ros types it: by YAML, or by
+        its ``type``; ``value-sep`` makes a list; ``<param name="group">`` holds ``<param>``s."""
         if "from" in element.attrs:  # a params file, checked now: the child would fail on it later
             path = Path(self.text(element, "from", scope))
             path = path if path.is_absolute() else scope.file.parent / path
             _check_params_file(element, path)
             scope.params_files.append(str(path))
             return
-        value = _ros2_value(self.text(element, "value", scope))
-        name = self.text(element, "name", scope)
+        name = prefix + self.text(element, "name", scope)
+        if element.children:  # a group of parameters: their names start with its own
+            if {"value", "type"} & element.attrs.keys():
+                raise element.error("<param> holds either a value or <param>s, not both")
+            for child in element.children:
+                _check_tag(child, {"param": PARAM_ATTRS - {"from"}}, scope, "param")
+                if self.enabled(child, scope):
+                    self.on_ros2_param(child, scope, name + ".")
+            return
+        if "value_sep" in element.attrs:  # each item substituted and typed on its own
+            separator = element.attrs["value_sep"]
+            items = element.attrs.get("value", "").split(separator) if separator else []
+            texts: str | list[str] = [substitute(item, scope, element) for item in items]
+        else:
+            texts = self.text(element, "value", scope)
+        value = _ros2_typed(texts, element.attrs.get("type"), element)
         _check_params(element, None, name, value)
         entry = (name, value)
         scope.params.append(entry)
@@ -951,7 +1015,7 @@ class Resolver:
     # <node>: the node's private namespace).
 
     @tag("ros1", "param", {"name", "value", "type", "textfile", "binfile"},
-         under={"launch", "node"}, marks={"type", "textfile", "binfile"})  # fmt: skip
+         under={"launch", "node"}, marks={"textfile", "binfile"})  # fmt: skip
     def on_ros1_param(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
         if "binfile" in element.attrs:
@@ -1048,7 +1112,8 @@ class Resolver:
     @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
                           "required", "launch_prefix", "clear_params"},
          marks={"type", "ns", "clear_params"})  # fmt: skip
-    @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args"} | PROCESS_ATTRS,
+    @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args", "exec_name"}
+         | PROCESS_ATTRS,
          marks={"exec", "namespace", "ros_args"})  # fmt: skip
     @tag("ros2", "executable", {"cmd", "name", "cwd"} | PROCESS_ATTRS)
     def on_process(self, element: Element, scope: Scope) -> None:
@@ -1138,6 +1203,7 @@ class Resolver:
             launch_prefix=launch_prefix,
             cwd=cwd,
             when=scope.when,
+            label=self.text(element, "exec_name", scope, "") or None,  # its output prefix
         )
         self.add_node(node)
         if ros1:

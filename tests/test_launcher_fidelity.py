@@ -353,3 +353,90 @@ def test_code_in_a_launch_file_is_refused_with_the_command_that_allows_it(tmp_pa
         f"('a'.upper()); to allow it, run: ros2 launch {path} --print --allow-code"
     )
     assert "command: echo A" in ok("ros2", "launch", str(path), "--print", "--allow-code")
+
+
+# -- launch_ros: a node's parameters in XML and YAML (test_node_frontend.py) ------------------
+
+NODE_XML = """<launch>
+  <let name="a_list" value="[2, 5, 8]"/><let name="my_value" value="100"/>
+  <node pkg="ros_tutorials_topic" exec="talker" name="my_talker" namespace="my_ns"
+        exec_name="my_talker_process" ros_args="--log-level info">
+    <param name="param1" value="ads"/>
+    <param name="param_group1">
+      <param name="param_group2"><param name="param2" value="2"/></param>
+      <param name="param3" value="2, 5, 8" value-sep=", "/>
+      <param name="param4" value="$(var a_list)"/>
+      <param name="param6" value="2., 5., 8." value-sep=", "/>
+      <param name="param7" value="'2', '5', '8'" value-sep=", "/>
+      <param name="param8" value-sep=", "
+             value="&quot;'2'&quot;, &quot;'5'&quot;, &quot;'8'&quot;"/>
+      <param name="param12" value="''"/>
+      <param name="param13" value="$(var my_value)" type="str"/>
+      <param name="param14" value="'2', '5', '8'" value-sep=", " type="list_of_str"/>
+      <param name="param15" value="2, 5, 8" value-sep=", " type="list_of_str"/>
+    </param>
+  </node>
+</launch>"""
+NODE_YAML = """launch:
+- let: {name: a_list, value: '[2, 5, 8]'}
+- let: {name: my_value, value: '100'}
+- node:
+    pkg: ros_tutorials_topic
+    exec: talker
+    name: my_talker
+    namespace: my_ns
+    exec_name: my_talker_process
+    ros_args: --log-level info
+    param:
+    - {name: param1, value: ads}
+    - name: param_group1
+      param:
+      - name: param_group2
+        param:
+        - {name: param2, value: 2}
+      - {name: param3, value: [2, 5, 8]}
+      - {name: param4, value: $(var a_list)}
+      - {name: param6, value: [2., 5., 8.]}
+      - {name: param7, value: ['2', '5', '8']}
+      - {name: param8, value: ["'2'", "'5'", "'8'"]}
+      - {name: param12, value: ''}
+      - {name: param13, value: $(var my_value), type: str}
+      - {name: param14, value: ["'2'", "'5'", "'8'"], type: list_of_str}
+      - {name: param15, value: ['2', '5', '8'], type: list_of_str}
+"""
+
+
+@pytest.mark.parametrize(("name", "text"), [("t.launch.xml", NODE_XML), ("t.yaml", NODE_YAML)])
+def test_node_parameters_as_launch_ros_types_them(tmp_path, name, text):
+    _, nodes = planned(write(tmp_path, name, text))
+    node = nodes["/my_ns/my_talker"]
+    assert node.process_name == "my_talker_process"  # exec_name: the process, not the node
+    assert node.command[-2:] == ["--log-level", "info"]
+    group = "param_group1."
+    assert dict(node.params) == {
+        "param1": "ads",
+        group + "param_group2.param2": 2,
+        group + "param3": [2, 5, 8],
+        group + "param4": [2, 5, 8],
+        group + "param6": [2.0, 5.0, 8.0],
+        group + "param7": ["2", "5", "8"],
+        group + "param8": ["'2'", "'5'", "'8'"],
+        group + "param12": "",
+        group + "param13": "100",
+        group + "param14": ["'2'", "'5'", "'8'"],
+        group + "param15": ["2", "5", "8"],
+    }
+
+
+@pytest.mark.parametrize(
+    ("param", "error"),
+    [
+        ('<param name="p" value="x" type="int"/>', "param 'p': 'x' is not int"),
+        ('<param name="p" value="[1, 2]" type="list_of_str"/>', "is not a list of str"),
+        ('<param name="p" value="1" type="double"/>', "unknown parameter type 'double'"),
+        ('<param name="g" value="1"><param name="p" value="1"/></param>', "either a value or"),
+    ],
+)
+def test_node_parameter_types_are_checked(tmp_path, param, error):
+    text = f'<launch><node {PKG} exec="talker">{param}</node></launch>'
+    assert error in raised(write(tmp_path, "t.launch.xml", text))
