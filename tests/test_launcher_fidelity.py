@@ -440,3 +440,31 @@ def test_node_parameters_as_launch_ros_types_them(tmp_path, name, text):
 def test_node_parameter_types_are_checked(tmp_path, param, error):
     text = f'<launch><node {PKG} exec="talker">{param}</node></launch>'
     assert error in raised(write(tmp_path, "t.launch.xml", text))
+
+
+def test_a_python_file_and_the_xml_file_it_includes_share_configurations(tmp_path):
+    child = ros2_file(tmp_path, "child.launch.xml", '<let name="mode" value="fast"/>\n'
+                      '<executable cmd="echo $(var robot)"/>')  # fmt: skip
+    parent = write(
+        tmp_path,
+        "parent.launch.py",
+        """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess, IncludeLaunchDescription
+from launch.launch_description_sources import AnyLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r2'),
+        IncludeLaunchDescription(AnyLaunchDescriptionSource('child.launch.xml')),
+        ExecuteProcess(cmd=['echo', LaunchConfiguration('mode')]),
+    ])
+""",
+    )
+    launch = resolve(parent, {}, Options())
+    assert [spec.command for spec in make_plan(launch)] == [["echo", "r2"], ["echo", "fast"]]
+    assert launch.warnings == [
+        f"{child}:3: 'robot' ('r2') is not passed to this file but comes from the file "
+        "including it; ros2 launch lets it in (its includes are not scoped)"
+    ]
