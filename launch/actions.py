@@ -410,10 +410,10 @@ class IncludeLaunchDescription(Action):
             path = context.scope.file.parent / path
         if not path.is_file():
             raise self.error(f"included launch file {path} does not exist")
-        # As ros2 launch: the included file sees the includer's launch configurations too.
-        given = dict(context.launch_configurations)
-        for name, value in self.launch_arguments:
-            given[perform(name, context)] = perform(value, context)
+        # The included file sees the includer's launch configurations too, and what it sets
+        # stays set after it (ros2 launch does not scope includes; resolve_file does this).
+        given = {perform(name, context): perform(value, context)
+                 for name, value in self.launch_arguments}  # fmt: skip
         try:
             context.resolver.resolve_file(path, given, context.scope, strict=False)
         except RecursionError:

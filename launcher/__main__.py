@@ -18,11 +18,12 @@ if __name__ == "__main__":
     signal.signal(signal.SIGINT, _interrupted_before_start)
 
 import argparse
+import shlex
 import sys
 import traceback
 from pathlib import Path
 
-from launcher import LaunchError, ament, guardian, packages
+from launcher import CodeRefused, LaunchError, ament, guardian, packages
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
@@ -92,6 +93,9 @@ def program() -> str:
     """The launcher's name as the user typed it: roslaunch, ros2 launch, or python -m launcher."""
     name = Path(sys.argv[0]).name
     return {"roslaunch": "roslaunch", "ros2": "ros2 launch"}.get(name, "python -m launcher")
+
+
+_program_name = program  # main's argument of that name hides it
 
 
 def _shipped() -> dict[str, list[Path]]:
@@ -203,6 +207,8 @@ def main(
     options = build_parser(program).parse_intermixed_args(argv)
     if standalone is None:
         standalone = argv is None
+    name = program or _program_name()
+    ros2 = name == "ros2 launch"  # speaks as ros2 launch does
     try:
         names, args = split_words(options.words)
         path = find_launch_file(names)
@@ -217,12 +223,16 @@ def main(
             error = LaunchError("the launch file is nested too deeply")
         if isinstance(error, LaunchFileRaised):  # the Python launch file's own lines
             print(error.traceback, file=sys.stderr, end="")
+        if isinstance(error, CodeRefused):  # exactly what to type to allow it
+            words = shlex.join(sys.argv[1:] if argv is None else argv)
+            error = f"{error.what}; to allow it, run: {name} {words} --allow-code"
         print(f"error: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         return 130
-    for warning in launch.warnings:  # at start, before the plan or the first process
-        print(f"warning: {warning}", file=sys.stderr, flush=True)
+    if options.print or not ros2:  # at start, before the plan or the first process
+        for warning in launch.warnings:
+            print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
         return _print_and_end(format_plan(specs, launch.messages, launch.steps))
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
@@ -235,9 +245,12 @@ def main(
         return 1
     if standalone:  # the program itself: from here on this process is the launcher's
         guardian.guard()  # guardian, and the launcher goes on in a child
-    for message in launch.messages:
-        print(f"[launcher] {message}", flush=True)
-    return Supervisor(specs, log_dir, options.debug, launch.steps).run()
+    if not ros2:  # ros2 launch says them after where its logs are (the supervisor does)
+        for message in launch.messages:
+            print(f"[launcher] {message}", flush=True)
+    return Supervisor(
+        specs, log_dir, options.debug, launch.steps, ros2, launch.warnings, launch.messages
+    ).run()
 
 
 if __name__ == "__main__":

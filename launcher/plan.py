@@ -33,6 +33,7 @@ class ProcessSpec:
     label: str  # output prefix and log file name: the node's full name without the first /
     command: list[str]
     where: str  # file:line of the declaration
+    process_name: str = ""  # ros2 launch's name for it, before its number: the executable's
     node: str | None = None  # full node name, if it is a named ROS node
     env: dict[str, str | None] = field(default_factory=dict)  # changes; None unsets
     output: str = "log"
@@ -109,6 +110,18 @@ def _check_program(program: str, where: str) -> None:
     raise LaunchError(f"{where}: program {program!r} not found")
 
 
+def _process_name(node: NodeDecl, command: list[str]) -> str:
+    """What ros2 launch calls the process (then -N): the name given to it, else its program's
+    file name (turtlesim_node, ros2; with a launch-prefix, the prefix's program)."""
+    if node.label:
+        return node.label
+    if node.cmd is not None and node.name:  # <executable name=...>
+        return node.name
+    if node.launch_prefix or node.cmd is not None:
+        return os.path.basename(command[0])
+    return node.executable or os.path.basename(command[0])
+
+
 def _label(node: NodeDecl) -> str:
     if node.label:
         return node.label
@@ -137,7 +150,9 @@ def make_plan(
         command = node.launch_prefix + command
         _check_program(command[0], node.where)
         label = _label(node)
-        full_name = "/" + label if node.name and node.cmd is None else None
+        full_name = None  # the node's own name, whatever its process is called (exec_name)
+        if node.name and node.cmd is None:
+            full_name = f"{node.namespace.rstrip('/')}/{node.name}"
         if full_name in named:
             raise LaunchError(
                 f"{node.where}: a second node named {full_name} "
@@ -153,6 +168,7 @@ def make_plan(
                 label=label,
                 command=command,
                 where=node.where,
+                process_name=_process_name(node, command),
                 node=full_name,
                 env=node.env,
                 output="screen" if screen else node.output,

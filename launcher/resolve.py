@@ -214,12 +214,39 @@ class Scope:
     # sibling groups may each declare one name), an included file none.
     declared: dict[str, int] = field(default_factory=dict)
     when: When = AT_START  # inside a <timer> or an event handler: later
+    note: str = ""  # ends an unknown tag or attribute error: why the file was read in this format
+    # ROS 1: included with pass_all_args (a fixed <arg value> then wins over the passed one);
+    # the arguments declared without a value (an error only where one is used: name -> line);
+    # the ~params written outside a <node>, for the nodes after them: (name, value, where).
+    pass_all: bool = False
+    unset: dict[str, int] = field(default_factory=dict)
+    private: list[tuple[str, Any, str]] = field(default_factory=list)
+    in_node: bool = False
+    # ROS 2 includes are not scoped: the configurations that came in from the including file
+    # without being passed, and those an included file let out (name -> where it was set).
+    inherited: set[str] = field(default_factory=set)
+    leaked: dict[str, str] = field(default_factory=dict)
 
     def child(self, **changes: Any) -> Scope:
         copies = {"args": dict(self.args), "remaps": list(self.remaps), "params": list(self.params),
                   "params_files": list(self.params_files), "env": dict(self.env),
-                  "declared": dict(self.declared)}  # fmt: skip
+                  "declared": dict(self.declared), "unset": dict(self.unset),
+                  "private": list(self.private), "inherited": set(self.inherited),
+                  "leaked": dict(self.leaked)}  # fmt: skip
         return replace(self, **{**copies, **changes})
+
+    def read_arg(self, name: str, element: Element) -> str:
+        """The value of argument (launch configuration) ``name`` where ``element`` uses it."""
+        if name in self.args:
+            self.resolver.note_read(self, name, element)
+            return self.args[name]
+        if name in self.unset:  # roslaunch fails only where such an argument is used
+            raise element.error(
+                f"argument {name!r} is required (declared at line {self.unset[name]} without "
+                f"a value): pass {name}:=<value>"
+            )
+        known = ", ".join(sorted(self.args)) or "none"
+        raise element.error(f"argument {name!r} is not declared here (declared: {known})")
 
     @property
     def allow_code(self) -> bool:
@@ -251,64 +278,107 @@ def valid_name(name: str) -> bool:
     return _TOKEN.fullmatch(name) is not None
 
 
-def _written_in(fmt: str, element: Element) -> bool:
-    """Whether ``element`` uses syntax only ``fmt`` has: a tag or a marking attribute."""
-    known = TAGS[fmt].get(element.tag)
-    if known is None:
-        return False
-    return element.tag not in TAGS["ros2" if fmt == "ros1" else "ros1"] or bool(
-        known.marks & element.attrs.keys()
-    )
+# Substitutions only one format has: a sign of the file's format as good as a tag.
+_SUBSTITUTION_SIGNS = {
+    "ros1": re.compile(r"\$\(\s*(arg|find|optenv)\s"),
+    "ros2": re.compile(r"\$\(\s*(var|find-pkg-share|find-pkg-prefix|find-exec|not|and|or|equals"
+                       r"|command)\s"),
+}  # fmt: skip
+# roslaunch tags this launcher does not run: a sign of a ROS 1 file, and why each is refused.
+ROS1_UNSUPPORTED = {
+    "machine": "remote machines are roslaunch's (ROS 2 nodes find each other by discovery: "
+    "start the node on that machine)",
+    "test": "<test> belongs to rostest, which ROS 2 replaced with launch_testing",
+}
+# Where an element stands, as TAGS' ``under`` names it.
+_PLACE = {"launch": "launch", "group": "launch", "timer": "launch", "node": "node",
+          "executable": "executable"}  # fmt: skip
+
+
+def _sign(fmt: str, element: Element, parent: str) -> str | None:
+    """What in ``element`` (a child of a ``parent`` place) only ``fmt`` has: its tag, a tag in
+    that place, an attribute (``<arg value>``, ``<node type>``) or a substitution; else None."""
+    if fmt == "ros1" and element.tag in ROS1_UNSUPPORTED:
+        return f"<{element.tag}>"
+    other = TAGS["ros2" if fmt == "ros1" else "ros1"]
+    known, theirs = TAGS[fmt].get(element.tag), other.get(element.tag)
+    if known is not None and parent in known.under:
+        if theirs is None:
+            return f"<{element.tag}>"
+        if parent not in theirs.under:
+            return f"<{element.tag}> in <{parent}>"
+        marks = sorted(known.marks & element.attrs.keys())
+        if marks:
+            return f"<{element.tag} {element.spelled.get(marks[0], marks[0])}=...>"
+    for value in element.attrs.values():
+        if found := _SUBSTITUTION_SIGNS[fmt].search(value):
+            return f"$({found[1]} ...)"
+    return None
+
+
+def detect(root: Element) -> tuple[str, str]:
+    """The file's format, "ros1" or "ros2", from every sign of one in it (else from its name),
+    and why, for the errors a wrong guess would cause."""
+    first: dict[str, tuple[Element, str] | None] = {"ros1": None, "ros2": None}
+    stack = [(child, "launch") for child in reversed(root.children)]
+    while stack:  # in the file's order, so the first sign is the earliest line
+        element, parent = stack.pop()
+        place = _PLACE.get(element.tag, element.tag)
+        stack.extend((child, place) for child in reversed(element.children))
+        for fmt, found in first.items():
+            if found is None and (sign := _sign(fmt, element, parent)):
+                first[fmt] = (element, sign)
+    if root.file.suffix in YAML_SUFFIXES:  # launch_yaml is a ROS 2 front-end only
+        return "ros2", "a YAML launch file"
+    ros1, ros2 = first["ros1"], first["ros2"]
+    if ros1 and ros2:
+        raise LaunchError(
+            f"{root.file}: mixes ROS 1 syntax (line {ros1[0].line}: {ros1[1]}) "
+            f"and ROS 2 syntax (line {ros2[0].line}: {ros2[1]})"
+        )
+    for fmt, found in first.items():
+        if found:
+            return fmt, f"line {found[0].line}: {found[1]}"
+    if root.file.name.endswith(".launch"):
+        return "ros1", "nothing in it is only ROS 1 or only ROS 2, and its name ends in .launch"
+    return "ros2", "nothing in it is only ROS 1 or only ROS 2, and its name is not *.launch"
 
 
 def detect_format(root: Element) -> str:
     """ "ros1" or "ros2", from the syntax used in the file (else from its name)."""
-    first: dict[str, Element | None] = {"ros1": None, "ros2": None}  # the first in its syntax
-    stack = [root]
-    while stack:
-        element = stack.pop()
-        stack.extend(element.children)
-        for fmt, found in first.items():
-            if found is None and _written_in(fmt, element):
-                first[fmt] = element
-    if root.file.suffix in YAML_SUFFIXES:  # launch_yaml is a ROS 2 front-end only
-        return "ros2"
-    ros1, ros2 = first["ros1"], first["ros2"]
-    if ros1 and ros2:
-        raise LaunchError(
-            f"{root.file}: mixes ROS 1 syntax (line {ros1.line}: <{ros1.tag}>) "
-            f"and ROS 2 syntax (line {ros2.line}: <{ros2.tag}>)"
-        )
-    if ros1 or ros2:
-        return "ros1" if ros1 else "ros2"
-    return "ros1" if root.file.name.endswith(".launch") else "ros2"
+    return detect(root)[0]
 
 
-def _check(element: Element, allowed: set[str] | frozenset[str]) -> None:
+def _check(element: Element, allowed: set[str] | frozenset[str], note: str = "") -> None:
+    """Only ``allowed`` attributes (and if/unless); ``note`` ends the error (the format)."""
     for name in element.attrs:
         if name not in allowed | CONDITIONS:
             known = ", ".join(sorted(SPELLING.get(a, a) for a in allowed | CONDITIONS))
             written = element.spelled.get(name, name)  # as the file wrote it
             raise element.error(
-                f"unknown attribute {written!r} on <{element.tag}>; allowed: {known}"
+                f"unknown attribute {written!r} on <{element.tag}>; allowed: {known}{note}"
             )
     if "if" in element.attrs and "unless" in element.attrs:
         raise element.error("use either 'if' or 'unless', not both")
 
 
-def _check_tag(element: Element, allowed: dict, fmt: str, parent: str) -> None:
+def _check_tag(element: Element, allowed: dict, scope: Scope, parent: str) -> None:
     """``element`` is one of the ``allowed`` tags (tag -> attributes) under ``parent``."""
+    fmt = scope.fmt
     if fmt == "ros2" and element.tag in ("node_container", "load_composable_node"):
         raise element.error(
             f"<{element.tag}>: rclpy has no component container in ROS 2 Jazzy, so composable "
             "nodes cannot be loaded here; start each component as a <node> of its own"
         )
+    if fmt == "ros1" and element.tag in ROS1_UNSUPPORTED:
+        raise element.error(f"<{element.tag}> is not supported: {ROS1_UNSUPPORTED[element.tag]}")
     if element.tag not in allowed:
         known = ", ".join(f"<{name}>" for name in sorted(allowed))
         raise element.error(
             f"unknown tag <{element.tag}> in <{parent}> ({SYNTAX[fmt]} format); allowed: {known}"
+            f"{scope.note}"
         )
-    _check(element, allowed[element.tag])
+    _check(element, allowed[element.tag], scope.note)
 
 
 def _file_args(root: Element) -> list[Element]:
@@ -390,6 +460,54 @@ def _ros2_value(text: str) -> Any:
     return text if value is None or isinstance(value, dict) else value
 
 
+# launch's type names for a ROS 2 <param type=...>: the type, and whether it is a list of it.
+ROS2_TYPES: dict[str, tuple[type | None, bool]] = {
+    "str": (str, False), "int": (int, False), "float": (float, False), "bool": (bool, False),
+    "list_of_str": (str, True), "list_of_int": (int, True), "list_of_float": (float, True),
+    "list_of_bool": (bool, True), "yaml": (None, False),
+}  # fmt: skip
+PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep"})
+
+
+def _ros2_scalar(text: str, kind: type | None, element: Element) -> Any:
+    """One value of a ROS 2 parameter as launch's coerce_to_type reads it."""
+    if kind is None:
+        return _ros2_value(text)
+    if kind is str:
+        return text
+    if kind is bool and text in ("1", "0"):  # launch takes 1 and 0 for true and false
+        text = {"1": "true", "0": "false"}[text]
+    try:
+        value = kind(text) if kind in (int, float) else _ros2_value(text)
+    except ValueError:
+        value = None
+    if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+        name = element.attrs.get("name", "")
+        raise element.error(f"param {name!r}: {text!r} is not {kind.__name__}")
+    return value
+
+
+def _ros2_typed(texts: str | list[str], type_name: str | None, element: Element) -> Any:
+    """A ROS 2 parameter's value from its text (or texts, split by value-sep) and type."""
+    if type_name is not None and type_name not in ROS2_TYPES:
+        known = ", ".join(ROS2_TYPES)
+        raise element.error(f"unknown parameter type {type_name!r}; use one of {known}")
+    kind, is_list = ROS2_TYPES[type_name] if type_name else (None, False)
+    if isinstance(texts, list):
+        if type_name is not None and not is_list and kind is not None:
+            raise element.error(f"value-sep makes a list: use type='list_of_{type_name}'")
+        return [_ros2_scalar(text, kind, element) for text in texts]
+    if not is_list:
+        return _ros2_scalar(texts, kind, element)
+    items = _ros2_value(texts)
+    if not isinstance(items, list) or not all(
+        isinstance(item, kind) and not (kind is int and isinstance(item, bool)) for item in items
+    ):
+        name = element.attrs.get("name", "")
+        raise element.error(f"param {name!r}: {texts!r} is not a list of {kind.__name__}")
+    return items
+
+
 def _load_yaml(text: str, element: Element) -> Any:
     """YAML written in (or read by) a launch file, within the limits of bounded.load_yaml."""
     try:
@@ -452,6 +570,30 @@ class Resolver:
         self.ros1_nodes: list[NodeDecl] = []
         # ROS 2: each <set_parameter>'s entry, to tell whether a node after it received it.
         self.set_parameters: list[tuple[tuple[str, Any], str]] = []
+        # ROS 1: each ~param written outside a <node> (name, where) -> whether a node got it.
+        self.private_given: dict[tuple[str, str], bool] = {}
+        self.reads: dict[Path, set[str]] = {}  # the arguments each file reads
+
+    def warn(self, text: str) -> None:
+        """A warning printed before the launch starts (once, however often it is found)."""
+        if text not in self.warnings:
+            self.warnings.append(text)
+
+    def note_read(self, scope: Scope, name: str, element: Element) -> None:
+        """``element`` reads argument ``name``: say so where the value crossed an include
+        (ros2 launch does not scope includes; roslaunch and this launcher's ROS 1 files do)."""
+        self.reads.setdefault(scope.file, set()).add(name)
+        value = scope.args[name]
+        if name in scope.inherited:
+            self.warn(
+                f"{element.where}: {name!r} ({value!r}) is not passed to this file but comes "
+                "from the file including it; ros2 launch lets it in (its includes are not scoped)"
+            )
+        elif name in scope.leaked:
+            self.warn(
+                f"{element.where}: {name!r} ({value!r}) was set by {scope.leaked[name]}; "
+                "ros2 launch lets it out (its includes are not scoped)"
+            )
 
     def anon(self, name: str) -> str:
         if name not in self.anon_names:
@@ -468,40 +610,74 @@ class Resolver:
         strict: bool = True,
         include: Element | None = None,
         given_at: dict[str, Element] | None = None,
-    ) -> None:
+    ) -> Scope:
+        """Read one launch file with the ``given`` argument values, included from ``parent``
+        (None: the file the user named). Returns the file's scope as it ends."""
         path = path.resolve()
         if path in self.include_chain:
             chain = " -> ".join(str(p) for p in [*self.include_chain, path])
             message = f"launch files include each other in a loop: {chain}"
             raise include.error(message) if include else LaunchError(message)
-        if path.name.endswith(".py"):  # the Python front-end (launch and launch_ros)
-            from launcher.python_files import resolve_python_file
+        is_python = path.name.endswith(".py")
+        root = None if is_python else parse_file(path)
+        fmt, why = ("ros2", "") if root is None else detect(root)
+        # ros2 launch does not scope includes: an included ROS 2 file sees every launch
+        # configuration of the file including it, and what it sets stays set after it.
+        unscoped = parent is not None and parent.fmt == "ros2" and fmt == "ros2"
+        if parent is None:
+            scope = Scope(self, path, fmt, {}, given)
+        elif unscoped:
+            inherited = set(parent.args) - set(given)
+            scope = parent.child(file=path, fmt=fmt, args={**parent.args, **given}, given=given,
+                                 declared={}, inherited=inherited, leaked={})  # fmt: skip
+        else:  # roslaunch: with pass_all_args every passed argument is usable, declared or not
+            args = dict(given) if parent.pass_all else {}
+            scope = parent.child(file=path, fmt=fmt, args=args, given=given, declared={},
+                                 unset={}, inherited=set(), leaked={})  # fmt: skip
+        if why.startswith("nothing"):  # a guess from the file name: say so where it matters
+            scope.note = f" (read as {SYNTAX[fmt]} launch XML: {why})"
+        self.include_chain.append(path)
+        try:
+            if root is None:  # the Python front-end (launch and launch_ros)
+                self._resolve_python(path, scope, strict=strict and parent is None)
+            else:  # (resolve_scope counts how deep groups and includes are nested)
+                self._resolve_root(root, scope, strict and not unscoped, given_at)
+        finally:
+            self.include_chain.pop()
+        if unscoped:
+            assert parent is not None
+            where = f"{path.name} (included at line {include.line})" if include else path.name
+            for name, value in scope.args.items():
+                if name not in parent.args or parent.args[name] != value:
+                    parent.args[name] = value
+                    parent.inherited.discard(name)
+                    if given.get(name) != value:  # not what the includer passed itself
+                        parent.leaked[name] = where
+        return scope
 
-            if parent is None:
-                scope = Scope(self, path, "ros2", {}, given)
-            else:
-                scope = parent.child(file=path, fmt="ros2", args={}, given=given, declared={})
-            self.include_chain.append(path)
-            self.depth += 1
-            try:
-                if self.depth > MAX_DEPTH:
-                    raise LaunchError(f"{path}: includes nested more than {MAX_DEPTH} deep")
-                resolve_python_file(path, scope, strict=strict and parent is None)
-            finally:
-                self.depth -= 1
-                self.include_chain.pop()
-            return
-        root = parse_file(path)
+    def _resolve_python(self, path: Path, scope: Scope, strict: bool) -> None:
+        from launcher.python_files import resolve_python_file
+
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise LaunchError(f"{path}: includes nested more than {MAX_DEPTH} deep")
+            resolve_python_file(path, scope, strict)
+        finally:
+            self.depth -= 1
+
+    def _resolve_root(
+        self, root: Element, scope: Scope, strict: bool, given_at: dict[str, Element] | None
+    ) -> None:
+        """The <launch> of an XML or YAML file: its deprecation, its arguments, its entities."""
+        path = scope.file
         _check(root, {"deprecated"})
         if "deprecated" in root.attrs:  # ros2 launch prints the file's own deprecation message
-            self.warnings.append(
-                f"{root.where}: {path.name} is deprecated: {root.attrs['deprecated']}"
-            )
-        fmt = detect_format(root)
+            self.warn(f"launch file [{path}] is deprecated: {root.attrs['deprecated']}")
         declared = {element.attrs.get("name") for element in _file_args(root)}
-        unknown = sorted(set(given) - declared) if strict else []
-        if unknown:
-            names = ", ".join(sorted(n for n in declared if n)) or "none"
+        unknown = sorted(set(scope.given) - declared)
+        names = ", ".join(sorted(n for n in declared if n)) or "none"
+        if unknown and strict:
             if given_at and unknown[0] in given_at:  # an <include>'s <arg>: name its line
                 raise given_at[unknown[0]].error(
                     f"no argument named {', '.join(unknown)} is declared in {path.name} "
@@ -510,13 +686,13 @@ class Resolver:
             raise LaunchError(
                 f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
             )
-        if parent is None:
-            scope = Scope(self, path, fmt, {}, given)
-        else:
-            scope = parent.child(file=path, fmt=fmt, args={}, given=given, declared={})
-        self.include_chain.append(path)
         self.resolve_scope(root, scope)
-        self.include_chain.pop()
+        for name in unknown:  # ros2 launch sets them all the same; nothing here reads this one
+            if name not in self.reads.get(path, set()) and given_at and name in given_at:
+                self.warn(
+                    f"{given_at[name].where}: {path.name} declares no argument {name!r} and "
+                    f"does not read it (declared: {names})"
+                )
 
     def resolve_scope(self, element: Element, scope: Scope) -> None:
         """The children of <launch> or <group>, one level deeper (a recursion is refused)."""
@@ -532,7 +708,7 @@ class Resolver:
         """Each enabled child of ``element``, by the handler its format registered for its tag."""
         allowed = allowed_tags(scope.fmt, parent)
         for child in element.children:
-            _check_tag(child, allowed, scope.fmt, element.tag)
+            _check_tag(child, allowed, scope, element.tag)
             if self.enabled(child, scope):
                 TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
@@ -551,6 +727,10 @@ class Resolver:
             if not any(param is entry for node in self.nodes for param in node.params):
                 why = "no <node> follows it in its scope"
                 _add_once(unreached.setdefault((where, why), []), entry[0])
+        for (name, where), given in self.private_given.items():
+            if not given:
+                why = "no <node> follows it in its scope"
+                _add_once(unreached.setdefault((where, why), []), "~" + name)
         warnings = [
             f"{where}: param {', '.join(map(repr, names))} "
             f"{'is' if len(names) == 1 else 'are'} given to no node: {why}"
@@ -612,6 +792,14 @@ class Resolver:
             raise element.error(f"{name!r} is {text} s; at most {MAX_SECONDS:.0f} s (a day)")
         return value
 
+    def clear_params(self, element: Element, scope: Scope) -> None:
+        """roslaunch's clear_params: checked as roslaunch checks it, and otherwise nothing to do:
+        a ROS 2 node's parameters start empty (there is no parameter server to clear)."""
+        if self.flag(element, "clear_params", scope):
+            where = "name" if element.tag == "node" else "ns"
+            if where not in element.attrs:
+                raise element.error(f"clear_params on <{element.tag}> needs a '{where}'")
+
     def enabled(self, element: Element, scope: Scope) -> bool:
         if "if" in element.attrs:
             return to_bool(self.text(element, "if", scope), element, "'if'")
@@ -630,8 +818,8 @@ class Resolver:
 
     # -- tags: arguments, scopes, includes ----------------------------------------------------
 
-    @tag("ros1", "arg", {"name", "default", "value", "doc"})
-    @tag("ros2", "arg", {"name", "default", "description"})
+    @tag("ros1", "arg", {"name", "default", "value", "doc"}, marks={"value", "doc"})
+    @tag("ros2", "arg", {"name", "default", "description"}, marks={"description"})
     def on_arg(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
         fixed = "value" in element.attrs  # ROS 1: a constant, not an argument
@@ -642,15 +830,29 @@ class Resolver:
             )
         scope.declared[name] = element.line
         for child in element.children:
-            _check_tag(child, {"choice": {"value"}}, scope.fmt, "arg")
-        if fixed and name in scope.given:
+            _check_tag(child, {"choice": {"value"}}, scope, "arg")
+        # A fixed value cannot be set from outside, except by pass_all_args, which it overrides
+        # (roslaunch's own tests load such files).
+        if fixed and name in scope.given and not scope.pass_all:
             raise element.error(f"argument {name!r} has a fixed value and cannot be set")
-        if name in scope.given:
-            value = scope.given[name]
-        elif fixed:
+        if fixed:
             value = self.text(element, "value", scope)
+        elif name in scope.given:
+            value = scope.given[name]
+        elif scope.fmt == "ros2" and name in scope.args:  # ros2 launch keeps a value set before
+            value = scope.args[name]
+            if name in scope.inherited:  # said once, here, not again where it is read
+                scope.inherited.discard(name)
+                self.warn(
+                    f"{element.where}: argument {name!r} is {value!r}, the value of the file "
+                    "including this one (not passed to it), not its default; ros2 launch lets "
+                    "it in (its includes are not scoped)"
+                )
         elif "default" in element.attrs:
             value = self.text(element, "default", scope)
+        elif scope.fmt == "ros1":  # roslaunch fails only where such an argument is used
+            scope.unset[name] = element.line
+            return
         else:
             raise element.error(f"argument {name!r} is required: pass {name}:=<value>")
         choices = [self.text(child, "value", scope) for child in element.children]
@@ -662,12 +864,13 @@ class Resolver:
     def on_let(self, element: Element, scope: Scope) -> None:
         scope.args[self.text(element, "name", scope)] = self.text(element, "value", scope)
 
-    @tag("ros1", "group", {"ns"}, marks={"ns"})
+    @tag("ros1", "group", {"ns", "clear_params"}, marks={"ns", "clear_params"})
     def on_ros1_group(self, element: Element, scope: Scope) -> None:
+        self.clear_params(element, scope)
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         self.resolve_scope(element, scope.child(namespace=ns))
 
-    @tag("ros2", "group", {"scoped"})
+    @tag("ros2", "group", {"scoped"}, marks={"scoped"})
     def on_ros2_group(self, element: Element, scope: Scope) -> None:
         scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
         self.resolve_scope(element, scope.child() if scoped else scope)
@@ -676,25 +879,38 @@ class Resolver:
     def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
         scope.namespace = self.namespace(element, "namespace", scope)
 
-    @tag("ros1", "include", {"file", "ns", "pass_all_args"})
+    @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
+         marks={"ns", "pass_all_args", "clear_params"})  # fmt: skip
     @tag("ros2", "include", {"file"})
     def on_include(self, element: Element, scope: Scope) -> None:
         path = Path(self.text(element, "file", scope))
         if not path.is_absolute():  # relative to the including file, not the current directory
             path = scope.file.parent / path
         pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
+        self.clear_params(element, scope)
         given = dict(scope.args) if pass_all else {}
         given_at = {}
+        inner = scope.child(pass_all=pass_all)  # what the included file starts with
+        allowed = {"arg": {"name", "value"}}
+        if scope.fmt == "ros1":  # roslaunch: an <env> in <include> is for the included nodes
+            allowed["env"] = {"name", "value"}
         for child in element.children:
-            _check_tag(child, {"arg": {"name", "value"}}, scope.fmt, "include")
-            if self.enabled(child, scope):
-                name = self.text(child, "name", scope)
-                given[name] = self.text(child, "value", scope)
-                given_at.setdefault(name, child)
-        ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
+            _check_tag(child, allowed, scope, "include")
+            if not self.enabled(child, scope):
+                continue
+            if child.tag == "env":
+                self.on_env(child, inner)
+                continue
+            name = self.text(child, "name", scope)
+            given[name] = self.text(child, "value", scope)
+            given_at.setdefault(name, child)
+        if "ns" in element.attrs:
+            inner.namespace = self.namespace(element, "ns", scope)
         if not path.is_file():
             raise element.error(f"included file {path} does not exist")
-        self.resolve_file(path, given, scope.child(namespace=ns), not pass_all, element, given_at)
+        # ROS 2: the including scope itself, which keeps what the included file sets
+        parent = scope if scope.fmt == "ros2" else inner
+        self.resolve_file(path, given, parent, not pass_all, element, given_at)
 
     @tag("ros2", "log", {"message", "level"})
     def on_log(self, element: Element, scope: Scope) -> None:
@@ -723,6 +939,8 @@ class Resolver:
             if remap_problem(name, side):
                 raise element.error(remap_problem(written, side) or "")
             names.append(name)
+        if scope.fmt == "ros1":  # roslaunch: a later remap of the same name replaces the earlier
+            scope.remaps[:] = [remap for remap in scope.remaps if remap[0] != names[0]]
         scope.remaps.append((names[0], names[1]))
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
@@ -751,7 +969,7 @@ class Resolver:
         """Forget every launch configuration but the <keep>s (values read before forgetting)."""
         kept = {}
         for child in element.children:
-            _check_tag(child, {"keep": {"name", "value"}}, scope.fmt, "reset")
+            _check_tag(child, {"keep": {"name", "value"}}, scope, "reset")
             kept[self.text(child, "name", scope)] = self.text(child, "value", scope)
         scope.args.clear()
         scope.args.update(kept)
@@ -761,16 +979,32 @@ class Resolver:
         scope.env[self.env_name(element, scope)] = None
 
     @tag("ros2", "set_parameter", {"name", "value"})
-    @tag("ros2", "param", {"name", "value", "from"}, under={"node"})
-    def on_ros2_param(self, element: Element, scope: Scope) -> None:
+    @tag("ros2", "param", PARAM_ATTRS, under={"node"}, marks={"value_sep"})
+    def on_ros2_param(self, element: Element, scope: Scope, prefix: str = "") -> None:
+        """A node's parameter (or <set_parameter>), typed as launch_ros types it: by YAML, or by
+        its ``type``; ``value-sep`` makes a list; ``<param name="group">`` holds ``<param>``s."""
         if "from" in element.attrs:  # a params file, checked now: the child would fail on it later
             path = Path(self.text(element, "from", scope))
             path = path if path.is_absolute() else scope.file.parent / path
             _check_params_file(element, path)
             scope.params_files.append(str(path))
             return
-        value = _ros2_value(self.text(element, "value", scope))
-        name = self.text(element, "name", scope)
+        name = prefix + self.text(element, "name", scope)
+        if element.children:  # a group of parameters: their names start with its own
+            if {"value", "type"} & element.attrs.keys():
+                raise element.error("<param> holds either a value or <param>s, not both")
+            for child in element.children:
+                _check_tag(child, {"param": PARAM_ATTRS - {"from"}}, scope, "param")
+                if self.enabled(child, scope):
+                    self.on_ros2_param(child, scope, name + ".")
+            return
+        if "value_sep" in element.attrs:  # each item substituted and typed on its own
+            separator = element.attrs["value_sep"]
+            items = element.attrs.get("value", "").split(separator) if separator else []
+            texts: str | list[str] = [substitute(item, scope, element) for item in items]
+        else:
+            texts = self.text(element, "value", scope)
+        value = _ros2_typed(texts, element.attrs.get("type"), element)
         _check_params(element, None, name, value)
         entry = (name, value)
         scope.params.append(entry)
@@ -780,12 +1014,32 @@ class Resolver:
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
 
-    @tag("ros1", "param", {"name", "value", "type"}, under={"launch", "node"})
+    @tag("ros1", "param", {"name", "value", "type", "textfile", "binfile"},
+         under={"launch", "node"}, marks={"textfile", "binfile"})  # fmt: skip
     def on_ros1_param(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
+        if "binfile" in element.attrs:
+            raise element.error(
+                "binfile is not supported: a ROS 2 parameter given to a node at its start "
+                "cannot hold a file's bytes"
+            )
+        if "textfile" in element.attrs:  # the file's text, as a string parameter
+            path = Path(self.text(element, "textfile", scope))
+            try:
+                value: Any = read_text(path if path.is_absolute() else scope.file.parent / path)
+            except InputError as error:
+                raise element.error(str(error)) from None
+        else:
+            text = self.text(element, "value", scope)
+            value = _typed_value(text, element.attrs.get("type"), element)
         if name.startswith("~"):
             name = name[1:]  # private: inside <node> the namespace is already the node's
-        value = _typed_value(self.text(element, "value", scope), element.attrs.get("type"), element)
+            _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
+            if not scope.in_node:  # roslaunch: for each node after it in this scope
+                scope.private[:] = [entry for entry in scope.private if entry[0] != name]
+                scope.private.append((name, value, element.where))
+                self.private_given.setdefault((name, element.where), False)
+                return
         _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
         for key, item in _flatten(join_namespace(scope.namespace, name), value):
             self.param_server[key] = item
@@ -794,8 +1048,25 @@ class Resolver:
     @tag("ros1", "rosparam", {"command", "file", "param", "ns", "subst_value"}, {"launch", "node"})
     def on_rosparam(self, element: Element, scope: Scope) -> None:
         command = self.text(element, "command", scope, "load")
-        if command != "load":
-            raise element.error(f"<rosparam command={command!r}> is not supported; only 'load'")
+        if command not in ("load", "delete", "dump"):
+            raise element.error(f"<rosparam command={command!r}>: use load, delete or dump")
+        namespace = scope.namespace
+        if "ns" in element.attrs:
+            namespace = join_namespace(namespace, self.text(element, "ns", scope))
+        if "param" in element.attrs:
+            namespace = join_namespace(namespace, self.text(element, "param", scope))
+        if command == "dump":  # roslaunch wrote the parameter server to a file at the start
+            self.warn(
+                f'{element.where}: <rosparam command="dump"> does nothing: ROS 2 has no '
+                "parameter server (`ros2 param dump NODE` saves a node's parameters)"
+            )
+            return
+        if command == "delete":  # written before, so no node receives it
+            for key in [k for k in self.param_server if k == namespace or
+                        k.startswith(namespace.rstrip("/") + "/")]:  # fmt: skip
+                del self.param_server[key]
+                del self.param_origin[key]
+            return
         if "file" in element.attrs:
             path = Path(self.text(element, "file", scope))
             try:  # at most 1 MiB of UTF-8
@@ -807,13 +1078,10 @@ class Resolver:
         if self.flag(element, "subst_value", scope):
             text = substitute(text, scope, element)
         value = _load_yaml(text, element)
+        if value is None:  # an empty file or tag: nothing to load, as roslaunch
+            return
         _check_params(element, value if isinstance(value, dict) else None, "", value)
-        namespace = scope.namespace
-        if "ns" in element.attrs:
-            namespace = join_namespace(namespace, self.text(element, "ns", scope))
-        if "param" in element.attrs:
-            namespace = join_namespace(namespace, self.text(element, "param", scope))
-        elif not isinstance(value, dict):
+        if "param" not in element.attrs and not isinstance(value, dict):
             raise element.error("<rosparam> without 'param' must hold a YAML mapping")
         for key, item in _flatten(namespace, value):
             self.param_server[key] = item
@@ -842,9 +1110,11 @@ class Resolver:
     # -- tags: processes ----------------------------------------------------------------------
 
     @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
-                          "required", "launch_prefix"}, marks={"type"})  # fmt: skip
-    @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args"} | PROCESS_ATTRS,
-         marks={"exec"})  # fmt: skip
+                          "required", "launch_prefix", "clear_params"},
+         marks={"type", "ns", "clear_params"})  # fmt: skip
+    @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args", "exec_name"}
+         | PROCESS_ATTRS,
+         marks={"exec", "namespace", "ros_args"})  # fmt: skip
     @tag("ros2", "executable", {"cmd", "name", "cwd"} | PROCESS_ATTRS)
     def on_process(self, element: Element, scope: Scope) -> None:
         """<node> (both formats) and <executable>: the one place a NodeDecl is filled.
@@ -860,8 +1130,12 @@ class Resolver:
                 raise element.error("<executable> needs a non-empty 'cmd'")
             name = self.text(element, "name", scope, "") or None
         else:
+            self.clear_params(element, scope)
             package = self.text(element, "pkg", scope)
             executable = self.text(element, "type" if ros1 else "exec", scope)
+            for attr, value in (("pkg", package), ("type" if ros1 else "exec", executable)):
+                if not value.strip():
+                    raise element.error(f"<node {attr}> is empty")
             if ros1 or "name" in element.attrs:  # a ROS 1 node must be named
                 name = self.text(element, "name", scope)
                 if not valid_name(name):
@@ -897,7 +1171,14 @@ class Resolver:
         # else. In ROS 1 its namespace is the node's private one, where its <param>s go, and its
         # parameters come from the parameter server only (finish()), not from a ROS 2 includer.
         private = f"{namespace.rstrip('/')}/{name}"
-        node_scope = scope.child(namespace=private, params=[]) if ros1 else scope.child()
+        if ros1:  # the ~params written before it in its scope, then its own <param>s
+            for key, value, where in scope.private:
+                for full, item in _flatten(f"{private}/{key}", value):
+                    self.param_server[full] = item
+                    self.param_origin[full] = ("~" + key, where)
+                self.private_given[(key, where)] = True
+        node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
+            scope.child(in_node=True))  # fmt: skip
         self.resolve_children(element, node_scope, element.tag)
         node = NodeDecl(
             element.where,
@@ -922,6 +1203,7 @@ class Resolver:
             launch_prefix=launch_prefix,
             cwd=cwd,
             when=scope.when,
+            label=self.text(element, "exec_name", scope, "") or None,  # its output prefix
         )
         self.add_node(node)
         if ros1:

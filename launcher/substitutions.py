@@ -3,8 +3,9 @@
 ROS 1: $(arg x) $(find pkg) $(env V) $(optenv V [default]) $(anon name) $(dirname) $(eval ...)
 ROS 2: $(var x) $(env V [default]) $(find-pkg-share pkg) $(find-pkg-prefix pkg) $(dirname)
        $(anon name) $(not x) $(and x y) $(or x y) $(equals x y) $(eval ...) $(command ...)
-Substitutions nest (``$(var $(var which))``). $(eval) and $(command) run code, so they are
-refused unless the user passes --allow-code.
+Substitutions nest (``$(var $(var which))``). $(command) runs a program, so it is refused
+unless the user passes --allow-code; so is an $(eval) that needs code to compute
+(launcher/expressions.py reads the rest without running any).
 """
 
 from __future__ import annotations
@@ -18,7 +19,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
 
-from launcher import packages
+from launcher import CodeRefused, packages
+from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
 from launcher.parse import Element
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
@@ -39,6 +41,8 @@ class Context(Protocol):
     def allow_code(self) -> bool: ...
 
     def anon(self, name: str) -> str: ...
+
+    def read_arg(self, name: str, element: Element) -> str: ...
 
 
 def to_bool(value: str, element: Element, what: str) -> bool:
@@ -116,10 +120,8 @@ def _evaluate(inner: str, context: Context, element: Element) -> str:
     if name not in table:
         known = ", ".join(f"$({known})" for known in table)
         raise element.error(f"unknown substitution $({name}); known here: {known}")
-    if name in ("eval", "command") and not context.allow_code:
-        raise element.error(
-            f"$({name}) runs code from the launch file; pass --allow-code to allow it"
-        )
+    if name == "command" and not context.allow_code:
+        raise CodeRefused(f"{element.where}: $(command) runs a program named in the launch file")
     if context.fmt == "ros1" and name == "eval":
         return _ros1_eval(rest, context, element)  # ROS 1 eval sees raw Python, not $(...)
     words = [substitute(word, context, element) for word in _split_words(rest)]
@@ -135,11 +137,7 @@ def _plural(counts: range) -> str:
 
 
 def _arg(words: list[str], context: Context, element: Element) -> str:
-    name = words[0]
-    if name not in context.args:
-        known = ", ".join(sorted(context.args)) or "none"
-        raise element.error(f"argument {name!r} is not declared here (declared: {known})")
-    return context.args[name]
+    return context.read_arg(words[0], element)
 
 
 def _env(words: list[str], _context: Context, element: Element) -> str:
@@ -196,28 +194,55 @@ def _equals(words: list[str], _context: Context, _element: Element) -> str:
     return str(words[0] == words[1]).lower()
 
 
-def _python_eval(expression: str, names: dict, element: Element) -> str:
-    scope = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
-    scope.update(names)
+def _python_eval(expression: str, names: dict, context: Context, element: Element) -> str:
+    """An expression read by launcher/expressions.py, or, if it needs code and the user
+    allowed it, by Python's eval with the same names (and the whole math module)."""
+    shown = f"$(eval {expression})"
     try:
-        return str(eval(expression, scope))  # opted in with --allow-code
+        try:
+            return str(evaluate(expression, names))
+        except NeedsCode as part:
+            if not context.allow_code:
+                raise CodeRefused(
+                    f"{element.where}: {shown} runs code written in the launch file ({part})"
+                ) from None
+        scope = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
+        return str(eval(expression, {**scope, **names}))  # opted in with --allow-code
+    except CodeRefused:
+        raise
     except Exception as error:
-        raise element.error(f"$(eval {expression}) failed: {error}") from None
+        raise element.error(f"{shown} failed: {error}") from None
+
+
+def _auto(value: str) -> object:
+    """An argument's text typed as roslaunch types it for $(eval): a number, a bool, or text."""
+    try:
+        if "." in value:
+            return float(value)
+        if "_" not in value:  # Python reads 1_000 as a number; roslaunch keeps it text
+            return int(value)
+    except ValueError:
+        pass
+    return value.lower() == "true" if value.lower() in ("true", "false") else value
 
 
 def _ros1_eval(expression: str, context: Context, element: Element) -> str:
-    names = {"true": True, "false": False, **context.args}
-    names["arg"] = lambda name: _arg([name], context, element)
+    if "__" in expression:  # roslaunch refuses these too (they reach Python's internals)
+        raise element.error(f"$(eval {expression}): '__' is not allowed in $(eval)")
+    names: dict = {name: _auto(value) for name, value in context.args.items()}
+    # roslaunch's functions and constants win over arguments of the same name.
+    names.update(MATH, **BUILTINS, true=True, false=False)
+    names["arg"] = lambda name: _auto(context.read_arg(name, element))
     names["env"] = lambda name: _env([name], context, element)
     names["optenv"] = lambda name, default="": os.environ.get(name, default)
     names["find"] = lambda package: _find([package], context, element)
     names["anon"] = context.anon
     names["dirname"] = lambda: str(context.file.parent)
-    return _python_eval(expression, names, element)
+    return _python_eval(expression, names, context, element)
 
 
-def _ros2_eval(words: list[str], _context: Context, element: Element) -> str:
-    return _python_eval(" ".join(words), {}, element)
+def _ros2_eval(words: list[str], context: Context, element: Element) -> str:
+    return _python_eval(" ".join(words), {**MATH, **BUILTINS}, context, element)
 
 
 def _command(words: list[str], _context: Context, element: Element) -> str:

@@ -24,6 +24,13 @@ Timers and event handlers (the plan's ``When``): a process or a step waits for i
 are raised in the main thread, where every process is started. A line a handler listens to
 reaches the main thread through a queue.
 
+What the launcher says has two spellings (``Supervisor.ros2``): ``ros2 launch`` speaks as ros2
+launch does (``[INFO] [launch]: All log files can be found below DIR``, ``[INFO]
+[turtlesim_node-1]: process started with pid [1234]``, each process named after its
+executable and numbered in the order they start), ``roslaunch`` and ``python -m launcher``
+keep this launcher's own ``[launcher] started ns1/talker (pid 1234)``. The same facts either way,
+and this launcher's shutdown and error lines in both.
+
 Output is relayed line by line, and a line is never held whole: it is read in pieces of at
 most MAX_LINE_BYTES. The log file gets every byte; the screen shows a longer line cut at
 MAX_LINE_BYTES, with a note saying so. A KeyboardInterrupt traceback from a child the
@@ -39,6 +46,7 @@ import os
 import queue
 import shlex
 import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -68,9 +76,12 @@ _libc = ctypes.CDLL(None, use_errno=True)
 
 
 def make_log_dir() -> Path:
-    """A new folder for this launch's logs, under $ROS_LOG_DIR or ~/.ros/log."""
+    """A new folder for this launch's logs, under $ROS_LOG_DIR or ~/.ros/log, named as ros2
+    launch names it: 2026-11-24-09-09-47-123456-HOST-PID."""
     base = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
-    path = base / f"launch_{time.strftime('%Y-%m-%d-%H-%M-%S')}_{os.getpid()}"
+    now = time.time()
+    stamp = time.strftime("%Y-%m-%d-%H-%M-%S", time.localtime(now))
+    path = base / f"{stamp}-{int(now % 1 * 1e6):06d}-{socket.gethostname()}-{os.getpid()}"
     try:
         path.mkdir(parents=True, exist_ok=True)
         (path / ".writable").touch()
@@ -102,6 +113,14 @@ def _describe(code: int) -> str:
     if code < 0:
         return f"was killed by {signal.Signals(-code).name}"
     return f"died with exit code {code}"
+
+
+def _ros2_exit(pid: int, code: int, command: list[str]) -> str:
+    """A process's end in ros2 launch's words (a signal's name added: -11 is SIGSEGV)."""
+    if code == 0:
+        return f"process has finished cleanly [pid {pid}]"
+    signal_name = f" ({signal.Signals(-code).name})" if code < 0 else ""
+    return f"process has died [pid {pid}, exit code {code}{signal_name}, cmd '{' '.join(command)}']"
 
 
 class GroupKeeper:
@@ -199,6 +218,8 @@ class Child:
 
     def __init__(self, spec: ProcessSpec, log_dir: Path) -> None:
         self.spec = spec
+        self.name = spec.label  # on the screen; ros2 launch's EXECUTABLE-N from its first start
+        self.pid = 0
         self.log_path = log_dir / f"{spec.label.replace('/', '.')}.log"
         self.process: subprocess.Popen | None = None
         self.readers: list[threading.Thread] = []
@@ -216,8 +237,14 @@ class Supervisor:
         log_dir: Path,
         debug: bool = False,
         steps: list[Step] | None = None,
+        ros2: bool = False,
+        warnings: list[str] | None = None,
+        messages: list[str] | None = None,
     ) -> None:
         self.debug = debug
+        self.ros2 = ros2  # speak as ros2 launch (see the module docstring)
+        self.started = 0  # processes started so far: ros2 launch numbers them
+        self.warnings, self.messages = warnings or [], messages or []
         self.children = [Child(spec, log_dir) for spec in specs]
         self.steps = steps or []
         self.pending: list[tuple[float, int, Child | Step, dict]] = []  # (due, order, what, event)
@@ -233,8 +260,14 @@ class Supervisor:
         self.ending = False  # a required process exited, or a Shutdown event
         self.failed = False
 
-    def say(self, text: str) -> None:
-        self.show(f"[launcher] {text}", sys.stdout)
+    def say(self, text: str, level: str = "INFO", who: str = "launch") -> None:
+        """One line of the launcher's own (``who``: a process's name says it of that process)."""
+        if self.ros2:
+            self.show(f"[{level}] [{who}]: {text}", sys.stdout)
+        elif who == "launch":
+            self.show(f"[launcher] {text}", sys.stdout)
+        else:
+            self.show(f"[launcher] {who} {text}", sys.stdout)
 
     def show(self, line: str, screen: IO[str]) -> None:
         # A closed terminal or pipe (launcher | head) must not stop the supervision.
@@ -250,13 +283,21 @@ class Supervisor:
         self.adopted: set[int] = set()
         self.keeper = GroupKeeper()
         try:
-            self.say(f"logging to {self.log_dir}")
+            if self.ros2:
+                self.say(f"All log files can be found below {self.log_dir}")
+                self.say("Default logging verbosity is set to INFO")
+                for warning in self.warnings:
+                    self.say(warning, "WARNING")
+                for message in self.messages:
+                    self.say(message, who="launch.user")
+            else:
+                self.say(f"logging to {self.log_dir}")
             try:
                 self.raise_event(None, None, {})  # what starts at once, and the first timers
                 self.run_due()
                 self.watch()
             except (OSError, subprocess.SubprocessError) as error:
-                self.say(f"cannot start a process: {error}")
+                self.say(f"cannot start a process: {error}", "ERROR")
                 self.failed = True
             self.on_shutdown()
             self.shutdown()
@@ -301,7 +342,7 @@ class Supervisor:
 
     def do_step(self, step: Step, info: dict) -> None:
         if step.kind == "log":
-            self.say(step.text)
+            self.say(step.text, who="launch.user")
         elif step.kind == "shutdown":
             self.say(f"shutting down: {step.text}")
             self.ending, self.shutdown_reason = True, step.text
@@ -315,6 +356,8 @@ class Supervisor:
         self.pending.clear()  # timers are cancelled
         if self.stop_signal is not None:
             reason = f"ctrl-c ({signal.Signals(self.stop_signal).name})"
+            if self.ros2 and self.stop_signal == signal.SIGINT:  # ros2 launch's words
+                self.say("user interrupted with ctrl-c (SIGINT)", "WARNING")
         else:
             reason = self.shutdown_reason or "idle"
         for step in self.steps:
@@ -372,6 +415,10 @@ class Supervisor:
         )
         self.keeper.watch(child.process.pid)
         child.started_at, child.restart_at = time.monotonic(), None
+        child.pid = child.process.pid
+        if self.ros2 and child.name == spec.label:  # its first start: ros2 launch's name
+            self.started += 1
+            child.name = f"{spec.process_name}-{self.started}"
         # As roslaunch: stderr (where ROS 2 logging writes) always reaches the screen,
         # stdout only with output="screen"; the log file gets both.
         to_screen = spec.output in ("screen", "both")
@@ -379,7 +426,10 @@ class Supervisor:
             self._reader(child, child.process.stdout, sys.stdout if to_screen else None, "stdout"),
             self._reader(child, child.process.stderr, sys.stderr, "stderr"),
         ]
-        self.say(f"started {spec.label} (pid {child.process.pid})")
+        if self.ros2:
+            self.say(f"process started with pid [{child.pid}]", who=child.name)
+        else:
+            self.say(f"started {spec.label} (pid {child.pid})")
         if self.debug:
             self.say(f"  command: {shlex.join(spec.command)}")
         self.raise_event("start", self.children.index(child), {"pid": child.process.pid})
@@ -401,7 +451,7 @@ class Supervisor:
             assert stream is not None
             held: list[str] = []
             cut = False  # the rest of a line already cut on the screen
-            log = LogSink(log_path, child.spec.label, self.say)
+            log = LogSink(log_path, child.name, lambda text: self.say(text, "WARNING"))
             try:
                 # readline(limit): a 200 MB line without a newline is read 64 KiB at a time.
                 for raw in iter(lambda: stream.readline(MAX_LINE_BYTES), b""):
@@ -437,14 +487,14 @@ class Supervisor:
             if len(held) >= MAX_TRACEBACK_LINES:
                 self._flush_held(child, screen, held)
             return
-        self.show(f"[{child.spec.label}] {line}", screen)
+        self.show(f"[{child.name}] {line}", screen)
 
     def _flush_held(self, child: Child, screen: IO[str], held: list[str]) -> None:
         """A child that gets the launcher's SIGINT while Python is still starting or importing
         (Ctrl-C in the first moments of a launch) has no handler for it yet, so Python prints a
         KeyboardInterrupt traceback. That is the expected end of a stop, not an error: one line
         on the screen, the traceback in the log file. Any other traceback is shown whole."""
-        label = child.spec.label
+        label = child.name
         if any(line.startswith("KeyboardInterrupt") for line in held):
             self.show(f"[{label}] stopped while starting (its traceback is in the log)", screen)
         else:
@@ -499,7 +549,7 @@ class Supervisor:
             if time.monotonic() >= deadline or self.hurry or self.abandoned:
                 sig = signal.SIGKILL
             if time.monotonic() >= deadline + ADOPTED_STOP_SECONDS:  # unkillable (state D)
-                self.say(f"still running after SIGKILL: pid(s) {sorted(self.adopted)}")
+                self.say(f"still running after SIGKILL: pid(s) {sorted(self.adopted)}", "ERROR")
                 return
             for pid in self.adopted:
                 with contextlib.suppress(ProcessLookupError):
@@ -544,11 +594,18 @@ class Supervisor:
         self._on_exit(child, code, now)
         self.raise_event("exit", self.children.index(child), {"returncode": code})
 
+    def exited(self, child: Child, code: int, then: str = "") -> None:
+        """Say that a process ended, and (``then``) what follows from it."""
+        if not self.ros2:
+            self.say(f"{child.spec.label} {_describe(code)}{then}")
+            return
+        text = _ros2_exit(child.pid, code, child.spec.command)
+        self.say(text + (then or ("." if code else "")), "ERROR" if code else "INFO", child.name)
+
     def _on_exit(self, child: Child, code: int, now: float) -> None:
         spec = child.spec
-        what = f"{spec.label} {_describe(code)}"
         if spec.required:
-            self.say(f"{what}; it is required, so the launch ends")
+            self.exited(child, code, "; it is required, so the launch ends")
             self.failed |= code != 0
             self.ending = True
         elif spec.respawn:
@@ -556,17 +613,18 @@ class Supervisor:
             child.quick_failures = 0 if ran_long else child.quick_failures + 1
             limit = spec.respawn_max_retries
             if 0 <= limit < child.quick_failures:
-                self.say(f"{what}; not respawning it after {limit} quick restarts in a row")
+                then = f"; not respawning it after {limit} quick restarts in a row"
+                self.exited(child, code, then)
                 self.failed = True
                 return
             delay = spec.respawn_delay
             if child.quick_failures:  # back off so a crashing process cannot spin the CPU
                 backoff = BACKOFF_FIRST_SECONDS * 2 ** (child.quick_failures - 1)
                 delay += min(backoff, BACKOFF_MAX_SECONDS)
-            self.say(f"{what}; respawning in {delay:.1f} s")
+            self.exited(child, code, f"; respawning in {delay:.1f} s")
             child.restart_at = now + delay
         else:
-            self.say(what)
+            self.exited(child, code)
             self.failed |= code != 0
 
     def shutdown(self) -> None:
@@ -583,8 +641,10 @@ class Supervisor:
             for child in list(alive):
                 assert child.process is not None
                 if _exited(child.process.pid):
-                    self.reap(child)
+                    code = self.reap(child)
                     alive.remove(child)
+                    if self.ros2:  # as ros2 launch: each one's end, as it stops
+                        self.exited(child, code)
                 elif now >= child.deadline or self.hurry:
                     self._escalate(child)
             self.hurry = False
@@ -601,10 +661,10 @@ class Supervisor:
         elif child.stage == 0:
             child.stage, child.deadline = signal.SIGINT, now + spec.sigterm_timeout
         elif child.stage == signal.SIGINT:
-            self.say(f"{spec.label} still running after SIGINT: sending SIGTERM")
+            self.say("still running after SIGINT: sending SIGTERM", "WARNING", child.name)
             child.stage, child.deadline = signal.SIGTERM, now + spec.sigkill_timeout
         else:
             if child.stage == signal.SIGTERM:
-                self.say(f"{spec.label} still running after SIGTERM: sending SIGKILL")
+                self.say("still running after SIGTERM: sending SIGKILL", "WARNING", child.name)
             child.stage, child.deadline = signal.SIGKILL, float("inf")
         _kill_group(child.process.pid, child.stage)

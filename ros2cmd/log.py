@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 from pathlib import Path
 
 from rcl_interfaces.msg import LoggerLevel
@@ -88,16 +89,21 @@ def _described(level: str) -> str:
     return level
 
 
+# A launch's folder, named as ros2 launch names it (launcher/supervise.py), or as this
+# launcher named it before (launch_<date>_<pid>).
+LAUNCH_FOLDER = re.compile(r"\d{4}(-\d\d){5}-\d{6}-.+-\d+|launch_.+")
+
+
 def latest_launch_folder(base: Path | None = None) -> Path:
-    """The newest `launch_<date>_<pid>` folder the launcher made (see launcher/supervise.py)."""
+    """The newest folder of a launch's logs (<date>-<host>-<pid>, see launcher/supervise.py)."""
     if base is None:
         base = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
     try:
-        folders = [p for p in base.iterdir() if p.is_dir() and p.name.startswith("launch_")]
+        folders = [p for p in base.iterdir() if p.is_dir() and LAUNCH_FOLDER.fullmatch(p.name)]
     except OSError:
         folders = []
     if not folders:
-        raise ToolError(f"no launch logs in {base} (the launcher writes launch_<date>_<pid> there)")
+        raise ToolError(f"no launch logs in {base} (a launch writes <date>-<host>-<pid> there)")
     return max(folders, key=lambda p: (p.stat().st_mtime, p.name))
 
 

@@ -1,7 +1,7 @@
-"""The launch tutorials' files run as real processes with the launcher (`ros2 launch`):
-Launching-Multiple-Nodes (turtlesim's multisim.launch.py), Creating-Launch-Files (the mimic
-example, YAML), Using-Substitutions (YAML, a timer) and Using-Event-Handlers (Python: process
-start, output, exit and shutdown handlers, a timer)."""
+"""The launch tutorials' files run as real processes with `ros2 launch`, which prints what the
+pages show: Launching-Multiple-Nodes (turtlesim's multisim.launch.py), Creating-Launch-Files
+(the mimic example, YAML), Using-Substitutions (YAML, a timer) and Using-Event-Handlers
+(Python: process start, output, exit and shutdown handlers, a timer)."""
 
 from __future__ import annotations
 
@@ -20,7 +20,11 @@ WORKSPACE = {**HEADLESS, "AMENT_PREFIX_PATH": str(TUTORIAL_PREFIX), "USER": "lea
 
 
 def _launch(node_process, *args: str):
-    return node_process("-m", "launcher", *args, env=WORKSPACE)
+    return node_process("-m", "ros2cmd", "launch", *args, env=WORKSPACE)  # `ros2 launch ...`
+
+
+def _pid(output: str, name: str) -> int:
+    return int(re.search(rf"\[INFO\] \[{name}\]: process started with pid \[(\d+)\]", output)[1])
 
 
 def _spawned_both(lines: list[str]) -> bool:
@@ -31,11 +35,31 @@ def test_multisim_launch_py_starts_two_simulators(node_process):
     # Launching-Multiple-Nodes: `ros2 launch turtlesim multisim.launch.py`
     launch = _launch(node_process, "turtlesim", "multisim.launch.py")
     launch.wait_for_output(_spawned_both, what="both simulators' turtle1")
-    out = launch.output
-    assert "[turtlesim1.turtlesim]: Spawning turtle [turtle1]" in out
-    assert "[turtlesim2.turtlesim]: Spawning turtle [turtle1]" in out
-    assert "mimic" not in out
+    lines = launch.output.splitlines()
+    # As ros2 launch prints it: where the logs are, then each process by its executable's name
+    log_dir = Path(os.environ.get("ROS_LOG_DIR") or Path.home() / ".ros" / "log")
+    assert re.fullmatch(
+        rf"\[INFO\] \[launch\]: All log files can be found below {re.escape(str(log_dir))}/"
+        r"\d{4}(-\d\d){5}-\d{6}-.+-\d+",
+        lines[0],
+    ), lines[0]
+    assert lines[1] == "[INFO] [launch]: Default logging verbosity is set to INFO"
+    started = [line for line in lines if "process started" in line]
+    assert [re.sub(r"\d+\]$", "N]", line) for line in started] == [
+        "[INFO] [turtlesim_node-1]: process started with pid [N]",
+        "[INFO] [turtlesim_node-2]: process started with pid [N]",
+    ]
+    node_line = r"\[turtlesim_node-1\] \[INFO\] \[\d+\.\d+\] \[turtlesim1\.turtlesim\]: Spawning "
+    assert any(re.match(node_line, line) for line in lines)  # each line prefixed by its process
+    assert "[turtlesim2.turtlesim]: Spawning turtle [turtle1]" in launch.output
+    assert "mimic" not in launch.output
+    pids = [_pid(launch.output, f"turtlesim_node-{n}") for n in (1, 2)]
     assert launch.interrupt() == 130
+    for n, pid in enumerate(pids, 1):
+        assert f"[INFO] [turtlesim_node-{n}]: process has finished cleanly [pid {pid}]" in (
+            launch.output
+        )
+    assert "[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)" in launch.output
     assert "Traceback" not in launch.output, launch.output[-4000:]
 
 
@@ -55,10 +79,13 @@ def test_creating_launch_files_mimic_example_in_yaml(node_process, executor):
 
 
 def test_using_substitutions_yaml_changes_the_background_after_two_seconds(node_process):
-    # `ros2 launch launch_tutorial example_main_launch.yaml` ($(eval) asks for --allow-code)
-    launch = _launch(node_process, "launch_tutorial", "example_main_launch.yaml", "--allow-code")
-    launch.wait_for_text("[launcher] started ros2-3")  # the timer's `ros2 param set ... 200`
-    launch.wait_for_text("[launcher] ros2-3 exited cleanly")
+    # `ros2 launch launch_tutorial example_main_launch.yaml`, as the page types it: its
+    # $(eval "200 == 200 and True") needs no --allow-code (no code runs to compute it)
+    launch = _launch(node_process, "launch_tutorial", "example_main_launch.yaml")
+    launch.wait_for_text("[INFO] [ros2-4]: process started")  # the timer's `ros2 param set`
+    launch.wait_for_text(
+        f"[INFO] [ros2-4]: process has finished cleanly [pid {_pid(launch.output, 'ros2-4')}]"
+    )
     assert "Spawning turtle [turtle2] at x=[5.000000], y=[2.000000]" in launch.output
     value = ok("ros2", "param", "get", "/turtlesim2/sim", "background_r")
     assert value == "Integer value is: 200\n"
@@ -75,21 +102,22 @@ def test_using_event_handlers_as_the_page_describes(node_process):
     )
     # Start turtlesim, then (OnProcessStart) spawn the second turtle; its output (OnProcessIO);
     # when the spawn is done (OnExecutionComplete) purple, and pink two seconds later.
-    launch.wait_for_text("[launcher] ros2-3 exited cleanly")
-    lines = [line for line in launch.output.splitlines() if line.startswith("[launcher] ")]
-    said = [line for line in lines if not re.match(r"\[launcher\] (started|logging|ros2)", line)]
-    assert said[0] == "[launcher] Turtlesim started, spawning turtle"
-    assert '[launcher] Spawn request says "response:"' in said
-    assert said[-1] == "[launcher] Spawn finished"
-    assert lines.index("[launcher] Spawn finished") < lines.index(
-        "[launcher] ros2-2 exited cleanly"
+    launch.wait_for_text("[INFO] [ros2-4]: process has finished cleanly")
+    lines = launch.output.splitlines()
+    said = [line for line in lines if line.startswith("[INFO] [launch.user]: ")]  # LogInfo
+    assert said[0] == "[INFO] [launch.user]: Turtlesim started, spawning turtle"
+    assert '[INFO] [launch.user]: Spawn request says "response:"' in said
+    assert said[-1] == "[INFO] [launch.user]: Spawn finished"
+    spawned = f"[INFO] [ros2-2]: process has finished cleanly [pid {_pid(launch.output, 'ros2-2')}]"
+    assert lines.index(spawned) < lines.index("[INFO] [launch.user]: Spawn finished")
+    assert lines.index("[INFO] [launch.user]: Spawn finished") < lines.index(
+        f"[INFO] [ros2-3]: process started with pid [{_pid(launch.output, 'ros2-3')}]"
     )
     value = ok("ros2", "param", "get", "/turtlesim1/sim", "background_r")
     assert value == "Integer value is: 200\n"
     # Closing the window ends turtlesim: OnProcessExit logs and emits Shutdown; OnShutdown.
-    pid = int(re.search(r"started turtlesim1/sim \(pid (\d+)\)", launch.output).group(1))
-    os.kill(pid, signal.SIGINT)
+    os.kill(_pid(launch.output, "turtlesim_node-1"), signal.SIGINT)
     assert launch.wait() == 0
-    assert "[launcher] learner closed the turtlesim window" in launch.output
-    assert "[launcher] Launch was asked to shutdown: Window closed" in launch.output
+    assert "[INFO] [launch.user]: learner closed the turtlesim window" in launch.output
+    assert "[INFO] [launch.user]: Launch was asked to shutdown: Window closed" in launch.output
     assert "Traceback" not in launch.output, launch.output[-4000:]

@@ -70,9 +70,9 @@ def test_the_root_must_be_launch(tmp_path):
 
 def test_mixing_both_formats_in_one_file_is_an_error(tmp_path):
     xml = ros1(node1() + '\n<node pkg="ros_tutorials_topic" exec="subscriber"/>')
-    assert "mixes ROS 1 syntax (line 2: <node>) and ROS 2 syntax (line 3: <node>)" in error(
-        tmp_path, xml
-    )
+    assert (
+        "mixes ROS 1 syntax (line 2: <node type=...>) and ROS 2 syntax (line 3: <node exec=...>)"
+    ) in error(tmp_path, xml)
 
 
 # -- packages and executables ----------------------------------------------------------------
@@ -164,10 +164,11 @@ def test_args_defaults_command_line_values_and_errors(tmp_path):
     message = error(tmp_path, xml, nobody="x")
     assert "no argument named nobody is declared (declared: fixed, who)" in message
     assert "'fixed' has a fixed value and cannot be set" in error(tmp_path, xml, fixed="2")
-    required = ros1('<arg name="who"/>' + node1(name="$(arg who)"))
-    assert "test.launch:2: argument 'who' is required: pass who:=<value>" in error(
-        tmp_path, required
-    )
+    required = ros1('<arg name="who"/>\n' + node1(name="$(arg who)"))
+    assert (  # where it is used: roslaunch fails there, not at the declaration
+        "test.launch:3: argument 'who' is required (declared at line 2 without a value): "
+        "pass who:=<value>"
+    ) in error(tmp_path, required)
     undeclared = ros1(node1(name="$(arg who)"))
     assert "argument 'who' is not declared here (declared: none)" in error(tmp_path, undeclared)
 
@@ -227,8 +228,8 @@ def test_rosparam_loads_yaml_from_a_file_or_inline(tmp_path):
         "nested.a": 1,
         "inline.b": "x",
     }
-    bad = ros1('<rosparam command="dump" file="x"/>')
-    assert "only 'load'" in error(tmp_path, bad)
+    bad = ros1('<rosparam command="forget" file="x"/>')
+    assert "<rosparam command='forget'>: use load, delete or dump" in error(tmp_path, bad)
 
 
 def test_group_remaps_and_env_apply_to_later_nodes_in_scope_only(tmp_path):
@@ -285,18 +286,29 @@ def test_substitutions_find_env_optenv_anon_dirname(tmp_path, monkeypatch):
     assert "unknown package 'nope'" in error(tmp_path, ros1(node1("$(find nope)")))
 
 
-def test_eval_runs_only_when_allowed(tmp_path):
+def test_eval_runs_code_only_when_allowed(tmp_path):
+    # Values, argument names, operators and a few pure functions need no code ...
     xml = ros1('<arg name="n" default="2"/>' + node1("$(eval 'n' + str(int(n) * 21))"))
-    assert "$(eval) runs code from the launch file; pass --allow-code" in error(tmp_path, xml)
-    assert plan(tmp_path, xml, allow_code=True)[0].label == "n42"
+    assert plan(tmp_path, xml)[0].label == "n42"
+    # ... a method call does: Python's eval, only with --allow-code.
+    xml = ros1('<arg name="n" default="2"/>\n' + node1("$(eval 'n'.upper() + str(n))"))
+    assert (
+        "test.launch:3: $(eval 'n'.upper() + str(n)) runs code written in the launch file "
+        "('n'.upper()); pass --allow-code to allow it"
+    ) in error(tmp_path, xml)
+    assert plan(tmp_path, xml, allow_code=True)[0].label == "N2"
 
 
 def test_unknown_tags_and_attributes_name_the_place_and_the_allowed_set(tmp_path):
-    message = error(tmp_path, ros1('<machine name="m"/>'))
-    assert message.startswith(f"{tmp_path / 'test.launch'}:2: unknown tag <machine> in <launch>")
+    message = error(tmp_path, ros1('<nodes name="m"/>'))
+    assert message.startswith(f"{tmp_path / 'test.launch'}:2: unknown tag <nodes> in <launch>")
     assert "allowed: <arg>, <env>, <group>, <include>, <node>, <param>" in message
+    message = error(tmp_path, ros1('<machine name="m"/>'))
+    assert message.endswith(":2: <machine> is not supported: remote machines are roslaunch's "
+                            "(ROS 2 nodes find each other by discovery: start the node on that "
+                            "machine)")  # fmt: skip
     message = error(tmp_path, ros1(node1(extra='machine="m"')))
-    assert ":2: unknown attribute 'machine' on <node>; allowed: args, if, launch-prefix" in message
+    assert ":2: unknown attribute 'machine' on <node>; allowed: args, clear_params, if" in message
     assert "unknown tag <group> in <node>" in error(tmp_path, ros1(node1(body="<group/>")))
 
 
@@ -438,7 +450,9 @@ def test_ros2_logic_and_env_substitutions(tmp_path, monkeypatch):
 
 def test_ros2_command_substitution_is_opt_in(tmp_path):
     xml = "<launch>" + node2("$(command echo -n from_command)") + "</launch>"
-    assert "pass --allow-code" in error(tmp_path, xml, "t.launch.xml")
+    assert "$(command) runs a program named in the launch file; pass --allow-code" in error(
+        tmp_path, xml, "t.launch.xml"
+    )
     assert plan(tmp_path, xml, "t.launch.xml", allow_code=True)[0].label == "from_command"
     xml = "<launch>" + node2("$(eval 'chr(110) + str(2 ** 3)')") + "</launch>"
     assert plan(tmp_path, xml, "t.launch.xml", allow_code=True)[0].label == "n8"
@@ -453,7 +467,7 @@ def test_ros2_unknown_tags_and_attributes(tmp_path):
     message = error(tmp_path, "<launch>" + node2(extra='type="x"') + "</launch>", "t.launch.xml")
     assert "mixes ROS 1 syntax" in message
     message = error(tmp_path, "<launch>" + node2(extra='colour="red"') + "</launch>", "t.xml")
-    assert "unknown attribute 'colour' on <node>; allowed: args, exec, if" in message
+    assert "unknown attribute 'colour' on <node>; allowed: args, exec, exec_name, if" in message
 
 
 @pytest.mark.skipif(

@@ -291,3 +291,30 @@ def test_print_and_show_args_start_nothing(node_process):
     shown = node_process("-m", "launcher", "ros_tutorials_topic", "union.launch", "--show-args")
     assert shown.wait() == 0
     assert shown.output == "This launch file has no arguments."
+
+
+def test_ros2_launch_speaks_as_ros2_launch(node_process, tmp_path):
+    # Creating-Launch-Files shows `[INFO] [turtlesim_node-1]: process started with pid [11714]`:
+    # each process named after its program (or its name=) and numbered as they start.
+    say = script(tmp_path, "say", "import sys\nprint('to stderr', file=sys.stderr)\n")
+    failing = script(tmp_path, "failing", "raise SystemExit(2)\n")
+    xml = f'<launch><executable cmd="{say}"/><executable cmd="{failing}" name="fails"/></launch>'
+    launcher = node_process("-m", "ros2cmd", "launch", launch_file(tmp_path, xml))
+    assert launcher.wait() == 1
+    lines = launcher.output.splitlines()
+    log_dir = re.escape(os.environ["ROS_LOG_DIR"])
+    assert re.fullmatch(
+        rf"\[INFO\] \[launch\]: All log files can be found below {log_dir}/"
+        r"\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d-\d{6}-.+-\d+",
+        lines[0],
+    )
+    assert lines[1] == "[INFO] [launch]: Default logging verbosity is set to INFO"
+    pids = {name: int(pid) for name, pid in re.findall(r"\[(\S+)\]: process started with pid "
+                                                       r"\[(\d+)\]", launcher.output)}  # fmt: skip
+    assert sorted(pids) == ["fails-2", "python-1"]  # the program of `python say.py`
+    assert "[python-1] to stderr" in lines
+    assert f"[INFO] [python-1]: process has finished cleanly [pid {pids['python-1']}]" in lines
+    assert (
+        f"[ERROR] [fails-2]: process has died [pid {pids['fails-2']}, exit code 2, "
+        f"cmd '{failing}']."
+    ) in lines

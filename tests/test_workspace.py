@@ -334,7 +334,7 @@ def test_a_workspace_node_keeps_dds_on_this_machine_however_started(tmp_path):
     unset = "unset ROS_AUTOMATIC_DISCOVERY_RANGE; "
     assert ok(sourced(unset + "ros2 run my_package my_node"), workspace) == "range: LOCALHOST\n"
     launched = ok(sourced(unset + "ros2 launch my_package my.launch.xml"), workspace)
-    assert "[my_node] range: LOCALHOST" in launched
+    assert "[my_node-1] range: LOCALHOST" in launched  # ros2 launch: EXECUTABLE-N
     by_hand = sourced("install/my_package/lib/my_package/my_node")
     assert ok(by_hand, workspace) == "range: LOCALHOST\n"
     chosen = "export ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET\n"
