@@ -184,7 +184,7 @@ def main(argv: list[str] | None = None) -> int:
             if listed[source.name] - listed_interfaces(build_base / source.name, source.name)
         ]
         for source in shrunk:
-            print(f"{source.name}: an interface was removed, building it afresh")
+            print(f"{source.name}: an interface was removed, building it afresh", flush=True)
             clear(build_base / source.name)
         if shrunk and returncode == 0:
             returncode = colcon_build(colcon, [source.name for source in shrunk], env)
