@@ -110,7 +110,8 @@ def rosidl_parser_error(stderr: str, source: Path) -> tuple[str, str] | None:
 
 
 def unknown_package_error(stderr: str, source: Path) -> tuple[str, str] | None:
-    """A field of a package rosidl_generate_interfaces was not given (its DEPENDENCIES)."""
+    """A field whose type is of a package that rosidl_generate_interfaces' DEPENDENCIES do not
+    name: rosidl's type description generator fails on it with a KeyError."""
     missing = re.search(r"^KeyError: '(\w+)'$", stderr, re.M)
     target = re.search(r"rosidl_generator_type_description/\w+/\w+/(\w+)\.json", stderr)
     if not (missing and target and "rosidl_generator_type_description" in stderr):

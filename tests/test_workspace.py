@@ -361,6 +361,23 @@ def test_a_missing_dependency_fails_in_one_line_naming_it(tmp_path):
     ]
 
 
+def test_a_compile_error_names_the_file_and_line(tmp_path):
+    """The C++ node of `ros2 pkg create --node-name`, with a typo: the compiler's first error."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_cmake --node-name my_node my_package")
+    node = workspace / "src" / "my_package" / "src" / "my_node.cpp"
+    lines = node.read_text().splitlines()
+    at = next(number for number, text in enumerate(lines) if "printf" in text)
+    lines[at] = lines[at].replace(";", "")
+    node.write_text("\n".join(lines) + "\n")
+    [line] = failure_lines(bash(activated("colcon build"), workspace, BUILD_TIMEOUT))
+    # The missing ';' is reported where the next statement starts.
+    assert re.match(r"error: my_package: src/my_package/src/my_node\.cpp:\d+: expected ", line), (
+        line
+    )
+    assert "my_node.cpp" in full_log(line, workspace)
+
+
 SHOW_RANGE = """\
 import os
 
