@@ -3,7 +3,7 @@
 #   make test   set up if needed, then ruff and pytest
 #   make setup  only the set-up (venv, install, interface generation, ament index)
 #   make bench  set up if needed, then the benchmarks (a few minutes; prints a table)
-#   make interfaces  regenerate the interface packages after a .msg/.srv/.action changed
+#   make interfaces  rebuild the interface packages (colcon) after a .msg/.srv/.action changed
 #   make test-load  the test suite with every core kept busy (RUNS=3: three runs in a row)
 PYTHON ?= python3
 VENV := .venv
@@ -28,7 +28,9 @@ $(INSTALLED): pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test,interfaces]'
 	touch $@
 
-$(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py
+# colcon builds them, as a learner's workspace (tools/build_interfaces.py); after the
+# environment's setup files, which colcon looks for in the underlay (order only).
+$(INTERFACES): $(INSTALLED) $(INTERFACE_SOURCES) tools/build_interfaces.py | $(ENVIRONMENT)
 	$(PY) tools/build_interfaces.py
 	touch $@
 

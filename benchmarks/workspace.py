@@ -1,7 +1,7 @@
 """The learner's own packages: `colcon build` of an ament_python package (`ros2 pkg create
 --node-name my_node my_package`) and of the Custom-ROS2-Interfaces page's tutorial_interfaces
 (two msg, one srv), seconds and CPU, beside the set-up's own build of interfaces/
-(tools/build_interfaces.py into a temporary prefix).
+(tools/build_interfaces.py, colcon, into a temporary prefix).
 """
 
 from __future__ import annotations

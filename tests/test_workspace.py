@@ -281,22 +281,101 @@ def test_first_package_ament_cmake_builds_and_runs(tmp_path):
     assert shown == "hello world my_package package\n"
 
 
-@pytest.mark.long  # two interface builds
-def test_a_failing_interface_build_leaves_the_last_good_install(tmp_path):
-    """A syntax error in a .msg: the build fails naming the line; what was installed before
-    still works."""
+def failure_lines(result: subprocess.CompletedProcess) -> list[str]:
+    """A failed `colcon build`: its `error:` lines; colcon's own report, without the
+    package's stderr (ros_tutorials_common/colcon_events.py) and without a traceback."""
+    assert result.returncode != 0, result.stdout + result.stderr
+    assert "Traceback" not in result.stdout + result.stderr, result.stderr
+    assert "--- stderr:" not in result.stderr, result.stderr
+    return [line for line in result.stderr.splitlines() if line.startswith("error: ")]
+
+
+def full_log(line: str, workspace: Path) -> str:
+    """The text of the log an error line names."""
+    match = re.search(r" \(full log: (log/build_[-_0-9]+/\w+/stdout_stderr\.log)\)$", line)
+    assert match, line
+    return (workspace / match.group(1)).read_text()
+
+
+@pytest.mark.long  # an interface build, then two that fail early
+def test_a_failing_interface_build_says_where_and_leaves_the_last_good_install(tmp_path):
+    """A syntax error in a .msg, then a type of a package the CMakeLists.txt does not name:
+    each build fails with one line naming the file, the line and the reason, and the log;
+    what was installed before still works."""
     workspace = new_workspace(tmp_path)
     package = tutorial_interfaces(workspace)
     colcon_build(workspace)
-    (package / "msg" / "Num.msg").write_text("int64 num num\n")
+    (package / "msg" / "Num.msg").write_text("# a number\nint64 num num\n")
     result = bash(activated("colcon build"), workspace, BUILD_TIMEOUT)
-    assert result.returncode != 0
-    # colcon's and rosidl's own report, as on a ROS 2 installation: the line and the reason.
+    [line] = failure_lines(result)
+    assert line.startswith(
+        "error: tutorial_interfaces: src/tutorial_interfaces/msg/Num.msg:2: 'int64 num num': "
+        "value 'num' can not be converted to type 'int64'"
+    ), line
+    # colcon's and rosidl's own report is in the log the line names.
+    assert "Error processing 'int64 num num' of 'tutorial_interfaces/Num'" in full_log(
+        line, workspace
+    )
     assert "Failed   <<< tutorial_interfaces" in result.stderr
-    assert "Error processing 'int64 num num' of 'tutorial_interfaces/Num'" in result.stderr
+    assert "1 package failed: tutorial_interfaces" in result.stdout
+
+    (package / "msg" / "Num.msg").write_text("int64 num\nsensor_msgs/Temperature t\n")
+    [line] = failure_lines(bash(activated("colcon build"), workspace, BUILD_TIMEOUT))
+    assert line.startswith(
+        "error: tutorial_interfaces: src/tutorial_interfaces/msg/Num.msg:2: uses a type of "
+        "package 'sensor_msgs', which is not in rosidl_generate_interfaces' "
+        "DEPENDENCIES"
+    ), line
     assert (
         ok(sourced("ros2 interface show tutorial_interfaces/msg/Num"), workspace) == "int64 num\n"
     )
+
+
+def test_a_missing_dependency_fails_in_one_line_naming_it(tmp_path):
+    """`ros2 pkg create --dependencies` with a package that does not exist: the build stops
+    at its find_package() line, in one line."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_cmake my_package --dependencies no_such_msgs")
+    result = bash(activated("colcon build"), workspace, BUILD_TIMEOUT)
+    [line] = failure_lines(result)
+    number = next(
+        number
+        for number, text in enumerate(
+            (workspace / "src" / "my_package" / "CMakeLists.txt").read_text().splitlines(), 1
+        )
+        if "find_package(no_such_msgs REQUIRED)" in text
+    )
+    assert line.startswith(
+        f"error: my_package: src/my_package/CMakeLists.txt:{number}: find_package(no_such_msgs): "
+        "no package 'no_such_msgs' here"
+    ), line
+    assert "Could not find a package configuration file" in full_log(line, workspace)
+    # console_stderr, asked for, shows colcon's whole report as on a ROS 2 installation.
+    result = bash(
+        activated("colcon build --event-handlers console_stderr+"), workspace, BUILD_TIMEOUT
+    )
+    assert result.returncode != 0 and "--- stderr: my_package" in result.stderr
+    again = [line for line in result.stderr.splitlines() if line.startswith("error: ")]
+    assert [text.partition(" (full log: ")[0] for text in again] == [
+        line.partition(" (full log: ")[0]
+    ]
+
+
+def test_a_compile_error_names_the_file_and_line(tmp_path):
+    """The C++ node of `ros2 pkg create --node-name`, with a typo: the compiler's first error."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_cmake --node-name my_node my_package")
+    node = workspace / "src" / "my_package" / "src" / "my_node.cpp"
+    lines = node.read_text().splitlines()
+    at = next(number for number, text in enumerate(lines) if "printf" in text)
+    lines[at] = lines[at].replace(";", "")
+    node.write_text("\n".join(lines) + "\n")
+    [line] = failure_lines(bash(activated("colcon build"), workspace, BUILD_TIMEOUT))
+    # The missing ';' is reported where the next statement starts.
+    assert re.match(r"error: my_package: src/my_package/src/my_node\.cpp:\d+: expected ", line), (
+        line
+    )
+    assert "my_node.cpp" in full_log(line, workspace)
 
 
 SHOW_RANGE = """\

@@ -1,16 +1,22 @@
-"""Generate and install the interface packages in interfaces/ into this virtual environment.
+"""Build the interface packages in interfaces/ into this virtual environment with colcon.
 
 Each folder of interfaces/ with a package.xml is one ROS 2 interface package
 (ros_tutorials_interfaces, turtlesim; example_interfaces and action_tutorials_interfaces as
-ROS 2 Jazzy ships them, unchanged, for the tutorials' code). This runs the real rosidl tool
-chain from the ROS 2 Jazzy wheels through CMake on each, the way colcon would, and installs into
-sys.prefix: the Python package lands in site-packages and the type-support libraries in
-sys.prefix/lib, where the wheels' loader already looks. The build trees (build/interfaces/PKG)
-are kept, so a changed definition rebuilds only what changed. It builds with Ninja when the
-set-up installed it, and compiles each type-support library as one unit
-(interfaces/cmake/unity_build.cmake, through interfaces/cmake/colcon_toolchain.cmake, which the
-learner's colcon builds get too): half the CPU time, the same libraries (README: "What the
-interface build costs").
+ROS 2 Jazzy ships them, unchanged, for the tutorials' code). They are built the way a learner
+builds their own: the real `colcon build`, the same toolchain file
+(interfaces/cmake/colcon_toolchain.cmake: the wheels' exported targets repaired, unity builds of
+the type-support libraries) and the same colcon defaults (a failure is one line), here with
+`--merge-install` into sys.prefix: the Python packages land in site-packages and the
+type-support libraries in sys.prefix/lib, where the wheels' loader already looks. The build
+trees (build/interfaces/PKG) are kept, so a changed definition rebuilds only what changed;
+colcon's logs are in build/log/. It builds with Ninja when the set-up installed it.
+
+What this adds to colcon:
+- a message removed from a package is removed from the prefix too: rosidl does not regenerate
+  for a removal, so that package is built again from a fresh tree, and the files its previous
+  install put in the prefix that this one no longer does are deleted;
+- the prefix keeps its own setup files (tools/ros_environment.py: sourcing them activates this
+  environment); the ones colcon writes at the top of an install base are taken away again.
 
     .venv/bin/python tools/build_interfaces.py
     .venv/bin/python tools/build_interfaces.py --sources DIR --prefix DIR --build DIR
@@ -27,8 +33,6 @@ import os
 import shutil
 import subprocess
 import sys
-import xml.etree.ElementTree as ElementTree
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -37,30 +41,17 @@ BUILD = ROOT / "build" / "interfaces"
 # What the learner's `colcon build` gets from the activated environment too (the wheels'
 # exported targets repaired, unity builds, no linters); see the file.
 TOOLCHAIN = SOURCES / "cmake" / "colcon_toolchain.cmake"
+# colcon's defaults in the activated environment (a failed package is one line); used here
+# too, and not the user's own ~/.colcon/defaults.yaml, so the set-up builds the same everywhere.
+COLCON_DEFAULTS = ROOT / "ros_tutorials_common" / "config" / "colcon_defaults.yaml"
+# What colcon writes at the top of a merged install base, whatever its shell extensions.
+COLCON_PREFIX_FILES = ("local_setup.*", "setup.*", "_local_setup_util*", "COLCON_IGNORE")
+COLCON_PREFIX_FILES += (".colcon_install_layout",)
 
 
 def interface_packages(sources: Path = SOURCES) -> list[Path]:
     """The interface packages in interfaces/ (folders holding a package.xml), by name."""
     return sorted(path.parent for path in sources.glob("*/package.xml"))
-
-
-def dependencies(source: Path) -> set[str]:
-    """The packages a package's package.xml names as dependencies of any kind."""
-    root = ElementTree.parse(source / "package.xml").getroot()
-    return {
-        element.text.strip() for element in root if element.tag.endswith("depend") and element.text
-    }
-
-
-def find_cmake() -> str:
-    """Prefer the CMake installed into the venv (from PyPI), then the system's."""
-    venv_cmake = Path(sys.prefix) / "bin" / "cmake"
-    if venv_cmake.exists():
-        return str(venv_cmake)
-    found = shutil.which("cmake")
-    if found is None:
-        sys.exit("build_interfaces: CMake not found; run 'make setup' or install CMake >= 3.22")
-    return found
 
 
 def cmake_generator() -> list[str]:
@@ -84,12 +75,12 @@ def configured_generator(build: Path) -> str | None:
     return None
 
 
-def clear(build: Path, keep: Path) -> None:
-    """Empty a build tree, keeping one file (the log being written)."""
+def clear(build: Path) -> None:
+    """Empty a build tree (colcon's files in it too: it is configured again)."""
     for child in build.iterdir():
         if child.is_dir():
             shutil.rmtree(child)
-        elif child != keep:
+        else:
             child.unlink()
 
 
@@ -105,66 +96,23 @@ def installed_files(build: Path) -> set[str]:
     return set(manifest.read_text().splitlines()) if manifest.is_file() else set()
 
 
-def build_package(
-    source: Path, cmake: str, env: dict[str, str], prefix: Path, build_root: Path = BUILD
-) -> bool:
-    """Configure, build and install one interface package; False (log printed) on failure.
+def colcon_files(prefix: Path) -> dict[str, bytes]:
+    """The files colcon writes at the top of an install base that PREFIX has now."""
+    found = (path for pattern in COLCON_PREFIX_FILES for path in prefix.glob(pattern))
+    return {path.name: path.read_bytes() for path in found if path.is_file()}
 
-    A message removed from the package is removed from the prefix too: rosidl does not
-    regenerate for a removal, so the build tree is started afresh, and files the previous
-    install put in the prefix that this one no longer does are deleted.
-    """
-    build = build_root / source.name
-    build.mkdir(parents=True, exist_ok=True)
-    generator = cmake_generator()
-    configure = [
-        cmake,
-        *generator,
-        "-S",
-        str(source),
-        "-B",
-        str(build),
-        f"-DCMAKE_INSTALL_PREFIX={prefix}",
-        f"-DCMAKE_PREFIX_PATH={env['CMAKE_PREFIX_PATH'].replace(os.pathsep, ';')}",
-        f"-DPython3_EXECUTABLE={sys.executable}",
-        f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}",
-        "-DBUILD_TESTING=OFF",
-    ]
-    log_path = build / "build.log"
-    before = listed_interfaces(build, source.name)
-    installed_before = installed_files(build)
-    with log_path.open("w") as log:
-        # A tree configured by another generator (Makefiles before the set-up had Ninja)
-        # cannot be reconfigured by this one: start it afresh.
-        wanted = "Ninja" if generator else "Unix Makefiles"
-        if configured_generator(build) not in (None, wanted):
-            log.write(f"configured for {configured_generator(build)}, not {wanted}: afresh\n")
-            clear(build, log_path)
 
-        def step(command: list[str]) -> bool:
-            log.write(f"$ {' '.join(command)}\n")
-            log.flush()
-            if subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT).returncode:
-                print(log_path.read_text()[-4000:], file=sys.stderr)
-                print(
-                    f"build_interfaces: {source.name}: step failed: {' '.join(command[:2])}; "
-                    f"full log in {log_path}",
-                    file=sys.stderr,
-                )
-                return False
-            return True
+def restore(prefix: Path, before: dict[str, bytes]) -> None:
+    """Put the prefix's own top-level files back as they were before colcon ran."""
+    for name, content in colcon_files(prefix).items():
+        if name not in before:
+            (prefix / name).unlink()
+        elif before[name] != content:
+            (prefix / name).write_bytes(before[name])
 
-        if not step(configure):
-            return False
-        removed = before - listed_interfaces(build, source.name)
-        if removed:
-            log.write(f"removed {' '.join(sorted(removed))}: building afresh\n")
-            clear(build, log_path)
-            if not step(configure):
-                return False
-        build_step = [cmake, "--build", str(build), "--parallel", str(os.cpu_count() or 2)]
-        if not (step(build_step) and step([cmake, "--install", str(build)])):
-            return False
+
+def remove_stale(source: Path, build: Path, prefix: Path, installed_before: set[str]) -> None:
+    """Delete what the package's previous install put in PREFIX that this one did not."""
     for stale in installed_before - installed_files(build):
         path = Path(stale)
         # share/PKG/package.xml, once tools/register_packages.py made it a link to the source,
@@ -176,47 +124,77 @@ def build_package(
             path.unlink()
             for compiled in path.parent.glob(f"__pycache__/{path.stem}.*.pyc"):
                 compiled.unlink()
-    return True
+
+
+def colcon_build(command: list[str], packages: list[str], env: dict[str, str]) -> int:
+    selected = ["--packages-select", *packages] if packages else []
+    # The arguments after --cmake-args (one of them starts with a dash) come last.
+    at = command.index("--cmake-args")
+    return subprocess.run([*command[:at], *selected, *command[at:]], env=env).returncode
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description="Generate and install interface packages.")
+    parser = argparse.ArgumentParser(description="Build the interface packages with colcon.")
     parser.add_argument("--sources", type=Path, default=SOURCES, help="default: interfaces/")
     parser.add_argument("--prefix", type=Path, default=Path(sys.prefix), help="default: the venv")
     parser.add_argument("--build", type=Path, default=BUILD, help="default: build/interfaces/")
     options = parser.parse_args(argv)
-    prefix = options.prefix.absolute()
-    # ament's resource index and CMake's package search start at the install prefix, then
-    # look in this environment (the same place unless --prefix says otherwise).
-    search = os.pathsep.join(dict.fromkeys([str(prefix), sys.prefix]))
+    prefix, build_base = options.prefix.absolute(), options.build.absolute()
+    prefix.mkdir(parents=True, exist_ok=True)
+    # The underlay is this environment (the dependencies: builtin_interfaces, the
+    # generators), as in a learner's activated shell; colcon adds the packages it builds.
     env = dict(os.environ)
-    env["AMENT_PREFIX_PATH"] = search
-    env["CMAKE_PREFIX_PATH"] = search
+    env["AMENT_PREFIX_PATH"] = sys.prefix
+    env["CMAKE_PREFIX_PATH"] = sys.prefix
     env["PATH"] = f"{Path(sys.prefix) / 'bin'}{os.pathsep}{env.get('PATH', '')}"
-    cmake = find_cmake()
-    remaining = interface_packages(options.sources)
-    names = {source.name for source in remaining}
-    built: set[str] = set()
-    fixed = (cmake, env, prefix, options.build.absolute())  # build_package's other arguments
-    # Two packages at a time, each one's dependencies among these first: rosidl's generators
-    # and CMake's configure step are one process each, which leaves a core idle.
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        while remaining:
-            ready = [s for s in remaining if dependencies(s) & names <= built]
-            if not ready:
-                print(
-                    "build_interfaces: the packages depend on each other in a circle",
-                    file=sys.stderr,
-                )
-                return 1
-            results = pool.map(build_package, ready, *[[x] * len(ready) for x in fixed])
-            for source, result in zip(ready, list(results), strict=True):
-                if not result:
-                    return 1
-                print(f"{source.name} generated and installed into {prefix}")
-                built.add(source.name)
-            remaining = [source for source in remaining if source not in ready]
-    return 0
+    env["CMAKE_TOOLCHAIN_FILE"] = str(TOOLCHAIN)
+    env["COLCON_DEFAULTS_FILE"] = str(COLCON_DEFAULTS)
+    # colcon gives make (and Ninja) `-j2 -l2` unless MAKEFLAGS has a -j: the load limit would
+    # build one file at a time on a machine busy with anything else. Two jobs per package.
+    jobs = str(os.cpu_count() or 2)
+    env["MAKEFLAGS"] = f"-j{jobs}"
+    env["CMAKE_BUILD_PARALLEL_LEVEL"] = jobs
+    sources = interface_packages(options.sources)
+    generator = cmake_generator()
+    wanted = "Ninja" if generator else "Unix Makefiles"
+    listed, installed = {}, {}
+    for source in sources:
+        build = build_base / source.name
+        # A tree configured by another generator (Makefiles before the set-up had Ninja)
+        # cannot be reconfigured by this one: start it afresh.
+        if configured_generator(build) not in (None, wanted):
+            clear(build)
+        listed[source.name] = listed_interfaces(build, source.name)
+        installed[source.name] = installed_files(build)
+    colcon = [
+        str(Path(sys.prefix) / "bin" / "colcon"),
+        "--log-base",
+        str(build_base.parent / "log"),
+    ]
+    colcon += ["build", "--merge-install", "--base-paths", str(options.sources.absolute())]
+    colcon += ["--build-base", str(build_base), "--install-base", str(prefix)]
+    colcon += ["--cmake-args", *generator, f"-DPython3_EXECUTABLE={sys.executable}"]
+    kept = colcon_files(prefix)
+    try:
+        returncode = colcon_build(colcon, [], env)
+        # A package whose configure lists fewer interfaces than before: afresh, once more.
+        shrunk = [
+            source
+            for source in sources
+            if listed[source.name] - listed_interfaces(build_base / source.name, source.name)
+        ]
+        for source in shrunk:
+            print(f"{source.name}: an interface was removed, building it afresh", flush=True)
+            clear(build_base / source.name)
+        if shrunk and returncode == 0:
+            returncode = colcon_build(colcon, [source.name for source in shrunk], env)
+    finally:
+        restore(prefix, kept)
+    if returncode == 0:
+        for source in sources:
+            build = build_base / source.name
+            remove_stale(source, build, prefix, installed[source.name])
+    return returncode
 
 
 if __name__ == "__main__":

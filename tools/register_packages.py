@@ -7,7 +7,7 @@ the way `colcon build --symlink-install` does: share/PKG/package.xml, share/PKG/
 share/PKG/config are links to the source, so an edited or new launch file is used at once.
 The Python code itself is installed by pip (editable), not copied to share/.
 
-The interface packages in interfaces/ are installed by tools/build_interfaces.py (CMake copies
+The interface packages in interfaces/ are installed by tools/build_interfaces.py (colcon copies
 their files); their share/PKG/package.xml is replaced by a link to the source too, so
 `rospack find` leads to the folder where a learner adds a .msg (launcher/packages.py
 package_folder()). Entries this script made for packages that no longer exist are removed.

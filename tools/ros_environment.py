@@ -10,7 +10,9 @@ underlay a learner builds their own packages on.
   each unless the user has set it, so a node of the learner's own package, however started,
   keeps DDS on this machine;
 - CMAKE_TOOLCHAIN_FILE, unless set: interfaces/cmake/colcon_toolchain.cmake, what `colcon
-  build` of an ament_cmake package needs here that a ROS 2 installation would not.
+  build` of an ament_cmake package needs here that a ROS 2 installation would not;
+- COLCON_DEFAULTS_FILE, unless set: ros_tutorials_common/config/colcon_defaults.yaml, where
+  a package whose build fails is one line (ros_tutorials_common/colcon_events.py).
 The venv's activate scripts (bash/zsh, fish, csh) get one marked block each, written again
 when it changed and otherwise left alone; `deactivate` (bash/zsh) takes it all away again.
 
@@ -36,6 +38,7 @@ from ros_tutorials_common.dds import DDS_DEFAULTS  # noqa: E402 - after ROOT is 
 
 VARIABLES = {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3", "ROS_DISTRO": "jazzy"}
 TOOLCHAIN = ROOT / "interfaces" / "cmake" / "colcon_toolchain.cmake"
+COLCON_DEFAULTS = ROOT / "ros_tutorials_common" / "config" / "colcon_defaults.yaml"
 BEGIN = "# >>> ros-tutorials: the ROS 2 environment (tools/ros_environment.py) >>>"
 END = "# <<< ros-tutorials <<<"
 SETUP_FILES = ("local_setup.sh", "local_setup.bash", "local_setup.zsh")
@@ -44,7 +47,11 @@ SETUP_FILES += tuple(name.removeprefix("local_") for name in SETUP_FILES)
 
 def defaults() -> dict[str, str]:
     """The variables set unless the user has set them."""
-    return {**DDS_DEFAULTS, "CMAKE_TOOLCHAIN_FILE": str(TOOLCHAIN)}
+    return {
+        **DDS_DEFAULTS,
+        "CMAKE_TOOLCHAIN_FILE": str(TOOLCHAIN),
+        "COLCON_DEFAULTS_FILE": str(COLCON_DEFAULTS),
+    }
 
 
 def block(shell: str, prefix: Path) -> str:
