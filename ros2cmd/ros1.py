@@ -25,13 +25,13 @@ from typing import Any
 
 import yaml
 
-from launcher import packages
 from ros2cmd import interface, node, param, service, topic
 from ros2cmd.cli import common_options, run_parsed
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.messages import parse_yaml
 from ros2cmd.typenames import load_type
+from ros_tutorials_common import packages
 from ros_tutorials_common.cli import positive_int, positive_rate
 
 # ROS 1 commands that have no ROS 2 counterpart, and what to do instead.

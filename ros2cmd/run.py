@@ -5,10 +5,10 @@
     rosrun ros_tutorials_parameter dynamics_talker _talker_str:=Goodbye
 
 PKG and EXECUTABLE are the seeds' names, or any package of the ament index (a learner's own,
-built with colcon: `source install/setup.bash` first), looked up in the launcher's package
-table (launcher/packages.py, the one place that turns them into a command line). The process
-is replaced by the executable (as ROS 1's rosrun does with `exec`), so its output, Ctrl-C and
-exit status are the executable's own; it starts with this project's DDS defaults.
+built with colcon: `source install/setup.bash` first), looked up in the package index
+(ros_tutorials_common/packages.py, the one place that turns them into a command line). The
+process is replaced by the executable (as ROS 1's rosrun does with `exec`), so its output,
+Ctrl-C and exit status are the executable's own; it starts with this project's DDS defaults.
 
 The ROS 1 argument forms the seeds use are translated to ROS 2's:
 
@@ -31,9 +31,8 @@ import shlex
 import sys
 from collections.abc import Sequence
 
-from launcher import packages
 from ros2cmd.errors import ToolError
-from ros_tutorials_common import ctrl_c, names
+from ros_tutorials_common import ctrl_c, names, packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 

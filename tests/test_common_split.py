@@ -22,7 +22,6 @@ PLAIN = sorted(
 )
 LAUNCHER = [
     "launcher.__main__",
-    "launcher.packages",
     "launcher.parse",
     "launcher.plan",
     "launcher.resolve",
