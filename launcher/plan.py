@@ -19,7 +19,7 @@ from typing import Any
 import yaml
 
 from launcher import LaunchError
-from launcher.resolve import AT_START, Launch, NodeDecl, Step, When
+from launcher.declarations import AT_START, Launch, NodeDecl, Step, When
 from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import InputError, load_yaml
 

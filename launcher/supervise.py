@@ -56,8 +56,8 @@ from pathlib import Path
 from typing import IO, ClassVar
 
 from launcher import LaunchError, guardian
+from launcher.declarations import Step
 from launcher.plan import ProcessSpec, program_path
-from launcher.resolve import Step
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults
