@@ -1,7 +1,9 @@
 """`rosmsg` and `rossrv` (show|list|package|packages): ROS 1's on `ros2 interface`'s code.
 
-rosmsg show turtlesim/Pose              ROS 1's pkg/Name: the tool says msg or srv
-rosservice type /spawn | rossrv show    the type read from a pipe, as ROS 1 did
+    rosmsg show turtlesim/Pose              ROS 1's pkg/Name: the tool says msg or srv
+    rosservice type /spawn | rossrv show    the type read from a pipe, as ROS 1 did
+
+Each command runs ros2cmd/interface.py's function, for one kind of type: msg or srv.
 """
 
 from __future__ import annotations

@@ -1,6 +1,8 @@
 """`rosservice list|type|call|args|info|find`: ROS 1's rosservice on `ros2 service`'s code.
 
-rosservice call /ros_tutorial_srv 10 5       the request's fields in order (seed 002)
+    rosservice call /ros_tutorial_srv 10 5       the request's fields in order (seed 002)
+
+Each command runs ros2cmd/service.py's function; `args` and `info` read the request's fields.
 """
 
 from __future__ import annotations

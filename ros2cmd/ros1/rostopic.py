@@ -1,7 +1,9 @@
 """`rostopic list|echo|pub|hz|bw|info|type|find`: ROS 1's rostopic on `ros2 topic`'s code.
 
-rostopic pub /cmd_vel geometry_msgs/Twist -r 10 '{linear: {x: 1.0}}'    options anywhere
-rostopic echo /turtle1/pose/x                                          one field, by name
+    rostopic pub /cmd_vel geometry_msgs/Twist -r 10 '{linear: {x: 1.0}}'    options anywhere
+    rostopic echo /turtle1/pose/x                                          one field, by name
+
+Each command runs ros2cmd/topic.py's function; see ros2cmd/ros1/tool.py for what all share.
 """
 
 from __future__ import annotations
