@@ -22,6 +22,7 @@ PLAIN = sorted(
 )
 LAUNCHER = [
     "launcher.__main__",
+    "launcher.declarations",
     "launcher.parse",
     "launcher.plan",
     "launcher.resolve",
