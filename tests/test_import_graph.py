@@ -217,12 +217,13 @@ def test_type_checking_imports_and_parent_packages_are_not_edges(tmp_path):
         {
             "pkg/__init__.py": "from pkg.a import A\n",
             "pkg/a.py": "from typing import TYPE_CHECKING\n"
-            "if TYPE_CHECKING:\n    from pkg.b import B\nelse:\n    import json\nA = 1\n",
+            "if TYPE_CHECKING:\n    from pkg.b import B\nelse:\n    import pkg.c\nA = 1\n",
             "pkg/b.py": "from pkg.a import A\nB = A\n",
+            "pkg/c.py": "",
         },
     )
     graph = import_graph(tmp_path)
-    assert [edge.target for edge in graph["pkg.a"]] == []
+    assert [edge.target for edge in graph["pkg.a"]] == ["pkg.c"]  # the else branch runs
     assert [edge.target for edge in graph["pkg.b"]] == ["pkg.a"]
     assert cycles(tmp_path) == []
     # A name of the package itself (not one of its modules) is an edge to its __init__.
