@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from launcher import LaunchError
+from launcher.declarations import Step, When
 
 if TYPE_CHECKING:
     from launcher.resolve import Scope
@@ -82,6 +83,11 @@ class Action(LaunchDescriptionEntity):
         context.resolver.executed[id(self)] = self
         for entity in self.execute(context) or []:
             context.visit(entity)
+
+    def step_when_returned(self, when: When, context: LaunchContext) -> Step | None:
+        """What this action does when an event handler's function returns it, as the event
+        happens: a step, or None if it cannot happen then (the plan's processes are fixed)."""
+        return None
 
 
 class Substitution:

@@ -26,14 +26,10 @@ from launch._base import (
     perform,
 )
 from launch._missing import module_getattr
+from launch.event_handlers import OnProcessExit
 from launch.events import Shutdown as ShutdownEvent
 from launcher import LaunchError
-from launcher.resolve import (
-    DEFAULT_RESPAWN_MAX_RETRIES,
-    MAX_SECONDS,
-    NodeDecl,
-    Step,
-)
+from launcher.declarations import DEFAULT_RESPAWN_MAX_RETRIES, MAX_SECONDS, NodeDecl, Step, When
 
 __all__ = [
     "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
@@ -177,6 +173,12 @@ class LogInfo(Action):
         text = perform(self.msg, context)
         context.resolver.add_step(Step(context.scope.when, "log", text, where=self.where))
 
+    def step_when_returned(self, when: When, context: LaunchContext) -> Step:
+        text = "".join(
+            part if isinstance(part, str) else part.perform(context) for part in normalize(self.msg)
+        )
+        return Step(when, "log", text)
+
 
 class EmitEvent(Action):
     """Only the Shutdown event is emitted by launch files here."""
@@ -193,6 +195,9 @@ class EmitEvent(Action):
             )
         reason = perform(self.event.reason, context)
         context.resolver.add_step(Step(context.scope.when, "shutdown", reason, where=self.where))
+
+    def step_when_returned(self, when: When, context: LaunchContext) -> Step:
+        return Step(when, "shutdown", str(getattr(self.event, "reason", "")))
 
 
 class Shutdown(EmitEvent):
@@ -377,8 +382,6 @@ class ExecuteProcess(Action):
         context.resolver.process_index[id(self)] = index
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
-            from launch.event_handlers import OnProcessExit
-
             OnProcessExit(target_action=self, on_exit=others).register(context)
 
 

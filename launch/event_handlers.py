@@ -1,6 +1,6 @@
 """launch.event_handlers: actions that happen when a process starts, exits or prints a line,
 or when the launch shuts down. Each becomes steps and processes of the plan that wait for
-their event (``launcher.resolve.When``)."""
+their event (``launcher.declarations.When``)."""
 
 from __future__ import annotations
 
@@ -9,9 +9,8 @@ from typing import Any
 
 from launch._base import Action, EventHandler, LaunchContext, is_ours
 from launch._missing import module_getattr
-from launch.actions import EmitEvent, LogInfo
 from launch.events import event_from
-from launcher.resolve import Step, When
+from launcher.declarations import Step, When
 
 __all__ = [
     "OnExecutionComplete", "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown",
@@ -74,25 +73,14 @@ def run_handler_function(
     steps = []
     results = result if isinstance(result, (list, tuple)) else [result] if result else []
     for action in results:
-        if isinstance(action, LogInfo):
-            text = "".join(
-                part if isinstance(part, str) else part.perform(context)
-                for part in _parts(action.msg)
-            )
-            steps.append(Step(when, "log", text))
-        elif isinstance(action, EmitEvent):
-            steps.append(Step(when, "shutdown", str(getattr(action.event, "reason", ""))))
+        step = action.step_when_returned(when, context) if isinstance(action, Action) else None
+        if step is not None:  # LogInfo, EmitEvent (launch/actions.py)
+            steps.append(step)
         else:
             steps.append(Step(when, "log", f"{handler.where}: an event handler's function "
                               f"returned {type(action).__name__}; only LogInfo and "
                               "EmitEvent(Shutdown) can happen from a function here"))  # fmt: skip
     return steps
-
-
-def _parts(msg: Any) -> list[Any]:
-    from launch._base import normalize
-
-    return normalize(msg)
 
 
 def _user_line(error: BaseException) -> str | None:

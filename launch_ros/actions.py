@@ -11,7 +11,8 @@ from launch._base import Action, LaunchContext, Substitution, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
-from launcher.resolve import NodeDecl, join_namespace, remap_problem, valid_name
+from launcher.declarations import NodeDecl
+from launcher.resolve import join_namespace, remap_problem, valid_name
 from ros_tutorials_common.bounded import InputError, load_yaml, parameter_problem, read_params_file
 
 __all__ = [

@@ -8,7 +8,7 @@ from typing import Any
 
 from launch._base import LaunchContext, Substitution, perform
 from launch._missing import module_getattr
-from launcher import packages
+from ros_tutorials_common import packages
 
 __all__ = ["ExecutableInPackage", "FindPackage", "FindPackagePrefix", "FindPackageShare"]
 

@@ -23,10 +23,12 @@ import sys
 import traceback
 from pathlib import Path
 
-from launcher import CodeRefused, LaunchError, ament, guardian, packages
+from launcher import CodeRefused, LaunchError, guardian
+from launcher.declarations import ArgInfo
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
+from launcher.resolve import Options, describe_args, resolve, valid_name
+from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 
 EXAMPLES = """\

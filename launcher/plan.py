@@ -18,8 +18,9 @@ from typing import Any
 
 import yaml
 
-from launcher import LaunchError, packages
-from launcher.resolve import AT_START, Launch, NodeDecl, Step, When
+from launcher import LaunchError
+from launcher.declarations import AT_START, Launch, NodeDecl, Step, When
+from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import InputError, load_yaml
 
 DEFAULT_SIGTERM_TIMEOUT = 5.0  # seconds after SIGINT before SIGTERM, as ros2 launch

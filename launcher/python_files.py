@@ -12,11 +12,14 @@ from __future__ import annotations
 import traceback
 import types
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from launcher import LaunchError
-from launcher.resolve import ArgInfo, Scope
+from launcher.declarations import ArgInfo, When
 from ros_tutorials_common.bounded import InputError, read_text
+
+if TYPE_CHECKING:  # the resolver calls this module with its scope
+    from launcher.resolve import Scope
 
 
 class LaunchFileRaised(LaunchError):
@@ -101,8 +104,6 @@ def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
                 "so its actions never happen"
             )
             continue
-        from launcher.resolve import When
-
         _call(path, handler.register_at, handler_context, When(handler.event, index))
     if strict:
         declared = {info.name for info in describe_python_args(path, description)}

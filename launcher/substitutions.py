@@ -19,9 +19,10 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
 
-from launcher import CodeRefused, packages
+from launcher import CodeRefused
 from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
 from launcher.parse import Element
+from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
 TRUE_WORDS = ("true", "1")

@@ -56,10 +56,10 @@ from pathlib import Path
 from typing import IO, ClassVar
 
 from launcher import LaunchError, guardian
-from launcher.ament import apply_ament_defaults
+from launcher.declarations import Step
 from launcher.plan import ProcessSpec, program_path
-from launcher.resolve import Step
 from ros_tutorials_common import ctrl_c
+from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults
 
 POLL_SECONDS = 0.05

@@ -7,7 +7,7 @@
     ros2 param set /service_server calculation_method 2
                                     rosparam set /calculation_method 2
 
-See `ros2 --help`; the ROS 1 front-ends are in ros1.py.
+See `ros2 --help`; the ROS 1 front-ends are in ros1/.
 """
 
 from ros_tutorials_common.ctrl_c import release as _release_ctrl_c

@@ -22,6 +22,7 @@ from rclpy.exceptions import NameValidationException
 from rclpy.executors import ExternalShutdownException
 
 from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
+from ros2cmd.bag import ros2 as bag
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
 from ros2cmd.wait import Interrupted
@@ -70,12 +71,11 @@ def build_parser() -> argparse.ArgumentParser:
     )
     verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
     common = common_options()
-    from ros2cmd.bag.cli import register as register_bag  # it uses this module: import late
 
     verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
     for register in (
         action.register,
-        register_bag,
+        bag.register,
         daemon.register,
         doctor.register,
         interface.register,
@@ -182,7 +182,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def run_parsed(args: argparse.Namespace) -> int:
-    """Run the command a parser chose (ros2's, or a ROS 1 tool's in ros1.py)."""
+    """Run the command a parser chose (ros2's, or a ROS 1 tool's in ros1/)."""
     return execute(
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),

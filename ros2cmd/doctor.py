@@ -766,7 +766,7 @@ def _peer_name_ok(peer: str) -> bool:
 
 def local_packages() -> dict[str, str]:
     """Every package in this environment's ament index and its package.xml version."""
-    from launcher import ament
+    from ros_tutorials_common import ament
 
     found = {}
     for name, prefix in ament.packages().items():

@@ -1,7 +1,7 @@
 """`ros2 param ...` (list, get, set, delete, describe, dump, load): a node's parameters
 through its parameter services, printed as ROS 2 Jazzy's ros2param prints them
 (`Integer value is: 86`, `Set parameter successful`, the dump's `/node:` /
-`  ros__parameters:` YAML). The ROS 1 front-end (rosparam, ros1.py) uses the same functions.
+`  ros__parameters:` YAML). The ROS 1 front-end (ros1/rosparam.py) uses the same functions.
 
 In ROS 2 every parameter belongs to a node, which answers on the services
 ``<node>/list_parameters``, ``<node>/get_parameters``, ``<node>/set_parameters``,

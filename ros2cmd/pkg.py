@@ -6,10 +6,10 @@
     ros2 pkg xml turtlesim [-t version]    its package.xml (or one tag's text)
     ros2 pkg create --build-type ament_python --license Apache-2.0 --node-name my_node my_package
 
-The packages are those of the ament index (launcher/ament.py: this environment, and what
-AMENT_PREFIX_PATH adds). A package's executables are what an installed package has in
+The packages are those of the ament index (ros_tutorials_common/ament.py: this environment,
+and what AMENT_PREFIX_PATH adds). A package's executables are what an installed package has in
 <prefix>/lib/<package>/, and for this project's packages what `ros2 run` starts
-(launcher/packages.py): `turtlesim` is the interface package, its nodes are
+(ros_tutorials_common/packages.py): `turtlesim` is the interface package, its nodes are
 ros_tutorials_turtlesim's, listed under the name the tutorials type.
 
 `create` writes the files ros2pkg's templates write (package.xml, setup.py, setup.cfg,
@@ -31,8 +31,8 @@ import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from launcher import ament, packages
 from ros2cmd.errors import ToolError
+from ros_tutorials_common import ament, packages
 
 LICENSES = Path(__file__).parent / "licenses"
 # The SPDX identifiers ament_copyright has a LICENSE text for, in its order.

@@ -1,7 +1,7 @@
 """`ros2 topic ...`: list, echo, pub, hz, bw, delay, info, type and find, as ros2topic (ROS 2
 Jazzy) has them: its options, and its output line for line (register() and the ros2_* functions
-at the end). The functions before them serve ROS 1's `rostopic` (ros1.py), whose output stays
-ROS 1's where it differs (`rostopic hz`, `rostopic info`, latching `rostopic pub`).
+at the end). The functions before them serve ROS 1's `rostopic` (ros1/rostopic.py), whose
+output stays ROS 1's where it differs (`rostopic hz`, `rostopic info`, latching `rostopic pub`).
 """
 
 from __future__ import annotations

@@ -1,9 +1,10 @@
 """Interface type names: 'pkg/msg/Name' (ROS 2), 'pkg/Name' (ROS 1), and where they live.
 
-Types are found the way ROS 2 finds them, through ament_index_python (launcher/ament.py):
-the ament resource index lists, per package, the interface files it installed (the resource
-rosidl_interfaces/PKG), the definitions are in the package's share/PKG/{msg,srv,action}/, and
-the Python classes are imported from PKG.msg, PKG.srv, PKG.action.
+Types are found the way ROS 2 finds them, through ament_index_python
+(ros_tutorials_common/ament.py): the ament resource index lists, per package, the interface
+files it installed (the resource rosidl_interfaces/PKG), the definitions are in the package's
+share/PKG/{msg,srv,action}/, and the Python classes are imported from PKG.msg, PKG.srv,
+PKG.action.
 """
 
 from __future__ import annotations
@@ -13,9 +14,9 @@ import os
 import sys
 from pathlib import Path
 
-from launcher import ament
-from launcher.packages import resolve_package
 from ros2cmd.errors import ToolError
+from ros_tutorials_common import ament
+from ros_tutorials_common.packages import resolve_package
 
 # The seeds define their messages in their own package (pub_sub/Num, my_package/UserRecord,
 # ros_tutorials_topic/MsgTutorial); here they all live in one interface package.
@@ -39,7 +40,7 @@ def interface_index() -> dict[str, list[str]]:
 
 def interface_package(package: str, index: dict[str, list[str]]) -> str:
     """The interface package a package name stands for: itself if it has interfaces, else
-    for a package of this project or a seed's name for one (launcher.packages'
+    for a package of this project or a seed's name for one (ros_tutorials_common.packages'
     resolve_package: ros_tutorials_topic, pub_sub, service, ...) the one interface package."""
     if package not in index and resolve_package(package):
         return SEED_INTERFACES

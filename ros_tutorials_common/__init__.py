@@ -5,6 +5,8 @@ Here, modules that never import rclpy (the launcher uses them and stays light; a
 checks that importing any of them loads no rclpy):
 
 - ``dds``: the one place that sets this project's DDS defaults
+- ``ament``, ``packages``: the package index the launcher and the tools read (the ament
+  index of AMENT_PREFIX_PATH; a package's executables as command lines)
 - ``cli``: argument types and exit codes shared by the command-line programs
 - ``int64``: keeping the servers' results inside int64
 - ``bounded``: reading files, pipes and YAML from users within limits

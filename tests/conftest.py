@@ -23,9 +23,9 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
 
-from launcher.ament import apply_ament_defaults
 from ros2cmd import daemon, graph
 from ros2cmd.local_participants import domain_processes
+from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import (
     PRIVATE_DOMAIN_IDS,
     apply_dds_defaults,
@@ -92,8 +92,8 @@ def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     os.environ.setdefault("PYTHONFAULTHANDLER", "1")
     apply_dds_defaults()
     # What the first package lookup would add to os.environ (this environment's prefix in
-    # AMENT_PREFIX_PATH, launcher/ament.py), added before the warm-start server takes the
-    # environment it serves: a lookup in a test then changes nothing (test_warm failed).
+    # AMENT_PREFIX_PATH, ros_tutorials_common/ament.py), added before the warm-start server
+    # takes the environment it serves: a lookup in a test then changes nothing (test_warm failed).
     apply_ament_defaults()
     # Lists discover for themselves unless a test asks for the daemon (tests/test_daemon.py).
     os.environ[daemon.NO_DAEMON_VARIABLE] = "1"

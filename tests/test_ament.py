@@ -13,9 +13,10 @@ from pathlib import Path
 import pytest
 from helpers import TIMEOUT, finished
 
-from launcher import LaunchError, ament, packages
+from launcher import LaunchError
 from launcher.plan import make_plan
 from launcher.resolve import Options, resolve
+from ros_tutorials_common import ament, packages
 
 ROOT = Path(__file__).resolve().parent.parent
 VENV_SHARE = Path(sys.prefix) / "share"

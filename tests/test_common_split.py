@@ -22,7 +22,7 @@ PLAIN = sorted(
 )
 LAUNCHER = [
     "launcher.__main__",
-    "launcher.packages",
+    "launcher.declarations",
     "launcher.parse",
     "launcher.plan",
     "launcher.resolve",

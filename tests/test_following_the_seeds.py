@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from helpers import finished, script
 
-from launcher import packages
 from ros2cmd.errors import ToolError
 from ros2cmd.run import translate_arguments
+from ros_tutorials_common import packages
 
 ROOT = Path(__file__).resolve().parent.parent
 

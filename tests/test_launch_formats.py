@@ -11,9 +11,10 @@ import pytest
 from helpers import fails, ok
 
 from launcher import LaunchError
+from launcher.declarations import When
 from launcher.plan import make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import Options, When, describe_args, resolve
+from launcher.resolve import Options, describe_args, resolve
 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
 TUTORIAL = TUTORIAL_PREFIX / "share" / "launch_tutorial" / "launch"

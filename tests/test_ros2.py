@@ -23,8 +23,9 @@ from helpers import run as tool
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
-from ros2cmd import cli, ros1
-from ros2cmd.ros1 import NO_ROS2_MEANING
+from ros2cmd import cli
+from ros2cmd.ros1 import rosnode, rosservice, rostopic
+from ros2cmd.ros1.tool import NO_ROS2_MEANING
 
 PROJECT_TYPES = {
     "msg": ["AandB", "MsgTutorial", "Num", "UserRecord"],
@@ -452,8 +453,8 @@ def test_bad_numbers_and_conflicting_options_are_usage_errors(capsys, args):
     # before anything of ROS starts (a process per case would cost a second of CPU each; the
     # scripts as processes are tested throughout this file). Anything but argparse's exit
     # (a traceback in a process) fails the test.
-    entry_point = {"ros2": cli.main, "rostopic": ros1.rostopic, "rosnode": ros1.rosnode}
-    entry_point["rosservice"] = ros1.rosservice
+    entry_point = {"ros2": cli.main, "rostopic": rostopic.rostopic, "rosnode": rosnode.rosnode}
+    entry_point["rosservice"] = rosservice.rosservice
     ctrl_c = signal.getsignal(signal.SIGINT)
     with pytest.raises(SystemExit) as exited:
         entry_point[args[0]](list(args[1:]))

@@ -344,7 +344,7 @@ def test_seed_004_steps_as_printed(ros_domain, tmp_path) -> None:
     def in_folder(*argv: str) -> NodeProcess:  # the command, run from tmp_path
         code = (
             f"import os, sys; os.chdir({str(tmp_path)!r}); sys.argv = {['rosbag', *argv]!r}; "
-            "from ros2cmd.bag.cli import rosbag; sys.exit(rosbag())"
+            "from ros2cmd.ros1.rosbag import rosbag; sys.exit(rosbag())"
         )
         return NodeProcess("-c", code)
 

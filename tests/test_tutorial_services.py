@@ -13,7 +13,7 @@ import yaml
 from helpers import BIN, at_once, fails, ok
 from helpers import run as tool
 
-from launcher import packages
+from ros_tutorials_common import packages
 
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
 WAITING = "waiting for service to become available..."

@@ -9,8 +9,9 @@ The Python code itself is installed by pip (editable), not copied to share/.
 
 The interface packages in interfaces/ are installed by tools/build_interfaces.py (colcon copies
 their files); their share/PKG/package.xml is replaced by a link to the source too, so
-`rospack find` leads to the folder where a learner adds a .msg (launcher/packages.py
-package_folder()). Entries this script made for packages that no longer exist are removed.
+`rospack find` leads to the folder where a learner adds a .msg
+(ros_tutorials_common/packages.py package_folder()). Entries this script made for packages
+that no longer exist are removed.
 
     .venv/bin/python tools/register_packages.py [--prefix DIR]
 """

@@ -14,6 +14,15 @@ import os
 import sys
 from typing import Any
 
+from ros2cmd.bag.options import (
+    add_reindex,
+    limit_arguments,
+    remap_argument,
+    remaps,
+    run_play,
+    timeout_option,
+    wait_argument,
+)
 from ros2cmd.errors import ToolError
 
 STORAGES = ["mcap", "sqlite3"]  # what a Jazzy install registers
@@ -143,8 +152,6 @@ def _info(_graph: Any, args: argparse.Namespace) -> None:
 
 
 def add_record(parser: argparse.ArgumentParser) -> None:
-    from ros2cmd.bag.cli import _limit_arguments
-
     a = parser.add_argument
     a(
         "-o",
@@ -353,7 +360,7 @@ def add_record(parser: argparse.ArgumentParser) -> None:
         choices=["zstd"],
         help="(compression: not supported here)",
     )
-    _limit_arguments(parser)
+    limit_arguments(parser)
     parser.set_defaults(run=_record)
 
 
@@ -475,8 +482,6 @@ def _record(graph: Any, args: argparse.Namespace) -> None:
 
 
 def add_play(parser: argparse.ArgumentParser) -> None:
-    from ros2cmd.bag.cli import _remap_argument, _wait_argument
-
     _reader_arguments(parser)
     a = parser.add_argument
     a(
@@ -545,7 +550,7 @@ def add_play(parser: argparse.ArgumentParser) -> None:
         help="enables loop playback when playing a bagfile: it starts back at the beginning "
         "on reaching the end and plays indefinitely.",
     )
-    _remap_argument(parser)
+    remap_argument(parser)
     a("--storage-config-file", metavar="PATH", help="(not supported here)")
     clock = parser.add_mutually_exclusive_group()
     clock.add_argument(
@@ -628,12 +633,11 @@ def add_play(parser: argparse.ArgumentParser) -> None:
         help="Determine the source of the service requests to be replayed.",
     )
     a("--log-level", type=str, default="info", choices=LOG_LEVELS, help="Logging level.")
-    _wait_argument(parser)
+    wait_argument(parser)
     parser.set_defaults(run=_play, offline=False)
 
 
 def _play(graph: Any, args: argparse.Namespace) -> None:
-    from ros2cmd.bag.cli import _remaps, _run_play
     from ros2cmd.bag.play import PlayOptions
 
     _storage(args.storage)
@@ -661,7 +665,7 @@ def _play(graph: Any, args: argparse.Namespace) -> None:
         exclude_topics=args.exclude_topics,
         exclude_services=service_event_topics(args.exclude_services),
         start_offset=args.start_offset,
-        remaps=_remaps(args.remap or []),
+        remaps=remaps(args.remap or []),
         wait_for_subscribers=args.wait_for_subscribers,
         delay=args.delay,
         start_paused=args.start_paused,
@@ -672,4 +676,16 @@ def _play(graph: Any, args: argparse.Namespace) -> None:
         publish_service_requests=args.publish_service_requests,
         client_introspection=args.service_requests_source == "client_introspection",
     )
-    _run_play(graph, args.bag_path, options)
+    run_play(graph, args.bag_path, options)
+
+
+def register(verbs: argparse._SubParsersAction, _common: argparse.ArgumentParser) -> None:
+    """`ros2 bag info|play|record|reindex`."""
+    parser = verbs.add_parser("bag", help="bags: record, info, play (rosbag2, MCAP storage)")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    add_info(sub.add_parser("info", help="Print information about a bag to the screen"))
+    add_play(
+        sub.add_parser("play", parents=[timeout_option()], help="Play back ROS data from a bag")
+    )
+    add_record(sub.add_parser("record", help="Record ROS data to a bag"))
+    add_reindex(sub)

@@ -19,7 +19,7 @@ import shlex
 import sys
 from collections.abc import Callable, Sequence
 
-from launcher import packages
+from ros_tutorials_common import packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 
 

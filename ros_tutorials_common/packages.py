@@ -1,6 +1,6 @@
-"""The tutorial packages as the launcher sees them: where they are, what they can run.
+"""The package index the launcher and the tools read: where packages are, what they can run.
 
-Packages are found the ament way (launcher/ament.py): a package is installed in a prefix of
+Packages are found the ament way (ament.py beside this): a package is installed in a prefix of
 AMENT_PREFIX_PATH when the ament index there lists it, and its files are in <prefix>/share/<pkg>/.
 `make setup` registers this project's packages (folders with a package.xml) in this
 environment's index, share/<pkg>/ linking to their package.xml, launch/ and config/
@@ -35,7 +35,7 @@ import sys
 from functools import cache
 from pathlib import Path
 
-from launcher import ament
+from ros_tutorials_common import ament
 
 PACKAGE_PREFIX = "ros_tutorials_"
 DISTRIBUTION = "ros-tutorials"

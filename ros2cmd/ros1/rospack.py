@@ -6,8 +6,8 @@
 The packages are those of the ament index (AMENT_PREFIX_PATH, this environment by default).
 As in ROS 1, a package of this workspace is found at its source folder, where a learner adds a
 node or a .msg (the lessons' folders, interfaces/PKG), an installed one at share/PKG
-(launcher/packages.py package_folder()). A seed's package name (`my_package`) is found when it
-stands for one package here.
+(ros_tutorials_common/packages.py package_folder()). A seed's package name (`my_package`) is
+found when it stands for one package here.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from launcher import ament, packages
+from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 
 

@@ -1,0 +1,115 @@
+"""What a launch file declares, as every front-end hands it on: the processes to run
+(``NodeDecl``), the steps that happen later (``Step``, at a ``When``), the arguments a file takes
+(``ArgInfo``), and a whole resolved file (``Launch``).
+
+The XML and YAML front-end (resolve.py) and the Python one (python_files.py, with the ``launch``
+and ``launch_ros`` packages) build these; plan.py turns them into process specs and
+supervise.py does the steps. Data only, importing nothing of the launcher, so every stage
+can take it from here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+# How many times in a row a respawning process may fail quickly before we give up.
+DEFAULT_RESPAWN_MAX_RETRIES = 10
+# The longest respawn_delay, sigterm_timeout or sigkill_timeout accepted: one day. Longer is
+# a typo (1e308) that would make the launcher wait forever.
+MAX_SECONDS = 86400.0
+
+
+@dataclass(frozen=True)
+class When:
+    """When a process starts or a step happens: at the launch's start, or on an event of a
+    process (its index in ``Launch.nodes``; None: of any process), then after ``delay`` s
+    (a timer). Events: "start", "exit" (also OnExecutionComplete), "stdout", "stderr",
+    "shutdown"."""
+
+    event: str | None = None
+    target: int | None = None
+    delay: float = 0.0
+
+    def later(self, seconds: float) -> When:
+        return replace(self, delay=self.delay + seconds)
+
+    def describe(self, labels: list[str]) -> str:
+        what = {"start": "started", "exit": "exited", "stdout": "printed to stdout",
+                "stderr": "printed to stderr"}  # fmt: skip
+        if self.event is None:
+            text = "at start"
+        elif self.event == "shutdown":
+            text = "when the launch shuts down"
+        else:
+            target = "any process" if self.target is None else labels[self.target]
+            text = f"when {target} {what.get(self.event, self.event)}"
+        return f"{text}, after {self.delay:g} s" if self.delay else text
+
+
+AT_START = When()
+
+
+@dataclass
+class Step:
+    """Something the launch does besides starting a process, at a time ``when`` says: print a
+    message ("log"), shut the launch down ("shutdown", with its reason), or call a function of
+    a Python launch file with the event ("call"; it returns more steps, done at once)."""
+
+    when: When
+    kind: str
+    text: str = ""
+    call: Callable[[dict[str, Any]], list[Step]] | None = None
+    where: str = ""
+
+
+@dataclass
+class NodeDecl:
+    """One process to run, as the launch file declares it (before packages are looked up)."""
+
+    where: str
+    package: str | None = None  # a ROS node: package and executable
+    executable: str | None = None
+    cmd: list[str] | None = None  # an <executable cmd="...">
+    name: str | None = None  # None: the node's own default name
+    namespace: str = "/"
+    args: list[str] = field(default_factory=list)
+    ros_args: list[str] = field(default_factory=list)
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    params: list[tuple[str, Any]] = field(default_factory=list)
+    params_files: list[str] = field(default_factory=list)
+    env: dict[str, str | None] = field(default_factory=dict)  # None: unset
+    output: str = "log"
+    respawn: bool = False
+    respawn_delay: float = 0.0
+    respawn_max_retries: int = DEFAULT_RESPAWN_MAX_RETRIES
+    required: bool = False
+    sigterm_timeout: float | None = None
+    sigkill_timeout: float | None = None
+    launch_prefix: list[str] = field(default_factory=list)
+    cwd: str | None = None
+    when: When = AT_START
+    label: str | None = None  # the output prefix, if not the node's name (ExecuteProcess name=)
+
+
+@dataclass
+class Launch:
+    """A resolved launch file: the processes to run, the <log> messages to print at the start,
+    and the steps that happen later (timers, event handlers)."""
+
+    nodes: list[NodeDecl]
+    messages: list[str]
+    warnings: list[str] = field(default_factory=list)  # file:line: what reaches no node
+    steps: list[Step] = field(default_factory=list)
+
+
+@dataclass
+class ArgInfo:
+    name: str
+    default: str | None
+    description: str
+    choices: list[str]
+    fixed: bool  # ROS 1 <arg value=...>: cannot be set from outside
+    where: str
+    fmt: str = "ros2"

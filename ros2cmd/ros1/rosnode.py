@@ -1,0 +1,26 @@
+"""`rosnode list|info`: ROS 1's rosnode on `ros2 node`'s code."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+
+from ros2cmd import node
+from ros2cmd.ros1 import tool
+
+
+def rosnode_parser() -> argparse.ArgumentParser:
+    parser, sub, common = tool.new_parser("rosnode", "ROS 1's rosnode, on ROS 2 (ros2 node)")
+
+    p = sub.add_parser("list", parents=[common], help="list nodes")
+    p.set_defaults(run=lambda graph, a: node.list_nodes(graph))
+
+    p = sub.add_parser("info", parents=[common], help="what a node offers")
+    p.add_argument("node")
+    p.set_defaults(run=lambda graph, a: node.info(graph, a.node))
+    tool.no_ros2_meaning("rosnode", sub)
+    return parser
+
+
+def rosnode(argv: Sequence[str] | None = None) -> int:
+    return tool.run(rosnode_parser(), argv)

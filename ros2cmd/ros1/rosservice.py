@@ -1,0 +1,76 @@
+"""`rosservice list|type|call|args|info|find`: ROS 1's rosservice on `ros2 service`'s code.
+
+    rosservice call /ros_tutorial_srv 10 5       the request's fields in order (seed 002)
+
+Each command runs ros2cmd/service.py's function; `args` and `info` read the request's fields.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+
+from ros2cmd import service
+from ros2cmd.graph import Graph, absolute_name
+from ros2cmd.ros1 import tool
+from ros2cmd.typenames import load_type
+
+
+def rosservice_parser() -> argparse.ArgumentParser:
+    parser, sub, common = tool.new_parser(
+        "rosservice", "ROS 1's rosservice, on ROS 2 (ros2 service)"
+    )
+
+    p = sub.add_parser("list", parents=[common], help="list services")
+    p.set_defaults(run=lambda graph, a: service.list_services(graph))
+
+    p = sub.add_parser("type", parents=[common], help="service type")
+    p.add_argument("service")
+    p.set_defaults(run=lambda graph, a: service.print_type(graph, a.service))
+
+    p = sub.add_parser("call", parents=[common], help="call a service")
+    p.add_argument("service")
+    p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
+    p.set_defaults(run=_call)
+
+    p = sub.add_parser("args", parents=[common], help="request fields")
+    p.add_argument("service")
+    p.set_defaults(run=lambda graph, a: _service_args(graph, a.service))
+
+    p = sub.add_parser("info", parents=[common], help="node, type, args")
+    p.add_argument("service")
+    p.set_defaults(run=lambda graph, a: _service_info(graph, a.service))
+
+    p = sub.add_parser("find", parents=[common], help="services of a type")
+    p.add_argument("type")
+    p.set_defaults(run=lambda graph, a: service.find(graph, a.type))
+    tool.no_ros2_meaning("rosservice", sub)
+    return parser
+
+
+def _call(graph: Graph, args: argparse.Namespace) -> None:
+    values = tool.values_from_args(args.values)
+    if values is None:  # ROS 1 refused a call without its values: no silent default request
+        values = []
+    service.call(graph, args.service, None, values, ros1_output=True)
+
+
+def _request_fields(graph: Graph, name: str) -> tuple[str, list[str]]:
+    type_name = graph.wait_for_service_type(absolute_name(name))
+    fields = load_type(type_name, ("srv",)).Request.get_fields_and_field_types()
+    return type_name, list(fields)
+
+
+def _service_args(graph: Graph, name: str) -> None:
+    print(" ".join(_request_fields(graph, name)[1]))
+
+
+def _service_info(graph: Graph, name: str) -> None:
+    type_name, fields = _request_fields(graph, name)
+    print(f"Node: {', '.join(service.servers(graph, absolute_name(name)))}")
+    print(f"Type: {type_name}")
+    print(f"Args: {' '.join(fields)}")
+
+
+def rosservice(argv: Sequence[str] | None = None) -> int:
+    return tool.run(rosservice_parser(), argv)

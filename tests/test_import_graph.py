@@ -1,0 +1,231 @@
+"""No import cycles among this project's modules: the import graph, read from the source.
+
+Every module of the project's packages (each top-level folder with an ``__init__.py``) is a
+node; every import statement that names another of them is an edge, wherever it is written: at
+the top of a module or inside a function (a function's import runs too, only later, and a
+cycle through it is a cycle of the design). Two kinds of import are not edges:
+- one under ``if TYPE_CHECKING:``, which never runs: it names a type for the reader and the
+  type checker, as ros2/launch writes its own;
+- the implicit import of a module's parent packages (``import launch.actions`` runs
+  launch/__init__.py first): a package's ``__init__`` that gathers its modules (launch/, as
+  ros2/launch's does) would otherwise make a cycle with each of them. ``from launch import
+  LaunchDescription`` names the package itself and is an edge to it.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+NOT_PACKAGES = {"build", "tests", "benchmarks", "tools", "interfaces", "docs"}
+
+
+@dataclass(frozen=True)
+class Edge:
+    target: str
+    where: str  # path:line of the import statement
+
+
+def project_modules(root: Path) -> dict[str, Path]:
+    """Module name -> source file, for every module of root's top-level packages."""
+    modules = {}
+    for init in sorted(root.glob("*/__init__.py")):
+        package = init.parent
+        if package.name.startswith(".") or package.name in NOT_PACKAGES:
+            continue
+        for source in sorted(package.rglob("*.py")):
+            parts = list(source.relative_to(root).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts.pop()
+            modules[".".join(parts)] = source
+    return modules
+
+
+def _type_checking_only(node: ast.If) -> bool:
+    test = node.test
+    return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
+        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING"
+    )
+
+
+def _imports(tree: ast.AST) -> Iterator[ast.Import | ast.ImportFrom]:
+    """Every import statement that can run: module level, in functions and classes, in
+    branches and try blocks; not under ``if TYPE_CHECKING:`` (its else branch does run)."""
+    for child in ast.iter_child_nodes(tree):
+        if isinstance(child, (ast.Import, ast.ImportFrom)):
+            yield child
+        elif isinstance(child, ast.If) and _type_checking_only(child):
+            for branch in child.orelse:
+                yield from _imports(ast.Module(body=[branch], type_ignores=[]))
+        else:
+            yield from _imports(child)
+
+
+def edges_of(name: str, source: Path, modules: dict[str, Path], root: Path) -> list[Edge]:
+    """The modules of the project that the module ``name`` imports, with file:line."""
+    tree = ast.parse(source.read_text(encoding="utf-8"), filename=str(source))
+    package = name.split(".") if source.name == "__init__.py" else name.split(".")[:-1]
+    shown = source.relative_to(root)
+    found = []
+    for statement in _imports(tree):
+        where = f"{shown}:{statement.lineno}"
+        if isinstance(statement, ast.Import):
+            for alias in statement.names:
+                parts = alias.name.split(".")
+                # `import a.b.c` is an edge to the deepest of a.b.c, a.b, a that is ours.
+                for end in range(len(parts), 0, -1):
+                    if ".".join(parts[:end]) in modules:
+                        found.append(Edge(".".join(parts[:end]), where))
+                        break
+            continue
+        if statement.level:  # from . import x, from ..a import b
+            base = package[: len(package) - statement.level + 1]
+            origin = ".".join([*base, *([statement.module] if statement.module else [])])
+        else:
+            origin = statement.module or ""
+        for alias in statement.names:
+            submodule = f"{origin}.{alias.name}"
+            if submodule in modules:  # `from launcher import guardian`: the module
+                found.append(Edge(submodule, where))
+            elif origin in modules:  # `from launcher import LaunchError`: the package
+                found.append(Edge(origin, where))
+    return [edge for edge in found if edge.target != name]
+
+
+def import_graph(root: Path) -> dict[str, list[Edge]]:
+    modules = project_modules(root)
+    return {name: edges_of(name, source, modules, root) for name, source in modules.items()}
+
+
+def strongly_connected(graph: dict[str, list[Edge]]) -> list[list[str]]:
+    """The groups of modules that reach each other (Tarjan's algorithm, without recursion)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    groups = []
+    for start in sorted(graph):
+        if start in index:
+            continue
+        work = [(start, iter(graph[start]))]
+        index[start] = low[start] = len(index)
+        stack.append(start)
+        on_stack.add(start)
+        while work:
+            node, targets = work[-1]
+            for edge in targets:
+                if edge.target not in index:
+                    index[edge.target] = low[edge.target] = len(index)
+                    stack.append(edge.target)
+                    on_stack.add(edge.target)
+                    work.append((edge.target, iter(graph[edge.target])))
+                    break
+                if edge.target in on_stack:
+                    low[node] = min(low[node], index[edge.target])
+            else:
+                work.pop()
+                if work:
+                    parent = work[-1][0]
+                    low[parent] = min(low[parent], low[node])
+                if low[node] == index[node]:
+                    group = []
+                    while True:
+                        member = stack.pop()
+                        on_stack.discard(member)
+                        group.append(member)
+                        if member == node:
+                            break
+                    if len(group) > 1:
+                        groups.append(sorted(group))
+    return groups
+
+
+def one_cycle(graph: dict[str, list[Edge]], group: list[str]) -> str:
+    """A shortest cycle through the group's first module, as 'a (a.py:3) -> b (b.py:9) -> a'."""
+    start = group[0]
+    members = set(group)
+    came_from: dict[str, tuple[str, Edge]] = {}
+    frontier = [start]
+    while frontier:
+        following = []
+        for node in frontier:
+            for edge in graph[node]:
+                if edge.target not in members or edge.target in came_from:
+                    continue
+                came_from[edge.target] = (node, edge)
+                following.append(edge.target)
+        if start in came_from:
+            break
+        frontier = following
+    steps = []
+    node = start
+    while True:
+        node, edge = came_from[node]
+        steps.append(f"{node} ({edge.where}) -> ")
+        if node == start:
+            break
+    return "".join(reversed(steps)) + start
+
+
+def cycles(root: Path) -> list[str]:
+    graph = import_graph(root)
+    return [one_cycle(graph, group) for group in strongly_connected(graph)]
+
+
+def test_the_project_has_no_import_cycle():
+    graph = import_graph(ROOT)
+    found = [
+        f"{', '.join(group)} import each other, e.g.\n  {one_cycle(graph, group)}"
+        for group in strongly_connected(graph)
+    ]
+    assert not found, "import cycles (move the shared piece down):\n" + "\n".join(found)
+
+
+def test_the_graph_is_the_projects():
+    graph = import_graph(ROOT)
+    assert {"ros2cmd.cli", "launcher.resolve", "ros_tutorials_common.packages"} <= graph.keys()
+    targets = {edge.target for edge in graph["ros2cmd.run"]}
+    assert "ros_tutorials_common.packages" in targets  # from ros_tutorials_common import ...
+    assert "ros2cmd.errors" in targets
+
+
+def _write(root: Path, files: dict[str, str]) -> None:
+    for name, text in files.items():
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text)
+
+
+def test_a_cycle_through_a_function_level_import_is_found_and_named(tmp_path):
+    _write(
+        tmp_path,
+        {
+            "pkg/__init__.py": "",
+            "pkg/a.py": "from pkg.b import run\n",
+            "pkg/b.py": "def run():\n    from . import a\n",
+            "pkg/c.py": "import pkg.a\n",  # reaches the cycle, is not in it
+        },
+    )
+    assert cycles(tmp_path) == ["pkg.a (pkg/a.py:1) -> pkg.b (pkg/b.py:2) -> pkg.a"]
+
+
+def test_type_checking_imports_and_parent_packages_are_not_edges(tmp_path):
+    _write(
+        tmp_path,
+        {
+            "pkg/__init__.py": "from pkg.a import A\n",
+            "pkg/a.py": "from typing import TYPE_CHECKING\n"
+            "if TYPE_CHECKING:\n    from pkg.b import B\nelse:\n    import pkg.c\nA = 1\n",
+            "pkg/b.py": "from pkg.a import A\nB = A\n",
+            "pkg/c.py": "",
+        },
+    )
+    graph = import_graph(tmp_path)
+    assert [edge.target for edge in graph["pkg.a"]] == ["pkg.c"]  # the else branch runs
+    assert [edge.target for edge in graph["pkg.b"]] == ["pkg.a"]
+    assert cycles(tmp_path) == []
+    # A name of the package itself (not one of its modules) is an edge to its __init__.
+    _write(tmp_path, {"pkg/a.py": "from pkg import B\n"})
+    assert cycles(tmp_path) == ["pkg (pkg/__init__.py:1) -> pkg.a (pkg/a.py:1) -> pkg"]
