@@ -18,11 +18,7 @@ from rclpy.utilities import remove_ros_args
 from ros_tutorials_interfaces.action import Fibonacci
 
 ACTION_NAME = "ros_tutorial_action"
-STATES = {
-    GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
-    GoalStatus.STATUS_CANCELED: "CANCELED",
-    GoalStatus.STATUS_ABORTED: "ABORTED",
-}
+STATES = {4: "SUCCEEDED", 5: "CANCELED", 6: "ABORTED"}  # a goal's final GoalStatus, by name
 
 
 def wait(node: Node, client: ActionClient, future: Future, timeout: float) -> bool:

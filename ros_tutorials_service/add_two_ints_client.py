@@ -16,8 +16,10 @@ from ros_tutorials_interfaces.srv import AddTwoInts
 
 def int64(text: str) -> int:
     """An argparse type: a whole number as the seed's atoll reads it (digits, a sign), in int64."""
-    if not re.fullmatch(r"[+-]?[0-9]+", text) or not -(2**63) <= int(text) < 2**63:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a 64-bit integer")
+    if not re.fullmatch(r"[+-]?[0-9]+", text):
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer")
+    if not -(2**63) <= int(text) < 2**63:
+        raise argparse.ArgumentTypeError(f"{text} does not fit in a 64-bit integer")
     return int(text)
 
 
