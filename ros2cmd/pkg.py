@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import argparse
 import getpass
-import importlib.metadata
 import os
 import re
 import shutil
@@ -82,9 +81,9 @@ def _project_executables(package: str) -> dict[str, Path]:
     script's where it has one (`turtle_teleop_key`, not the module `teleop_key`)."""
     directory = packages.package_dirs()[package]
     scripts = {
-        script.name
-        for script in importlib.metadata.entry_points(group="console_scripts")
-        if script.value.startswith(f"{package}.")
+        name
+        for name, target in packages.console_scripts().items()
+        if target.startswith(f"{package}.")
     }
     by_module: dict[str, tuple[str, Path]] = {}
     for name, command in packages.executables(package).items():

@@ -106,13 +106,32 @@ def translate_arguments(args: Sequence[str]) -> list[str]:
     return out
 
 
+def check_ros_arguments(args: Sequence[str]) -> None:
+    """ToolError (one line) if rcl cannot parse the ROS arguments: a node, plain rclpy, would
+    end in rclpy.init's traceback."""
+    if "--ros-args" not in args:
+        return
+    from rclpy.utilities import remove_ros_args  # only here: rclpy takes a moment to load
+
+    from ros_tutorials_common.ros import RCLError
+
+    try:
+        remove_ros_args(["node", *args])
+    except RCLError as error:
+        reason = str(error).split(", at ")[0]  # rcl appends its source file and line
+        reason = reason.removeprefix("Failed to parse ROS arguments: ")
+        raise ToolError(f"invalid ROS arguments: {reason}") from None
+
+
 def command_line(package: str, executable: str, args: Sequence[str]) -> list[str]:
     """The full command line rosrun runs; ToolError if the names or arguments are wrong."""
     try:
         command = packages.command(package, executable)
     except packages.UnknownExecutable as error:
         raise ToolError(str(error)) from None
-    return [*command, *translate_arguments(args)]
+    arguments = translate_arguments(args)
+    check_ros_arguments(arguments)
+    return [*command, *arguments]
 
 
 def ros2_command_line(package: str, executable: str, args: Sequence[str]) -> list[str]:

@@ -11,31 +11,51 @@ Ctrl-C ends it and the server. Orders whose result does not fit in int32 are rej
     action_server --ros-args -p step_period:=0.2
 """
 
+import time
+
 import rclpy
+from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.qos import QoSProfile
 from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.action import Fibonacci
-
-from ros_tutorials_common.ros import action_server_steps as steps
-from ros_tutorials_common.ros.action_server_steps import REQUESTS
 
 ACTION_NAME = "ros_tutorial_action"
 INT32_MAX = 2**31 - 1
 MAX_ORDER = 45  # the sequence of order 45 ends at F(46) = 1836311903; F(47) > INT32_MAX
+MAX_STEP_PERIOD = 86400.0  # one day: far below what a thread can wait for
+# The goal, cancel and result services queue this many requests (rclpy's default, 10, lost some).
+REQUESTS = QoSProfile(depth=1000)
+
+
+def step_period_error(value: object) -> str | None:
+    """Why value is not a usable step_period, or None if it is."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return f"step_period must be a number of seconds, not {value!r}"
+    if not 0 < value <= MAX_STEP_PERIOD:  # nan too
+        return f"step_period must be greater than 0 seconds and at most 86400, not {value}"
+    return None
 
 
 class FibonacciActionServer(Node):
     def __init__(self, **node_kwargs) -> None:
         super().__init__("action_server", enable_logger_service=True, **node_kwargs)
-        steps.declare_step_period(self)  # seconds per step (default 1.0), checked
+        # Seconds per step (an integer will do), checked at start and at every change.
+        descriptor = ParameterDescriptor(description="seconds per term", dynamic_typing=True)
+        self.declare_parameter("step_period", 1.0, descriptor)
+        if error := step_period_error(self.step_period):
+            raise SystemExit(f"error: {error}")
+        self.add_on_set_parameters_callback(self.check_step_period)
         self.current_goal = None  # the goal accepted last: any other running goal is preempted
-        self.goals = steps.RunningGoals()  # so that Ctrl-C can stop the running goal first
+        self.running = []  # the goals whose execute callback runs
+        self.stopping = False  # set on Ctrl-C: every running goal stops
         # The action server. Reentrant: goal and cancel requests are answered while a goal runs.
         self.action_server = ActionServer(
-            self, Fibonacci, ACTION_NAME, self.goals.track(self.execute),
+            self, Fibonacci, ACTION_NAME, self.execute,
             goal_callback=self.on_goal, handle_accepted_callback=self.on_accepted,
             cancel_callback=lambda goal_handle: CancelResponse.ACCEPT,  # rclpy's default: REJECT
             callback_group=ReentrantCallbackGroup(), goal_service_qos_profile=REQUESTS,
@@ -44,7 +64,13 @@ class FibonacciActionServer(Node):
 
     @property
     def step_period(self) -> float:
-        return float(self.get_parameter("step_period").value)
+        return self.get_parameter("step_period").value
+
+    def check_step_period(self, parameters: list[Parameter]) -> SetParametersResult:
+        for parameter in parameters:
+            if parameter.name == "step_period" and (error := step_period_error(parameter.value)):
+                return SetParametersResult(successful=False, reason=error)
+        return SetParametersResult(successful=True)
 
     def on_goal(self, goal: Fibonacci.Goal) -> GoalResponse:
         if 0 <= goal.order <= MAX_ORDER:
@@ -62,10 +88,11 @@ class FibonacciActionServer(Node):
     def should_stop(self, goal_handle) -> bool:
         # The book: as_.isPreemptRequested() || !ros::ok()
         preempted = goal_handle is not self.current_goal
-        return goal_handle.is_cancel_requested or preempted or self.goals.stopping
+        return goal_handle.is_cancel_requested or preempted or self.stopping
 
     def execute(self, goal_handle) -> Fibonacci.Result:
         """The execute callback: compute the sequence, one term and one feedback per step."""
+        self.running.append(goal_handle)
         order = goal_handle.request.order
         sequence = [0, 1]  # the seeds
         self.get_logger().info(
@@ -78,7 +105,9 @@ class FibonacciActionServer(Node):
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
             # Sleep one step (the book: r.sleep()), but stop at once if the goal should stop.
-            steps.sleep_unless(lambda: self.should_stop(goal_handle), self.step_period)
+            end = time.monotonic() + self.step_period
+            while time.monotonic() < end and not self.should_stop(goal_handle):
+                time.sleep(0.05)
         # The goal's final state; the partial sequence is the result of a stopped goal.
         if goal_handle.is_cancel_requested:
             goal_handle.canceled()
@@ -89,31 +118,33 @@ class FibonacciActionServer(Node):
         else:
             goal_handle.succeed()
             self.get_logger().info(f"{ACTION_NAME}: Succeeded")
+        self.running.remove(goal_handle)
         return Fibonacci.Result(sequence=sequence)
 
     def destroy_node(self) -> None:
-        self.goals.stop()  # a running goal uses this node: stop it first (waits at most 5 s)
+        # A running goal uses this node: stop it first (waiting 5 s at most).
+        self.stopping = True
+        end = time.monotonic() + 5.0
+        while self.running and time.monotonic() < end:
+            time.sleep(0.05)
         self.action_server.destroy()
         super().destroy_node()
 
 
-def main(args=None) -> None:
-    # Ctrl-C and SIGTERM raise KeyboardInterrupt, and ROS stays up until the running goal has
-    # stopped: with rclpy's own handler, ROS would shut down under the goal's feet.
-    rclpy.init(args=steps.ros_args(args), signal_handler_options=SignalHandlerOptions.NO)
-    steps.ctrl_c_raises()
+def main(args: list[str] | None = None) -> None:
+    # Without rclpy's signal handler, Ctrl-C raises KeyboardInterrupt and ROS stays up until
+    # the running goal has stopped: with it, ROS would shut down under the goal's feet.
+    rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
+    node = FibonacciActionServer()  # create the node and its action server
     executor = MultiThreadedExecutor(num_threads=4)  # a goal runs in one thread, requests in others
-    node = None
+    executor.add_node(node)
     try:
-        node = FibonacciActionServer()  # create the node and its action server
-        executor.add_node(node)
-        while True:  # spin: wait for goals and execute them, until Ctrl-C ...
-            executor.spin_once(timeout_sec=0.1)  # ... which Python sees between two waits
-    except KeyboardInterrupt:  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-        steps.ignore_ctrl_c()  # a second one must not cut the stop short
+        while True:  # spin: wait for goals and execute them, in short spins ...
+            executor.spin_once(timeout_sec=0.1)  # ... so that Python sees Ctrl-C between two
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl-C: the normal way to stop (exit status 0)
     finally:
-        if node is not None:
-            node.destroy_node()  # stops the running goal first
+        node.destroy_node()  # stops the running goal first
         executor.shutdown()
         rclpy.try_shutdown()  # shut ROS 2 down
 

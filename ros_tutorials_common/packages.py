@@ -35,7 +35,7 @@ import sys
 from functools import cache
 from pathlib import Path
 
-from ros_tutorials_common import ament
+from ros_tutorials_common import ament, lesson_scripts
 
 PACKAGE_PREFIX = "ros_tutorials_"
 DISTRIBUTION = "ros-tutorials"
@@ -167,14 +167,28 @@ def executables(package: str) -> dict[str, list[str]]:
     for module in pkgutil.iter_modules([str(directory)]):
         if not module.ispkg and _has_main(directory / f"{module.name}.py"):
             found[module.name] = [sys.executable, "-m", f"{package}.{module.name}"]
-    for script in importlib.metadata.entry_points(group="console_scripts"):
-        if script.value.startswith(f"{package}."):
-            found[script.name] = _script_command(script)
+    for name, target in console_scripts().items():
+        if target.startswith(f"{package}."):
+            found[name] = _script_command(target)
     return dict(sorted(found.items()))
 
 
-def _script_command(script: importlib.metadata.EntryPoint) -> list[str]:
-    module, _, function = script.value.partition(":")
+@cache
+def console_scripts() -> dict[str, str]:
+    """Console script name -> the ``module:function`` it runs; for a lesson's script, the
+    lesson's own main (the script applies the DDS defaults first, ros_tutorials_common/
+    lesson_scripts.py; `ros2 run` and the launcher apply them themselves)."""
+    found = {}
+    for script in importlib.metadata.entry_points(group="console_scripts"):
+        module, _, function = script.value.partition(":")
+        if module == lesson_scripts.__name__:
+            module, function = lesson_scripts.LESSONS[function.strip()], "main"
+        found[script.name] = f"{module}:{function.strip()}"
+    return found
+
+
+def _script_command(target: str) -> list[str]:
+    module, _, function = target.partition(":")
     function = function.strip()
     if function == "main":
         return [sys.executable, "-m", module]
@@ -264,7 +278,7 @@ def _tools() -> dict[str, list[str]]:
         scripts = importlib.metadata.distribution(DISTRIBUTION).entry_points
     except importlib.metadata.PackageNotFoundError:
         return {}
-    return {s.name: _script_command(s) for s in scripts if s.group == "console_scripts"}
+    return {s.name: _script_command(s.value) for s in scripts if s.group == "console_scripts"}
 
 
 def executable_commands(package: str) -> dict[str, list[str]]:

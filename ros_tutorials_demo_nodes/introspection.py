@@ -1,5 +1,6 @@
 """demo_nodes_py's introspection (ros2/demos, Jazzy): the introspection demo's server and
-client (introspection_service.py, introspection_client.py) as two nodes in one process.
+client (introspection_service.py, introspection_client.py, beside this file) as two nodes in
+one process.
 
     ros2 run demo_nodes_py introspection --ros-args -p client_configure_introspection:=metadata \
         -p service_configure_introspection:=metadata
@@ -9,23 +10,26 @@ client (introspection_service.py, introspection_client.py) as two nodes in one p
 import rclpy
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 
-from ros_tutorials_common.ros import ros_args
-from ros_tutorials_demo_nodes.introspection_client import IntrospectionClientNode
-from ros_tutorials_demo_nodes.introspection_service import IntrospectionServiceNode
+# The two nodes, from the files beside this one (copy all three into a package of your own).
+from .introspection_client import IntrospectionClientNode
+from .introspection_service import IntrospectionServiceNode
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    service, client = IntrospectionServiceNode(), IntrospectionClientNode()
     # Both nodes in one executor: the server answers the client's requests between its timers.
     executor = SingleThreadedExecutor()
-    executor.add_node(IntrospectionServiceNode())
-    executor.add_node(IntrospectionClientNode())
+    executor.add_node(service)
+    executor.add_node(client)
     try:
-        executor.spin()
+        executor.spin()  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
-        rclpy.try_shutdown()
+        client.destroy_node()
+        service.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

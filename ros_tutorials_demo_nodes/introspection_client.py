@@ -21,8 +21,6 @@ from rclpy.qos import qos_profile_system_default
 from rclpy.service_introspection import ServiceIntrospectionState
 from rclpy.task import Future
 
-from ros_tutorials_common.ros import ros_args
-
 PARAMETER = "client_configure_introspection"
 STATES = {
     "disabled": ServiceIntrospectionState.OFF,
@@ -76,14 +74,16 @@ class IntrospectionClientNode(Node):
                 break
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = IntrospectionClientNode()  # create the node
     try:
-        rclpy.spin(IntrospectionClientNode())  # ask every half second until Ctrl-C
+        rclpy.spin(node)  # ask every half second until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
-        rclpy.try_shutdown()
+        node.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

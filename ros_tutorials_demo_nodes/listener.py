@@ -10,8 +10,6 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from ros_tutorials_common.ros import ros_args
-
 
 class Listener(Node):
     def __init__(self) -> None:
@@ -22,14 +20,16 @@ class Listener(Node):
         self.get_logger().info(f"I heard: [{msg.data}]")
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = Listener()  # create the node
     try:
-        rclpy.spin(Listener())  # until Ctrl-C
+        rclpy.spin(node)  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
-        rclpy.try_shutdown()
+        node.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

@@ -16,8 +16,6 @@ from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from std_msgs.msg import String
 
-from ros_tutorials_common.ros import ros_args
-
 
 class Talker(Node):
     def __init__(self) -> None:
@@ -33,14 +31,16 @@ class Talker(Node):
         self.publisher.publish(msg)
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = Talker()  # create the node
     try:
-        rclpy.spin(Talker())  # publish once a second until Ctrl-C
+        rclpy.spin(node)  # publish once a second until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
-        rclpy.try_shutdown()
+        node.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

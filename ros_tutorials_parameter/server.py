@@ -10,6 +10,7 @@ is the parameter ``calculation_method``: 1 plus (default), 2 minus, 3 multiplica
 """
 
 import operator
+import sys
 from collections.abc import Callable
 
 import rclpy
@@ -20,10 +21,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.ros import ros_args
-
 PLUS, MINUS, MULTIPLICATION, DIVISION = 1, 2, 3, 4
+INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1  # what the response's int64 field can hold
 
 
 def divide(a: int, b: int) -> int:
@@ -89,21 +88,27 @@ class ServiceServerWithParameter(Node):
             response.result = 0
         else:
             # a + b, a - b and a * b can leave the int64 range, and so can INT64_MIN / -1.
-            response.result = int64_or_zero(function(a, b), f"{a} {symbol} {b}", log)
+            result = function(a, b)
+            response.result = result if INT64_MIN <= result <= INT64_MAX else 0
+            if response.result != result:
+                log.warning(f"{a} {symbol} {b} = {result} does not fit in int64; sending back 0")
         log.info(f"sending back response: [{response.result}]")
         return response
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args -p ...; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args -p ...)
     try:
-        node = ServiceServerWithParameter()  # create the node: declares the parameter
+        node = ServiceServerWithParameter()  # create the node: it declares the parameter
+    except ParameterException as error:  # e.g. -p calculation_method:=7
+        rclpy.try_shutdown()
+        sys.exit(f"error: {error}")
+    try:
         rclpy.spin(node)  # answer requests until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except ParameterException as error:  # e.g. -p calculation_method:=7 at start
-        raise SystemExit(f"error: {error}") from None
     finally:
+        node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down
 
 

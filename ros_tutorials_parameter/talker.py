@@ -7,14 +7,14 @@ Publishes std_msgs/String on ``chatter`` ten times a second; the text is the par
     dynamics_talker --ros-args -p talker_str:=Goodbye
 """
 
+import sys
+
 import rclpy
 from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.exceptions import ParameterException
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
-
-from ros_tutorials_common.ros import ros_args
 
 
 class DynamicsTalker(Node):
@@ -32,16 +32,20 @@ class DynamicsTalker(Node):
         self.publisher.publish(msg)
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args -p ...; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args -p ...)
     try:
-        rclpy.spin(DynamicsTalker())  # create the node and run its timer until Ctrl-C
+        node = DynamicsTalker()  # create the node: it declares talker_str
+    except ParameterException as error:  # e.g. -p talker_str:=42 (not a string)
+        rclpy.try_shutdown()
+        sys.exit(f"error: {error}")
+    try:
+        rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except ParameterException as error:  # e.g. -p talker_str:=42 (not a string) at start
-        raise SystemExit(f"error: {error}") from None
     finally:
-        rclpy.try_shutdown()
+        node.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

@@ -4,31 +4,52 @@
     add_two_ints_client 1 2   (or: python -m ros_tutorials_service.add_two_ints_client 1 2)
 """
 
+import argparse
+import re
 import sys
 
 import rclpy
 from rclpy.node import Node
-from rclpy.signals import SignalHandlerOptions
+from rclpy.utilities import remove_ros_args
 from ros_tutorials_interfaces.srv import AddTwoInts
 
-from ros_tutorials_common.ros import service_client_steps as steps
+
+def int64(text: str) -> int:
+    """An argparse type: a whole number as the seed's atoll reads it (digits, a sign), in int64."""
+    if not re.fullmatch(r"[+-]?[0-9]+", text):
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer")
+    if not -(2**63) <= int(text) < 2**63:
+        raise argparse.ArgumentTypeError(f"{text} does not fit in a 64-bit integer")
+    return int(text)
 
 
-def main(args=None) -> int:
-    options = steps.parse_args(args, "add_two_ints_client", "X", "Y")  # else usage, exit status 2
-    rclpy.init(args=steps.ros_args(args), signal_handler_options=SignalHandlerOptions.NO)
+def main(args: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="add_two_ints_client")  # else usage, exit status 2
+    parser.add_argument("x", metavar="X", type=int64)
+    parser.add_argument("y", metavar="Y", type=int64)
+    parser.add_argument("--timeout", metavar="SECONDS", type=float, default=5.0)
+    options = parser.parse_args(remove_ros_args(args or sys.argv)[1:])
+    timeout = options.timeout
+    if not 0 < timeout <= 1e6:  # nan and inf too: rcl counts a wait in int64 nanoseconds
+        parser.error(f"--timeout: {timeout:g} is not a positive number of seconds up to 1e6")
+
+    rclpy.init(args=args)
     node = Node("add_two_ints_client", enable_logger_service=True)
     client = node.create_client(AddTwoInts, "add_two_ints")
+    log = node.get_logger()
     try:
-        if not steps.wait_for_service(node, client, options.timeout):
+        if not client.wait_for_service(timeout_sec=timeout):
+            log.error(f"Failed to call service {client.srv_name}: no server within {timeout:g} s")
             return 1
         future = client.call_async(AddTwoInts.Request(a=options.x, b=options.y))
-        if not steps.wait_for_answer(node, client, future, options.timeout):
+        rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
+        if not future.done():
+            log.error(f"Failed to call service {client.srv_name}: no answer within {timeout:g} s")
             return 1
-        node.get_logger().info(f"Sum: {future.result().sum}")
+        log.info(f"Sum: {future.result().sum}")
         return 0
     except KeyboardInterrupt:
-        return steps.interrupted("add_two_ints_client")  # Ctrl-C: exit status 130
+        return 130  # Ctrl-C: the exit status a shell gives a command it interrupted
     finally:
         node.destroy_node()
         rclpy.try_shutdown()

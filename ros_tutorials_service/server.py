@@ -11,8 +11,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-from ros_tutorials_common.int64 import int64_or_zero
-from ros_tutorials_common.ros import ros_args
+INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1  # what the response's int64 field can hold
 
 
 class ServiceServer(Node):
@@ -25,22 +24,25 @@ class ServiceServer(Node):
     def calculation(
         self, request: SrvTutorial.Request, response: SrvTutorial.Response
     ) -> SrvTutorial.Response:
-        # a + b into the response (two large int64 operands may add up to more than int64 holds)
         a, b = request.a, request.b
-        response.result = int64_or_zero(a + b, f"{a} + {b}", self.get_logger())
-        self.get_logger().info(f"request: x={request.a}, y={request.b}")
+        # a + b; two large int64 operands can add up to more than int64 holds: then 0, and why.
+        response.result = a + b if INT64_MIN <= a + b <= INT64_MAX else 0
+        if response.result != a + b:
+            self.get_logger().warning(f"{a} + {b} = {a + b} does not fit in int64; sending back 0")
+        self.get_logger().info(f"request: x={a}, y={b}")
         self.get_logger().info(f"sending back response: {response.result}")
         return response
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = ServiceServer()  # create the node
     try:
-        node = ServiceServer()  # create the node and its service
         rclpy.spin(node)  # wait for requests and answer each, until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
+        node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down
 
 

@@ -11,8 +11,6 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common.ros import ros_args
-
 QUEUE_SIZE = 100
 
 
@@ -37,14 +35,15 @@ class TopicPublisher(Node):
         self.count += 1
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = TopicPublisher()  # create the node
     try:
-        node = TopicPublisher()  # create the node
         rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
+        node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down
 
 

@@ -11,8 +11,6 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from ros_tutorials_common.ros import ros_args
-
 QUEUE_SIZE = 100
 
 
@@ -30,14 +28,15 @@ class TopicSubscriber(Node):
         self.get_logger().info(f"recieve msg = {msg.data}")
 
 
-def main(args=None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
+def main(args: list[str] | None = None) -> None:
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = TopicSubscriber()  # create the node
     try:
-        node = TopicSubscriber()  # create the node
         rclpy.spin(node)  # wait for messages and call on_message for each, until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
+        node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down
 
 

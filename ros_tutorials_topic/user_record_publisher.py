@@ -13,8 +13,6 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import UserRecord
 
-from ros_tutorials_common.ros import ros_args
-
 
 class UserRecordPublisher(Node):
     def __init__(self) -> None:
@@ -36,14 +34,15 @@ class UserRecordPublisher(Node):
 
 
 def main(args: list[str] | None = None) -> None:
-    rclpy.init(args=ros_args(args))  # initialise ROS 2 (reads --ros-args; DDS defaults)
-    node = UserRecordPublisher()
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
+    node = UserRecordPublisher()  # create the node
     try:
-        rclpy.spin(node)
+        rclpy.spin(node)  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
-        pass  # Ctrl-C or shutdown: a normal end
-    node.destroy_node()
-    rclpy.try_shutdown()
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()  # shut ROS 2 down
 
 
 if __name__ == "__main__":

@@ -283,9 +283,10 @@ def test_an_unknown_type_name_points_to_the_list_or_the_right_package(args, mess
     assert message in result.stderr
 
 
-def test_a_seed_node_refuses_malformed_ros_arguments_in_one_line():
-    result = finished("aandb_talker", "--ros-args", "-r", "bad")
-    assert result.returncode == 1 and "Traceback" not in result.stderr
+def test_rosrun_refuses_malformed_ros_arguments_in_one_line_before_the_node_starts():
+    # The node is plain rclpy (rclpy.init's traceback, as any ROS 2 node): rosrun checks first.
+    result = finished("rosrun", "beginner_tutorials", "aandb_talker", "--ros-args", "-r", "bad")
+    assert result.returncode == 1 and result.stderr.count("\n") == 1, result.stderr
     assert "error: invalid ROS arguments:" in result.stderr
     assert "Couldn't parse remap rule" in result.stderr
 

@@ -1,10 +1,13 @@
-"""The lesson files as a course: each stands alone, every node serves the logger-level
-services, and the docs' table of lengths (docs/lesson-files.md) is the files' own."""
+"""The lesson files as a course: each is plain rclpy (the standard library, rclpy and interface
+packages; no code of this project), every node serves the logger-level services, and the docs'
+table of lengths (docs/lesson-files.md) is the files' own. tests/test_take_home.py runs them in a
+package of one's own."""
 
 from __future__ import annotations
 
 import ast
 import re
+import sys
 from pathlib import Path
 
 import pytest
@@ -17,58 +20,64 @@ from ros_tutorials_topic.publisher import TopicPublisher
 ROOT = Path(__file__).resolve().parent.parent
 LESSONS = ("ros_tutorials_topic", "ros_tutorials_service", "ros_tutorials_parameter",
            "ros_tutorials_action")  # fmt: skip
-LESSON_FILES = sorted(
-    path for package in LESSONS for path in (ROOT / package).glob("*.py")
-    if path.name != "__init__.py"
-)  # fmt: skip
+DEMOS = ("ros_tutorials_demo_nodes",)  # ros2/demos' nodes: plain rclpy too
 
-# Lesson files that are another lesson's program under the lesson's own name, as in the book
-# (the parameter lesson changes only the server; its client is the service lesson's client).
-REUSED = {"ros_tutorials_parameter/client.py": "ros_tutorials_service.client"}
+
+def modules(*packages: str) -> list[Path]:
+    return sorted(
+        path for package in packages for path in (ROOT / package).glob("*.py")
+        if path.name != "__init__.py"
+    )  # fmt: skip
+
+
+LESSON_FILES = modules(*LESSONS)
 
 
 def lesson_name(path: Path) -> str:
     return f"{path.parent.name}/{path.name}"
 
 
-def imported_modules(path: Path) -> set[str]:
-    modules = set()
+def imports(path: Path) -> list[tuple[int, str]]:
+    """(level, module) of each import: level 0 absolute, 1 from the file's own package."""
+    found = []
     for node in ast.walk(ast.parse(path.read_text())):
-        if isinstance(node, ast.ImportFrom) and node.module:
-            modules.add(node.module)
+        if isinstance(node, ast.ImportFrom):
+            found.append((node.level, node.module or ""))
         elif isinstance(node, ast.Import):
-            modules.update(alias.name for alias in node.names)
-    return modules
+            found += [(0, alias.name) for alias in node.names]
+    return found
+
+
+def plain_rclpy(level: int, module: str, path: Path) -> bool:
+    """The standard library, rclpy, an interface package (X.msg, X.srv, X.action), or a file
+    beside this one (copied with it)."""
+    if level:
+        return level == 1 and (path.parent / f"{module}.py").is_file()
+    top = module.split(".")[0]
+    return (
+        top in sys.stdlib_module_names
+        or top == "rclpy"
+        or bool(re.fullmatch(r"\w+\.(msg|srv|action)", module))
+    )
+
+
+@pytest.mark.parametrize("path", modules(*LESSONS, *DEMOS), ids=lesson_name)
+def test_a_lesson_is_plain_rclpy(path):
+    others = [module for level, module in imports(path) if not plain_rclpy(level, module, path)]
+    assert not others, f"{lesson_name(path)} imports {others}"
+
+
+@pytest.mark.parametrize("path", modules(*LESSONS, *DEMOS), ids=lesson_name)
+def test_a_lesson_shows_init_spin_and_shutdown(path):
+    source = path.read_text()
+    assert "rclpy.init(args=args" in source and "rclpy.try_shutdown()" in source
+    assert "ros_tutorials_common" not in source and "DISCOVERY" not in source
 
 
 @pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
-def test_a_lesson_imports_no_other_lesson(path):
-    others = {m for m in imported_modules(path) if m.split(".")[0] in LESSONS}
-    reused = REUSED.get(lesson_name(path))
-    if reused:  # `from ros_tutorials_service import client`
-        others = {m for m in others if m != reused.rpartition(".")[0]}
-    assert not others, f"{path.name} imports {others}"
-
-
-@pytest.mark.parametrize("name", sorted(REUSED))
-def test_a_reused_lesson_runs_the_others_main_and_nothing_else(name):
-    tree = ast.parse((ROOT / name).read_text())
-    package, _, module = REUSED[name].rpartition(".")
-    imports = [ast.unparse(node) for node in tree.body if isinstance(node, ast.ImportFrom)]
-    assert imports == [f"from {package} import {module}"]
-    (main,) = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
-    assert f"return {module}.main(args, " in ast.unparse(main)
-    assert "rclpy" not in (ROOT / name).read_text()
-
-
-@pytest.mark.parametrize(
-    "path", [p for p in LESSON_FILES if lesson_name(p) not in REUSED], ids=lesson_name
-)
-def test_a_lesson_shows_init_and_shutdown_and_serves_logger_levels(path):
-    source = path.read_text()
-    assert "rclpy.init(" in source and "rclpy.try_shutdown()" in source
+def test_a_lesson_node_serves_logger_levels(path):
     nodes = [
-        call for call in ast.walk(ast.parse(source))
+        call for call in ast.walk(ast.parse(path.read_text()))
         if isinstance(call, ast.Call) and ast.unparse(call.func) in ("Node", "super().__init__")
     ]  # fmt: skip
     assert nodes, f"{path.name} creates no node"

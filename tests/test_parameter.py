@@ -14,8 +14,7 @@ from ros_tutorials_interfaces.srv import SrvTutorial
 from std_msgs.msg import String
 
 import ros_tutorials_parameter
-from ros_tutorials_common.int64 import INT64_MAX, INT64_MIN
-from ros_tutorials_parameter.server import ServiceServerWithParameter
+from ros_tutorials_parameter.server import INT64_MAX, INT64_MIN, ServiceServerWithParameter
 from ros_tutorials_parameter.talker import DynamicsTalker
 
 PARAMS_FILE = Path(ros_tutorials_parameter.__file__).parent / "config" / "parameters.yaml"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from helpers import spin_until
+from helpers import run, spin_until
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 from std_msgs.msg import String
@@ -108,8 +108,13 @@ def test_nodes_take_standard_ros_arguments(node_process, context, executor):
     assert publisher.interrupt() == 0
 
 
-def test_malformed_ros_arguments_give_a_clear_error(node_process):
+def test_malformed_ros_arguments_give_rcls_error_and_ros2_run_one_line(node_process):
+    # The lesson is plain rclpy: rcl's own error and rclpy.init's traceback, as any ROS 2 node.
     proc = node_process("-m", "ros_tutorials_topic.publisher", "--ros-args", "-r", "bad")
     assert proc.wait() != 0
-    assert "invalid ROS arguments" in proc.output
-    assert "Traceback" not in proc.output
+    assert "Couldn't parse remap rule: '-r bad'" in proc.output
+    # `ros2 run` checks the ROS arguments before it starts the node: one line.
+    result = run("ros2", "run", "ros_tutorials_topic", "topic_publisher", "--ros-args", "-r", "bad")
+    assert result.returncode == 1 and result.stdout == ""
+    assert result.stderr.startswith("error: invalid ROS arguments: ")
+    assert result.stderr.count("\n") == 1, result.stderr

@@ -1,11 +1,10 @@
-"""The part of ros_tutorials_common that imports rclpy (the rest of the package never does).
+"""The part of ros_tutorials_common that imports rclpy (the rest of the package never does),
+for the tools and turtlesim; the lessons are plain rclpy and use none of it. A tool reads::
 
-A lesson's main() reads::
+    from ros_tutorials_common.ros import init, user_args
 
-    from ros_tutorials_common.ros import ros_args, user_args
-
-    options = parse_args(user_args(args))   # the program's own arguments (clients only)
-    rclpy.init(args=ros_args(args))
+    options = parse_args(user_args(argv))   # the program's own arguments
+    init(argv)                              # rclpy.init, with the DDS defaults
 """
 
 from ros_tutorials_common.ros.node_main import RCLError, init, ros_args, run_node, user_args

@@ -1,15 +1,15 @@
-"""The command line of a tutorial executable, before and around ``rclpy.init``.
+"""The command line of a tool or a turtlesim node, before and around ``rclpy.init`` (the
+lessons are plain rclpy: ``ros2 run``, the launcher and the activated environment give them
+the DDS defaults)::
 
-A lesson's main() reads::
-
-    options = parse_args(user_args(args))   # the program's own arguments (clients only)
-    rclpy.init(args=ros_args(args))
+    options = parse_args(user_args(argv))   # the program's own arguments
+    init(argv)                              # rclpy.init(args=ros_args(argv))
 
 ``ros_args`` applies this project's DDS defaults (they must be set before rclpy.init, see
 ros_tutorials_common/dds.py) and checks the ROS arguments, so that ``--ros-args -r bad`` ends
 the program with one clear line and exit status 1 instead of a traceback from rclpy.init.
 ``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
-steps at once for the tools (ros2, benchmarks), where rclpy.init is not the lesson.
+steps at once.
 
 ``ros_args`` also orders the two things a Ctrl-C does (``_CtrlCOnceRosIsDown``): rclpy's signal
 handler shuts ROS down in a thread of its own, and Python raises KeyboardInterrupt in the main
