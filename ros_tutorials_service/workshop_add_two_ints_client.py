@@ -1,7 +1,7 @@
 """AddTwoInts client of seed 004 (the "ROS Overview" workshop's add_two_ints_client.py).
 
 Sends x and y to ``add_two_ints`` once; prints "Requesting x+y" and "x + y = sum" as the seed
-does. Where the seed waits for ever, this gives up after 10 seconds.
+does. Where the seed waits for ever, this gives up after 30 seconds.
 
     rosrun my_package add_two_ints_client.py 1 2    (ros2 run: workshop_add_two_ints_client)
 """
@@ -16,12 +16,12 @@ from ros_tutorials_interfaces.srv import AddTwoInts
 
 def add_two_ints_client(node, x, y):
     client = node.create_client(AddTwoInts, "add_two_ints")
-    if not client.wait_for_service(timeout_sec=10.0):  # rospy.wait_for_service('add_two_ints')
-        raise RuntimeError("service add_two_ints not available after 10 s")
+    if not client.wait_for_service(timeout_sec=30.0):  # rospy.wait_for_service('add_two_ints')
+        raise RuntimeError("service add_two_ints not available after 30 s")
     future = client.call_async(AddTwoInts.Request(a=x, b=y))
-    rclpy.spin_until_future_complete(node, future, timeout_sec=10.0)
+    rclpy.spin_until_future_complete(node, future, timeout_sec=30.0)
     if not future.done():
-        raise RuntimeError("no answer from add_two_ints after 10 s")
+        raise RuntimeError("no answer from add_two_ints after 30 s")
     return future.result().sum
 
 

@@ -133,6 +133,10 @@ def exchange(terminal, mine: str, mine_says: str, theirs: str, theirs_says: str)
          "ros_tutorials_topic user_record_subscriber", "Receive : Ada Lovelace, age 36"),
         ("topic_user_record_subscriber", "Receive : Ada Lovelace, age 36",
          "ros_tutorials_topic user_record_publisher", "first_name: Ada"),
+        ("topic_workshop_talker", "[talker]: hello world",
+         "ros_tutorials_topic workshop_listener", "/listenerReceive : hello world"),
+        ("topic_workshop_listener", "/listenerReceive : hello world",
+         "ros_tutorials_topic workshop_talker", "[talker]: hello world"),
     ],
 )  # fmt: skip
 def test_topic_lessons(terminal, mine, mine_says, theirs, theirs_says):
@@ -151,6 +155,10 @@ def test_topic_lessons(terminal, mine, mine_says, theirs, theirs_says):
          "ros_tutorials_service add_two_ints_client 1 2 --timeout 60", "Sum: 3"),
         ("service_add_two_ints_client 1 2 --timeout 60", "Sum: 3",
          "ros_tutorials_service add_two_ints_server", "sending back response: [3]"),
+        ("service_workshop_add_two_ints_server", "Returning [1 + 2 = 3]",
+         "ros_tutorials_service workshop_add_two_ints_client 1 2", "1 + 2 = 3"),
+        ("service_workshop_add_two_ints_client 1 2", "1 + 2 = 3",
+         "ros_tutorials_service workshop_add_two_ints_server", "Returning [1 + 2 = 3]"),
         ("parameter_server --ros-args -p calculation_method:=3", "sending back response: [50]",
          "ros_tutorials_parameter service_client_with_parameter 10 5 --timeout 60",
          "receive srv, srv.Response.result: 50"),
