@@ -1,15 +1,8 @@
-"""Action server (book: ros_tutorials_action/action_server).
-
-Serves the Fibonacci action ``ros_tutorial_action``. A goal of order N starts from the seeds
-0, 1 and appends one term per step, N steps, publishing the sequence so far as feedback; the
-result is the whole sequence. A step takes ``step_period`` seconds (default 1.0: the book's
-1 Hz). As with the book's SimpleActionServer, one goal runs at a time: a new goal preempts the
-running one, which ends ABORTED (ROS 2 has no PREEMPTED). A cancel ends the goal CANCELED;
-Ctrl-C ends it and the server. Orders whose result does not fit in int32 are rejected.
-
-    action_server          (or: python -m ros_tutorials_action.server)
-    action_server --ros-args -p step_period:=0.2
-"""
+"""Action server (book: ros_tutorials_action/action_server): the Fibonacci action
+``ros_tutorial_action``, one term and one feedback per ``step_period`` seconds (default 1.0: the
+book's 1 Hz) from the seeds 0, 1. One goal runs at a time, as with the book's SimpleActionServer:
+a new goal preempts it (ABORTED), a cancel ends it CANCELED. Orders whose result does not fit in
+int32 are rejected.    action_server --ros-args -p step_period:=0.2"""
 
 import time
 
@@ -27,34 +20,26 @@ from ros_tutorials_interfaces.action import Fibonacci
 ACTION_NAME = "ros_tutorial_action"
 INT32_MAX = 2**31 - 1
 MAX_ORDER = 45  # the sequence of order 45 ends at F(46) = 1836311903; F(47) > INT32_MAX
-MAX_STEP_PERIOD = 86400.0  # one day: far below what a thread can wait for
-# The goal, cancel and result services queue this many requests (rclpy's default, 10, lost some).
-REQUESTS = QoSProfile(depth=1000)
+REQUESTS = QoSProfile(depth=1000)  # the goal, cancel, result services' queues (10 lost some)
 
 
-def step_period_error(value: object) -> str | None:
-    """Why value is not a usable step_period, or None if it is."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        return f"step_period must be a number of seconds, not {value!r}"
-    if not 0 < value <= MAX_STEP_PERIOD:  # nan too
-        return f"step_period must be greater than 0 seconds and at most 86400, not {value}"
-    return None
+def step_period_error(value: object) -> str | None:  # why value is no usable step_period
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value <= 86400:
+        return f"step_period must be greater than 0 seconds and at most 86400, not {value!r}"
+    return None  # a number of seconds (an integer will do), up to a day: a thread can wait that
 
 
 class FibonacciActionServer(Node):
     def __init__(self, **node_kwargs) -> None:
         super().__init__("action_server", enable_logger_service=True, **node_kwargs)
-        # Seconds per step (an integer will do), checked at start and at every change.
         descriptor = ParameterDescriptor(description="seconds per term", dynamic_typing=True)
-        self.declare_parameter("step_period", 1.0, descriptor)
+        self.declare_parameter("step_period", 1.0, descriptor)  # checked now and at each change
         if error := step_period_error(self.step_period):
             raise SystemExit(f"error: {error}")
         self.add_on_set_parameters_callback(self.check_step_period)
-        self.current_goal = None  # the goal accepted last: any other running goal is preempted
+        self.current_goal = None  # the goal accepted last: any other running goal stops
         self.running = []  # the goals whose execute callback runs
-        self.stopping = False  # set on Ctrl-C: every running goal stops
-        # The action server. Reentrant: goal and cancel requests are answered while a goal runs.
-        self.action_server = ActionServer(
+        self.action_server = ActionServer(  # reentrant: requests are answered while a goal runs
             self, Fibonacci, ACTION_NAME, self.execute,
             goal_callback=self.on_goal, handle_accepted_callback=self.on_accepted,
             cancel_callback=lambda goal_handle: CancelResponse.ACCEPT,  # rclpy's default: REJECT
@@ -85,16 +70,13 @@ class FibonacciActionServer(Node):
         self.current_goal = goal_handle  # preempts the goal that runs, if one does
         goal_handle.execute()
 
-    def should_stop(self, goal_handle) -> bool:
-        # The book: as_.isPreemptRequested() || !ros::ok()
-        preempted = goal_handle is not self.current_goal
-        return goal_handle.is_cancel_requested or preempted or self.stopping
+    def should_stop(self, goal_handle) -> bool:  # the book: isPreemptRequested() || !ros::ok()
+        return goal_handle.is_cancel_requested or goal_handle is not self.current_goal
 
     def execute(self, goal_handle) -> Fibonacci.Result:
         """The execute callback: compute the sequence, one term and one feedback per step."""
         self.running.append(goal_handle)
-        order = goal_handle.request.order
-        sequence = [0, 1]  # the seeds
+        order, sequence = goal_handle.request.order, [0, 1]  # the seeds
         self.get_logger().info(
             f"{ACTION_NAME}: Executing, creating fibonacci sequence of order {order} "
             f"with seeds {sequence[0]}, {sequence[1]}"
@@ -104,12 +86,10 @@ class FibonacciActionServer(Node):
                 break
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
-            # Sleep one step (the book: r.sleep()), but stop at once if the goal should stop.
-            end = time.monotonic() + self.step_period
+            end = time.monotonic() + self.step_period  # the book's r.sleep(), or should stop
             while time.monotonic() < end and not self.should_stop(goal_handle):
                 time.sleep(0.05)
-        # The goal's final state; the partial sequence is the result of a stopped goal.
-        if goal_handle.is_cancel_requested:
+        if goal_handle.is_cancel_requested:  # the final state (a stopped goal: partial result)
             goal_handle.canceled()
             self.get_logger().info(f"{ACTION_NAME}: Canceled")
         elif self.should_stop(goal_handle):  # a newer goal came, or Ctrl-C
@@ -121,9 +101,8 @@ class FibonacciActionServer(Node):
         self.running.remove(goal_handle)
         return Fibonacci.Result(sequence=sequence)
 
-    def destroy_node(self) -> None:
-        # A running goal uses this node: stop it first (waiting 5 s at most).
-        self.stopping = True
+    def destroy_node(self) -> None:  # a running goal uses this node: stop it first (5 s at most)
+        self.current_goal = None  # every running goal stops, as if preempted
         end = time.monotonic() + 5.0
         while self.running and time.monotonic() < end:
             time.sleep(0.05)
@@ -132,8 +111,7 @@ class FibonacciActionServer(Node):
 
 
 def main(args: list[str] | None = None) -> None:
-    # Without rclpy's signal handler, Ctrl-C raises KeyboardInterrupt and ROS stays up until
-    # the running goal has stopped: with it, ROS would shut down under the goal's feet.
+    # No rclpy signal handler: Ctrl-C raises KeyboardInterrupt, ROS stays up until goals stop.
     rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
     node = FibonacciActionServer()  # create the node and its action server
     executor = MultiThreadedExecutor(num_threads=4)  # a goal runs in one thread, requests in others

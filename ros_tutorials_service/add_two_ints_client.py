@@ -1,8 +1,4 @@
-"""AddTwoInts client (the classic rospy/roscpp tutorial of seeds 001-004): asks
-``add_two_ints`` for X + Y once and logs "Sum: ...".
-
-    add_two_ints_client 1 2   (or: python -m ros_tutorials_service.add_two_ints_client 1 2)
-"""
+"""Seed 002's add_two_ints_client.cpp: asks ``add_two_ints`` for X + Y once, logs "Sum: ..."."""
 
 import argparse
 import re
@@ -14,8 +10,7 @@ from rclpy.utilities import remove_ros_args
 from ros_tutorials_interfaces.srv import AddTwoInts
 
 
-def int64(text: str) -> int:
-    """An argparse type: a whole number as the seed's atoll reads it (digits, a sign), in int64."""
+def int64(text: str) -> int:  # an argparse type: digits and a sign, as the seed's atol reads them
     if not re.fullmatch(r"[+-]?[0-9]+", text):
         raise argparse.ArgumentTypeError(f"{text!r} is not an integer")
     if not -(2**63) <= int(text) < 2**63:
@@ -36,18 +31,16 @@ def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
     node = Node("add_two_ints_client", enable_logger_service=True)
     client = node.create_client(AddTwoInts, "add_two_ints")
-    log = node.get_logger()
-    try:
-        if not client.wait_for_service(timeout_sec=timeout):
-            log.error(f"Failed to call service {client.srv_name}: no server within {timeout:g} s")
-            return 1
-        future = client.call_async(AddTwoInts.Request(a=options.x, b=options.y))
-        rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
-        if not future.done():
-            log.error(f"Failed to call service {client.srv_name}: no answer within {timeout:g} s")
-            return 1
-        log.info(f"Sum: {future.result().sum}")
-        return 0
+    try:  # wait for the service, call it, wait for the answer: --timeout seconds per wait
+        if client.wait_for_service(timeout_sec=timeout):
+            future = client.call_async(AddTwoInts.Request(a=options.x, b=options.y))
+            rclpy.spin_until_future_complete(node, future, timeout_sec=timeout)
+            if future.done():
+                node.get_logger().info(f"Sum: {future.result().sum}")
+                return 0
+        failed = f"no {'answer' if client.service_is_ready() else 'server'} within {timeout:g} s"
+        node.get_logger().error(f"Failed to call service add_two_ints: {failed}")  # the seed's else
+        return 1
     except KeyboardInterrupt:
         return 130  # Ctrl-C: the exit status a shell gives a command it interrupted
     finally:
