@@ -1,21 +1,6 @@
 """The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
 
-# ruff: noqa: E402 - the imports follow the SIGINT handler: a Ctrl-C during them must be quiet
-
 from __future__ import annotations
-
-import os
-import signal
-
-
-def _interrupted_before_start(signum: int, _frame: object) -> None:
-    # Ctrl-C while the launcher imports and reads the file: nothing has started, leave
-    # quietly with a shell's status (the supervisor installs its own handler before starting).
-    os._exit(128 + signum)
-
-
-if __name__ == "__main__":
-    signal.signal(signal.SIGINT, _interrupted_before_start)
 
 import argparse
 import sys
@@ -27,6 +12,7 @@ from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, form
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import ArgInfo, Options, describe_args, resolve, valid_name
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 EXAMPLES = """\
 examples:
@@ -195,6 +181,7 @@ def _print_and_end(text: str) -> int:
     return 0
 
 
+@exits_130_on_ctrl_c  # until the supervisor handles it (Supervisor.run)
 def main(
     argv: list[str] | None = None, program: str | None = None, standalone: bool | None = None
 ) -> int:
@@ -219,8 +206,6 @@ def main(
             print(error.traceback, file=sys.stderr, end="")
         print(f"error: {error}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        return 130
     for warning in launch.warnings:  # at start, before the plan or the first process
         print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:

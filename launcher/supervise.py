@@ -51,7 +51,6 @@ from launcher import LaunchError, guardian
 from launcher.ament import apply_ament_defaults
 from launcher.plan import ProcessSpec, program_path
 from launcher.resolve import Step
-from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults
 
 POLL_SECONDS = 0.05
@@ -338,12 +337,6 @@ class Supervisor:
         if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
             os.kill(os.getpid(), signal.SIGKILL)
 
-    def _die_with_launcher_sigint_held(self) -> None:
-        # A command of this project starts with SIGINT blocked: a stop while Python is still
-        # starting waits until the command can end quietly (ros_tutorials_common/ctrl_c.py).
-        self._die_with_launcher()
-        ctrl_c.block_sigint()
-
     def start(self, child: Child) -> None:
         spec = child.spec
         env = dict(os.environ)
@@ -366,9 +359,7 @@ class Supervisor:
             env=env,
             cwd=spec.cwd,
             start_new_session=True,
-            preexec_fn=self._die_with_launcher_sigint_held
-            if ctrl_c.starts_project_command(spec.command)
-            else self._die_with_launcher,
+            preexec_fn=self._die_with_launcher,
         )
         self.keeper.watch(child.process.pid)
         child.started_at, child.restart_at = time.monotonic(), None

@@ -33,6 +33,7 @@ from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.messages import parse_yaml
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.cli import positive_int, positive_rate
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 # ROS 1 commands that have no ROS 2 counterpart, and what to do instead.
 NO_ROS2_MEANING = {
@@ -452,6 +453,7 @@ def _show(type_name: str, kind: str) -> None:
     interface.show(type_name, ros1_style=True, kinds=(kind,))
 
 
+@exits_130_on_ctrl_c
 def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
     # ROS 1 put options anywhere: `rostopic pub /cmd_vel -r 10 geometry_msgs/Twist '...'`.
     # argparse can parse that only below the command (not through subparsers), so pick it.

@@ -33,8 +33,9 @@ from collections.abc import Sequence
 
 from launcher import packages
 from ros2cmd.errors import ToolError
-from ros_tutorials_common import ctrl_c, names
+from ros_tutorials_common import names
 from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
@@ -163,18 +164,14 @@ def _exec(command: list[str], prefix: list[str]) -> None:
     command = [*prefix, *command]
     sys.stdout.flush()
     sys.stderr.flush()
-    held = not prefix and ctrl_c.starts_project_command(command)
-    if held:  # until the executable can end quietly on Ctrl-C (see ctrl_c.py)
-        ctrl_c.block_sigint()
     try:
         os.execvp(command[0], command)
     except OSError as error:
-        if held:
-            ctrl_c.unblock_sigint()
         raise ToolError(f"cannot run {command[0]}: {error.strerror}") from None
 
 
 @quiet_on_closed_pipe
+@exits_130_on_ctrl_c
 def rosrun(argv: Sequence[str] | None = None) -> int:
     """The `rosrun` command (console script)."""
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -8,7 +8,7 @@ checks that importing any of them loads no rclpy):
 - ``cli``: argument types and exit codes shared by the command-line programs
 - ``int64``: keeping the servers' results inside int64
 - ``bounded``: reading files, pipes and YAML from users within limits
-- ``ctrl_c``: a Ctrl-C while a command starts ends it quietly
+- ``ctrl_c``: how the tools end on Ctrl-C
 
 ``ros_tutorials_common.ros``: what needs rclpy, the command line before ``rclpy.init``
 (``ros_args``: DDS defaults and checked ROS arguments; ``user_args``: the program's own
@@ -16,7 +16,3 @@ arguments; ``init`` for the tools), and what the lesson clients and the action s
 besides the book's steps (``service_client_steps``, ``action_client_steps``,
 ``action_server_steps``).
 """
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -130,6 +131,59 @@ def fails(*args: str, timeout: float = TIMEOUT) -> str:
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
     return lines[0]
+
+
+ROOT = Path(__file__).resolve().parents[1]
+_FRAME = re.compile(r'  File "(?P<file>[^"]*)", line \d+, in (?P<function>.+)$')
+
+
+def _ours(file: str) -> bool:
+    """A file of this project's packages (not of the venv's, which may sit inside it)."""
+    return file.startswith(str(ROOT)) and not file.startswith(sys.prefix)
+
+
+# How rclpy refuses to go on in the context its signal handler has shut down (a node created
+# while Ctrl-C or SIGTERM arrives, before it spins).
+ROS_SHUT_DOWN = re.compile(
+    r"RCLError: .*context (is not valid|is invalid)|NotInitializedException|"
+    r"ExternalShutdownException"
+)
+
+
+def tracebacks_after_start(output: str, node: bool = False) -> list[str]:
+    """The tracebacks in a program's output other than Python's own KeyboardInterrupt while
+    it starts: a Ctrl-C before the program's first function runs (while site reads the .pth
+    files or modules import) prints one, as for any Python program (docs/dev/ctrl-c.md). Such
+    a traceback has no frame in a function of this project (a console script's or a package's,
+    outside module level). Lines may carry the launcher's "[label] " prefix.
+
+    NODE (a lesson node, as ros2/examples writes one): rclpy's refusal to create the node in
+    the context its signal handler has just shut down (ROS_SHUT_DOWN) is such a traceback too.
+    """
+    lines = output.splitlines()
+    found = []
+    for start, line in enumerate(lines):
+        at = line.find("Traceback (most recent call last):")
+        if at < 0:
+            continue
+        prefix, block = line[:at], [line[at:]]
+        for following in lines[start + 1 :]:
+            text = following[len(prefix) :] if following.startswith(prefix) else following
+            block.append(text)
+            if text.strip() and not text.startswith(" "):
+                break  # the exception's line (after the frames, their source and blank lines)
+        ours = [
+            match
+            for match in map(_FRAME.match, block)
+            if match
+            and match["function"] != "<module>"
+            and (_ours(match["file"]) or match["file"].startswith(str(BIN)))
+        ]
+        if node and ROS_SHUT_DOWN.search(block[-1]):
+            continue
+        if ours or block[-1].rstrip(": ") != "KeyboardInterrupt":
+            found.append("\n".join(block))
+    return found
 
 
 def ready(server: NodeProcess) -> NodeProcess:

@@ -17,6 +17,7 @@ from typing import Any
 from ros2cmd.bag import info as bag_info
 from ros2cmd.errors import ToolError
 from ros_tutorials_common.cli import positive_int, positive_rate, positive_seconds, stdout_closed
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 # record and play need rclpy (and ros2cmd.cli imports it); info does not, and starts faster
 # without it: those are imported where they are used.
@@ -224,6 +225,7 @@ def rosbag_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@exits_130_on_ctrl_c
 def rosbag(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] in (["info"], ["reindex"]):  # offline: no rclpy to load
