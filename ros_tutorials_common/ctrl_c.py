@@ -3,7 +3,7 @@
 A tool catches KeyboardInterrupt at its entry (``exits_130_on_ctrl_c``; ``ros2cmd.cli.execute``
 decides 0 or 130 for a running command). Before that, while Python starts and imports rclpy,
 a Ctrl-C prints Python's own KeyboardInterrupt traceback, as it does for any ROS 2 program
-(docs/dev/ctrl-c.md). Once a tool's graph node exists (``count_presses``), two ways a Ctrl-C
+(docs/dev/limits.md). Once a tool's graph node exists (``count_presses``), two ways a Ctrl-C
 could be lost are closed:
 
 - Python raises KeyboardInterrupt in whatever Python code runs at that instant. Raised in code
@@ -38,7 +38,9 @@ presses = 0  # Ctrl-C presses seen since count_presses()
 
 
 def exits_130_on_ctrl_c(main: Callable[..., int]) -> Callable[..., int]:
-    """A console script's main: a Ctrl-C that reaches it ends the tool with status 130."""
+    """A console script's main: a Ctrl-C that reaches it, or an error it caused on its way up
+    (``interrupted``: argparse cut half-way fails anew in its cleanup), ends the tool with
+    status 130."""
 
     @functools.wraps(main)
     def run(*args: object, **kwargs: object) -> int:
@@ -46,6 +48,10 @@ def exits_130_on_ctrl_c(main: Callable[..., int]) -> Callable[..., int]:
             return main(*args, **kwargs)
         except KeyboardInterrupt:
             return EXIT_INTERRUPTED
+        except Exception as error:
+            if interrupted(error):
+                return EXIT_INTERRUPTED
+            raise
 
     return run
 

@@ -150,39 +150,83 @@ ROS_SHUT_DOWN = re.compile(
 )
 
 
+# What Python prints between an exception and the one raised while it was handled (or from it).
+CHAINED = ("During handling of the above exception", "The above exception was the direct cause")
+TRACEBACK = "Traceback (most recent call last):"
+LABEL = re.compile(r"^\[[^\]]*\] ")  # the launcher's "[name] " before a child's lines
+
+
+def _after_blanks(lines: list[str], at: int) -> int:
+    while at < len(lines) and not lines[at].strip():
+        at += 1
+    return at
+
+
+def error_reports(output: str) -> list[list[list[str]]]:
+    """Python's reports of uncaught (or unraisable) errors in a program's output: each a list of
+    blocks (a traceback's lines and the exception's line, or the exception's line alone), one
+    per exception of a chain ("During handling of the above exception ...")."""
+    lines = [LABEL.sub("", line) for line in output.splitlines()]
+    in_pth = False  # site's report of a failed .pth line is indented by two spaces
+    for number, line in enumerate(lines):
+        if line.startswith("Error processing line ") or line == "Remainder of file ignored":
+            in_pth = line.startswith("Error")
+        elif in_pth:
+            lines[number] = line.removeprefix("  ")
+    reports, at = [], 0
+    while at < len(lines):
+        follows = _after_blanks(lines, at + 1)
+        chained = follows < len(lines) and lines[follows].startswith(CHAINED)
+        if not (lines[at].startswith(TRACEBACK) or (lines[at][:1].strip() and chained)):
+            at += 1
+            continue
+        blocks = []
+        while True:
+            block = [lines[at]]
+            if lines[at].startswith(TRACEBACK):
+                while at + 1 < len(lines):  # frames, their source, blank lines; then the error
+                    at += 1
+                    block.append(lines[at])
+                    if lines[at][:1].strip():
+                        break
+            blocks.append(block)
+            follows = _after_blanks(lines, at + 1)
+            if follows < len(lines) and lines[follows].startswith(CHAINED):
+                at = _after_blanks(lines, follows + 1)
+                continue
+            at += 1
+            break
+        reports.append(blocks)
+    return reports
+
+
 def tracebacks_after_start(output: str, node: bool = False) -> list[str]:
-    """The tracebacks in a program's output other than Python's own KeyboardInterrupt while
-    it starts: a Ctrl-C before the program's first function runs (while site reads the .pth
-    files or modules import) prints one, as for any Python program (docs/dev/ctrl-c.md). Such
-    a traceback has no frame in a function of this project (a console script's or a package's,
-    outside module level). Lines may carry the launcher's "[label] " prefix.
+    """Python's error reports in a program's output other than its own for a Ctrl-C while the
+    program starts: a Ctrl-C before the program's first function runs (while site reads the
+    .pth files or modules import) prints one, as for any Python program (docs/dev/limits.md).
+    Such a report has a KeyboardInterrupt in its chain (alone, or as the cause of the error a
+    C extension then raised: "ImportError: initialization failed") and no frame in a function
+    of this project (a console script's or a package's, outside module level). A child's lines
+    may carry the launcher's "[name] " label.
 
     NODE (a lesson node, as ros2/examples writes one): rclpy's refusal to create the node in
-    the context its signal handler has just shut down (ROS_SHUT_DOWN) is such a traceback too.
+    the context its signal handler has just shut down (ROS_SHUT_DOWN) is accepted too.
     """
-    lines = output.splitlines()
     found = []
-    for start, line in enumerate(lines):
-        at = line.find("Traceback (most recent call last):")
-        if at < 0:
-            continue
-        prefix, block = line[:at], [line[at:]]
-        for following in lines[start + 1 :]:
-            text = following[len(prefix) :] if following.startswith(prefix) else following
-            block.append(text)
-            if text.strip() and not text.startswith(" "):
-                break  # the exception's line (after the frames, their source and blank lines)
+    for blocks in error_reports(output):
+        errors = [block[-1] for block in blocks]
         ours = [
             match
+            for block in blocks
             for match in map(_FRAME.match, block)
             if match
             and match["function"] != "<module>"
             and (_ours(match["file"]) or match["file"].startswith(str(BIN)))
         ]
-        if node and ROS_SHUT_DOWN.search(block[-1]):
-            continue
-        if ours or block[-1].rstrip(": ") != "KeyboardInterrupt":
-            found.append("\n".join(block))
+        interrupted = any(error.rstrip(": ") == "KeyboardInterrupt" for error in errors)
+        refused = node and any(ROS_SHUT_DOWN.search(error) for error in errors)
+        if not refused and (ours or not interrupted):
+            found.append("\n".join(line for block in blocks for line in block))
     return found
 
 

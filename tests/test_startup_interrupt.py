@@ -1,10 +1,14 @@
 """Ctrl-C at any instant of a command's start: it ends, and prints no traceback once it runs.
 
 Before a program's first function runs (Python's start, the .pth files, the imports), a Ctrl-C
-prints Python's own KeyboardInterrupt traceback, as for any Python program; while ``site`` reads
-the .pth files (or sets up its streams), Python says "Fatal Python error: init_import_site"
-("init_sys_streams") before it, and exits with status 1 (docs/dev/ctrl-c.md). Those are
-accepted, and nothing else.
+gets Python's own answer, as for any Python program (docs/dev/limits.md, "Ctrl-C at any
+moment"): a KeyboardInterrupt traceback (status 130), "Fatal Python error: init_import_site"
+and one (status 1, while site reads the .pth files), or an error it caused ("ImportError:
+initialization failed" from rclpy's C extension, status 1); rarely Python loses it (its
+"Exception ignored" lines, or a Ctrl-C that reached the interpreter the ROS wheels' bootstrapper
+replaces), and a second Ctrl-C stops the program. A lesson node may also end by rclpy's refusal
+to create its node in the context its Ctrl-C handler shut down. These are accepted, and
+nothing else (helpers.tracebacks_after_start).
 
 A sweep starts a command as a user's shell would (without the ROS wheels' bootstrap done, so
 the interpreter re-executes itself as it does for a user), sends SIGINT after a delay (to the
@@ -29,7 +33,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
-from helpers import ROS_SHUT_DOWN, TIMEOUT, tracebacks_after_start
+from helpers import ROS_SHUT_DOWN, TIMEOUT, error_reports, tracebacks_after_start
 from rclpy.context import Context
 
 from ros_tutorials_common import ctrl_c
@@ -41,19 +45,23 @@ DELAYS = (0.0, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.25, 0.4, 0.6, 0.9, 1.
 # for which Ctrl-C is the normal end (a node, once running).
 STOPPED = {-signal.SIGINT, 128 + signal.SIGINT, 0}
 LOST_GRACE = 2.0  # seconds a program whose Ctrl-C Python lost has to end anyway
+LOST_WAIT = 10.0  # seconds before a Ctrl-C sent before the ROS wheels' re-exec is pressed again
 # Python's words for a KeyboardInterrupt while it initialises (its streams, site): status 1.
 INIT_INTERRUPTED = re.compile(r"^Fatal Python error: init_\w+: .*\nPython runtime state: ", re.M)
 
 
 def stopped_well(status: int, err: str, node: bool = False) -> bool:
-    """How a command may end after Ctrl-C: see the module's docstring. NODE: a lesson node
-    (or its launch), which may also end by rclpy's refusal to create the node in the context
-    its signal handler has shut down (helpers.ROS_SHUT_DOWN), status 1."""
-    refused = node and ROS_SHUT_DOWN.search(err)
-    if status not in STOPPED and not (status == 1 and (INIT_INTERRUPTED.search(err) or refused)):
+    """How a command may end after Ctrl-C (see the module's docstring): killed by SIGINT or
+    its own 0 or 130, or status 1 where Python's report of a Ctrl-C while starting ended it
+    (for NODE, a lesson node or its launch, also rclpy's refusal to create the node in the
+    context its signal handler has shut down: helpers.ROS_SHUT_DOWN)."""
+    init = INIT_INTERRUPTED.search(err)  # Python ends there: what follows is its own report
+    if err.count("Fatal Python error") != (1 if init else 0):
         return False
-    fatal = err.count("Fatal Python error")
-    return fatal == len(INIT_INTERRUPTED.findall(err)) and not tracebacks_after_start(err, node)
+    before = err[: init.start()] if init else err
+    if tracebacks_after_start(before, node):
+        return False
+    return status in STOPPED or (status == 1 and bool(init or error_reports(before)))
 
 
 def user_env() -> dict[str, str]:
@@ -64,17 +72,52 @@ def user_env() -> dict[str, str]:
 
 
 def lost_while_starting(err: str) -> bool:
-    """Whether Python lost the Ctrl-C while the program started: raised in a callback Python
-    runs for itself during an import (a module lock's weakref callback), it reports it as
-    "Exception ignored in: ..." and goes on, as for any Python program (docs/dev/ctrl-c.md)."""
-    lost = re.search(r"^Exception ignored in: .*\n(?:.*\n)*?KeyboardInterrupt", err, re.M)
+    """Whether Python lost the Ctrl-C while the program started, and said so: raised in a
+    callback Python runs for itself during an import (a module lock's weakref callback), it
+    reports "Exception ignored in: ..."; raised while site runs a .pth file's line, site
+    reports "Error processing line 1 of ....pth" and goes on (docs/dev/limits.md)."""
+    lost = re.search(
+        r"^(Exception ignored in: |Error processing line \d+ of ).*\n(?:.*\n)*? *KeyboardInterrupt",
+        err,
+        re.M,
+    )
     return bool(lost) and not tracebacks_after_start(err)
+
+
+def _text(written: bytearray) -> str:
+    return written.decode(errors="replace")
+
+
+def _before_reexec(pid: int) -> bool:
+    """Whether the process is still the interpreter that the ROS wheels' bootstrapper (a .pth
+    file) replaces by a new one with the libraries' path: a Ctrl-C whose handler Python has
+    not run yet when it calls execve is lost (docs/dev/limits.md)."""
+    try:
+        return b"_ROS_WHEELS_BOOTSTRAP_COMPLETE=" not in Path(f"/proc/{pid}/environ").read_bytes()
+    except OSError:  # ended already
+        return False
+
+
+def _ends(process: subprocess.Popen, written: bytearray, timeout: float) -> bool:
+    """Whether the process ends within timeout seconds; False sooner (LOST_GRACE) once its
+    output says Python lost the Ctrl-C while starting."""
+    deadline = time.monotonic() + timeout
+    while process.poll() is None:
+        if lost_while_starting(_text(written)):
+            try:
+                process.wait(LOST_GRACE)
+            except subprocess.TimeoutExpired:
+                return False
+        elif time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
 
 
 def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int, str]:
     """Start command, SIGINT it after delay seconds, wait for its end: (status, stderr). A
-    Ctrl-C that Python lost while starting (lost_while_starting) is pressed again, as a user
-    would after reading Python's "Exception ignored" lines."""
+    Ctrl-C that Python lost while starting (its "Exception ignored" lines, or before the ROS
+    wheels' re-exec) is pressed again, as a user would."""
     process = subprocess.Popen(
         command,
         stdin=subprocess.DEVNULL,
@@ -93,41 +136,35 @@ def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int,
     reader.start()
     time.sleep(delay)  # where in the start the Ctrl-C falls; nothing depends on the exact time
     press = os.killpg if group else os.kill
+    before_reexec = _before_reexec(process.pid)
     press(process.pid, signal.SIGINT)
-    deadline = time.monotonic() + TIMEOUT
-    try:
-        while process.poll() is None and not lost_while_starting(written.decode(errors="replace")):
-            if time.monotonic() > deadline:
-                raise subprocess.TimeoutExpired(command, TIMEOUT)
-            time.sleep(0.05)
-        if process.poll() is None:  # lost: give it a moment to end on its own, then again
-            try:
-                process.wait(LOST_GRACE)
-            except subprocess.TimeoutExpired:
-                press(process.pid, signal.SIGINT)
-        process.wait(TIMEOUT)
+    ended = _ends(process, written, LOST_WAIT if before_reexec else TIMEOUT)
+    if not ended and (before_reexec or lost_while_starting(_text(written))):
+        press(process.pid, signal.SIGINT)
+        ended = _ends(process, written, TIMEOUT)
+    if ended:
         reader.join(TIMEOUT)
-        return process.returncode, written.decode(errors="replace")
+        return process.returncode, _text(written)
+    # Whether the Ctrl-C is still pending (SigPnd/ShdPnd bit 2) and blocked (SigBlk), and
+    # (SIGABRT: Python's fault handler, PYTHONFAULTHANDLER in conftest) where each thread was.
+    try:
+        status = Path(f"/proc/{process.pid}/status").read_text().splitlines()
+    except OSError:
+        status = []
+    masks = [line for line in status if line.startswith(("SigPnd", "ShdPnd", "SigBlk"))]
+    os.killpg(process.pid, signal.SIGABRT)
+    try:
+        process.wait(5)
     except subprocess.TimeoutExpired:
-        # Whether the Ctrl-C is still pending (SigPnd/ShdPnd bit 2) and blocked (SigBlk), and
-        # (SIGABRT: Python's fault handler, PYTHONFAULTHANDLER in conftest) where each thread was.
-        try:
-            status = Path(f"/proc/{process.pid}/status").read_text().splitlines()
-        except OSError:
-            status = []
-        masks = [line for line in status if line.startswith(("SigPnd", "ShdPnd", "SigBlk"))]
-        os.killpg(process.pid, signal.SIGABRT)
-        try:
-            process.wait(5)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-        reader.join(5)
-        pytest.fail(
-            f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; "
-            + " ".join(masks)
-            + "; where it was:\n"
-            + written.decode(errors="replace")[-4000:]
-        )
+        os.killpg(process.pid, signal.SIGKILL)
+    reader.join(5)
+    text = _text(written)
+    pytest.fail(
+        f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; "
+        + " ".join(masks)
+        + "; where it was:\n"
+        + (text if len(text) < 6000 else f"{text[:3000]}\n...\n{text[-3000:]}")
+    )
 
 
 # name: (command line, SIGINT to its process group (a terminal's Ctrl-C), runs lesson nodes)
