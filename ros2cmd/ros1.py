@@ -453,7 +453,6 @@ def _show(type_name: str, kind: str) -> None:
     interface.show(type_name, ros1_style=True, kinds=(kind,))
 
 
-@exits_130_on_ctrl_c
 def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
     # ROS 1 put options anywhere: `rostopic pub /cmd_vel -r 10 geometry_msgs/Twist '...'`.
     # argparse can parse that only below the command (not through subparsers), so pick it.
@@ -466,25 +465,31 @@ def _run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
     return run_parsed(args)
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rostopic(argv: Sequence[str] | None = None) -> int:
     return _run(rostopic_parser(), argv)
 
 
+@exits_130_on_ctrl_c
 def rosservice(argv: Sequence[str] | None = None) -> int:
     return _run(rosservice_parser(), argv)
 
 
+@exits_130_on_ctrl_c
 def rosparam(argv: Sequence[str] | None = None) -> int:
     return _run(rosparam_parser(), argv)
 
 
+@exits_130_on_ctrl_c
 def rosnode(argv: Sequence[str] | None = None) -> int:
     return _run(rosnode_parser(), argv)
 
 
+@exits_130_on_ctrl_c
 def rosmsg(argv: Sequence[str] | None = None) -> int:
     return _run(_interface_parser("rosmsg", "msg"), argv)
 
 
+@exits_130_on_ctrl_c
 def rossrv(argv: Sequence[str] | None = None) -> int:
     return _run(_interface_parser("rossrv", "srv"), argv)
