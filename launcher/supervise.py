@@ -422,7 +422,9 @@ class Supervisor:
 
     def _relay(self, child: Child, line: str, screen: IO[str], held: list[str]) -> None:
         """Show a line; hold back a traceback of a child we are stopping (see _flush_held)."""
-        starts = ("Traceback (most recent call last):", "Fatal Python error:")
+        # (A KeyboardInterrupt raised in C code has no traceback: its line comes first, then
+        # the error it caused, such as rclpy's "ImportError: initialization failed".)
+        starts = ("Traceback (most recent call last):", "Fatal Python error:", "KeyboardInterrupt")
         if held or (child.stage and line.startswith(starts)):
             held.append(line)
             if len(held) >= MAX_TRACEBACK_LINES:

@@ -3,8 +3,8 @@
 A tool catches KeyboardInterrupt at its entry (``exits_130_on_ctrl_c``; ``ros2cmd.cli.execute``
 decides 0 or 130 for a running command). Before that, while Python starts and imports rclpy,
 a Ctrl-C prints Python's own KeyboardInterrupt traceback, as it does for any ROS 2 program
-(docs/dev/limits.md). Once a tool's graph node exists (``count_presses``), two ways a Ctrl-C
-could be lost are closed:
+(docs/dev/limits.md). From the entry on (``count_presses``), two ways a Ctrl-C could be lost
+are closed:
 
 - Python raises KeyboardInterrupt in whatever Python code runs at that instant. Raised in code
   that C calls and whose errors C drops, it is gone: a `rostopic echo` waiting for its topic ran
@@ -38,13 +38,14 @@ presses = 0  # Ctrl-C presses seen since count_presses()
 
 
 def exits_130_on_ctrl_c(main: Callable[..., int]) -> Callable[..., int]:
-    """A console script's main: a Ctrl-C that reaches it, or an error it caused on its way up
-    (``interrupted``: argparse cut half-way fails anew in its cleanup), ends the tool with
-    status 130."""
+    """A console script's main: Ctrl-C's are counted from here on (``count_presses``), and one
+    that reaches it, or an error it caused on its way up (``interrupted``: argparse cut
+    half-way fails anew in its cleanup), ends the tool with status 130."""
 
     @functools.wraps(main)
     def run(*args: object, **kwargs: object) -> int:
         try:
+            count_presses()
             return main(*args, **kwargs)
         except KeyboardInterrupt:
             return EXIT_INTERRUPTED
@@ -63,8 +64,8 @@ def _count_and_raise(signum: int, frame: object) -> None:
 
 
 def count_presses() -> None:
-    """From now on (a tool's graph node exists) Ctrl-C raises KeyboardInterrupt as Python's
-    own handler does, counted, and one lost in a __del__ is delivered again."""
+    """From now on Ctrl-C raises KeyboardInterrupt as Python's own handler does, counted, and
+    one lost in a __del__ is delivered again (a tool's entry, and its graph node: Graph)."""
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, _count_and_raise)
     sys.unraisablehook = _unraisable

@@ -166,7 +166,16 @@ def error_reports(output: str) -> list[list[list[str]]]:
     """Python's reports of uncaught (or unraisable) errors in a program's output: each a list of
     blocks (a traceback's lines and the exception's line, or the exception's line alone), one
     per exception of a chain ("During handling of the above exception ...")."""
-    lines = [LABEL.sub("", line) for line in output.splitlines()]
+    programs: dict[str, list[str]] = {}  # the launcher's children's lines interleave
+    for line in output.splitlines():
+        label = LABEL.match(line)
+        programs.setdefault(label[0] if label else "", []).append(
+            line[label.end() if label else 0 :]
+        )
+    return [report for lines in programs.values() for report in _reports_in(lines)]
+
+
+def _reports_in(lines: list[str]) -> list[list[list[str]]]:
     in_pth = False  # site's report of a failed .pth line is indented by two spaces
     for number, line in enumerate(lines):
         if line.startswith("Error processing line ") or line == "Remainder of file ignored":
@@ -177,7 +186,8 @@ def error_reports(output: str) -> list[list[list[str]]]:
     while at < len(lines):
         follows = _after_blanks(lines, at + 1)
         chained = follows < len(lines) and lines[follows].startswith(CHAINED)
-        if not (lines[at].startswith(TRACEBACK) or (lines[at][:1].strip() and chained)):
+        alone = lines[at].rstrip(": ") == "KeyboardInterrupt"  # raised outside Python code
+        if not (lines[at].startswith(TRACEBACK) or (lines[at][:1].strip() and chained) or alone):
             at += 1
             continue
         blocks = []
