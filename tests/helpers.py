@@ -150,6 +150,7 @@ ROS_SHUT_DOWN = re.compile(
 )
 
 
+SPINNING = {"spin", "spin_once", "spin_until_future_complete"}  # rclpy's: a node running
 # What Python prints between an exception and the one raised while it was handled (or from it).
 CHAINED = ("During handling of the above exception", "The above exception was the direct cause")
 TRACEBACK = "Traceback (most recent call last):"
@@ -219,23 +220,26 @@ def tracebacks_after_start(output: str, node: bool = False) -> list[str]:
     of this project (a console script's or a package's, outside module level). A child's lines
     may carry the launcher's "[name] " label.
 
-    NODE (a lesson node, as ros2/examples writes one): rclpy's refusal to create the node in
-    the context its signal handler has just shut down (ROS_SHUT_DOWN) is accepted too.
+    NODE (a lesson node, as ros2/examples writes one: rclpy.init and the node's creation come
+    before its try): its start lasts until it spins, so a KeyboardInterrupt through its main
+    is accepted there, and so is rclpy's refusal to create the node in the context its signal
+    handler has just shut down (ROS_SHUT_DOWN); not once a frame is in rclpy's spin.
     """
     found = []
     for blocks in error_reports(output):
         errors = [block[-1] for block in blocks]
-        ours = [
-            match
-            for block in blocks
-            for match in map(_FRAME.match, block)
-            if match
-            and match["function"] != "<module>"
-            and (_ours(match["file"]) or match["file"].startswith(str(BIN)))
-        ]
+        frames = [match for block in blocks for match in map(_FRAME.match, block) if match]
+        if node:
+            started = not any(frame["function"] in SPINNING for frame in frames)
+        else:
+            started = not any(
+                frame["function"] != "<module>"
+                and (_ours(frame["file"]) or frame["file"].startswith(str(BIN)))
+                for frame in frames
+            )
         interrupted = any(error.rstrip(": ") == "KeyboardInterrupt" for error in errors)
         refused = node and any(ROS_SHUT_DOWN.search(error) for error in errors)
-        if not refused and (ours or not interrupted):
+        if not (started and (interrupted or refused)):
             found.append("\n".join(line for block in blocks for line in block))
     return found
 

@@ -6,9 +6,10 @@ moment"): a KeyboardInterrupt traceback (status 130), "Fatal Python error: init_
 and one (status 1, while site reads the .pth files), or an error it caused ("ImportError:
 initialization failed" from rclpy's C extension, status 1); rarely Python loses it (its
 "Exception ignored" lines, or a Ctrl-C that reached the interpreter the ROS wheels' bootstrapper
-replaces), and a second Ctrl-C stops the program. A lesson node may also end by rclpy's refusal
-to create its node in the context its Ctrl-C handler shut down. These are accepted, and
-nothing else (helpers.tracebacks_after_start).
+replaces), and a second Ctrl-C stops the program. A lesson node's start lasts until it spins
+(rclpy.init and its node's creation come before its try, as in ros2/examples): a traceback
+through its main, or rclpy's refusal to create its node in the context its Ctrl-C handler
+shut down. These are accepted, and nothing else (helpers.tracebacks_after_start).
 
 A sweep starts a command as a user's shell would (without the ROS wheels' bootstrap done, so
 the interpreter re-executes itself as it does for a user), sends SIGINT after a delay (to the
