@@ -44,6 +44,7 @@ def exits_130_on_ctrl_c(main: Callable[..., int]) -> Callable[..., int]:
 
     @functools.wraps(main)
     def run(*args: object, **kwargs: object) -> int:
+        previous = signal.getsignal(signal.SIGINT), sys.unraisablehook
         try:
             count_presses()
             return main(*args, **kwargs)
@@ -53,6 +54,11 @@ def exits_130_on_ctrl_c(main: Callable[..., int]) -> Callable[..., int]:
             if interrupted(error):
                 return EXIT_INTERRUPTED
             raise
+        finally:  # for a caller that goes on (a test): what it had, unless the tool changed it
+            if signal.getsignal(signal.SIGINT) is _count_and_raise and _in_main_thread():
+                signal.signal(signal.SIGINT, previous[0])
+            if sys.unraisablehook is _unraisable:
+                sys.unraisablehook = previous[1]
 
     return run
 
@@ -66,9 +72,13 @@ def _count_and_raise(signum: int, frame: object) -> None:
 def count_presses() -> None:
     """From now on Ctrl-C raises KeyboardInterrupt as Python's own handler does, counted, and
     one lost in a __del__ is delivered again (a tool's entry, and its graph node: Graph)."""
-    if threading.current_thread() is threading.main_thread():
+    if _in_main_thread():  # where signal.signal works
         signal.signal(signal.SIGINT, _count_and_raise)
     sys.unraisablehook = _unraisable
+
+
+def _in_main_thread() -> bool:
+    return threading.current_thread() is threading.main_thread()
 
 
 def interrupted(error: BaseException | None) -> bool:
