@@ -13,16 +13,22 @@ INTERFACES := $(VENV)/.interfaces
 PACKAGES := $(VENV)/.packages
 # A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
 PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config)
-CTRL_C := $(VENV)/.ctrl_c
+HOLD_REMOVED := $(VENV)/.ctrl_c_hold_removed
 ENVIRONMENT := $(VENV)/.ros_environment
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
 	interfaces/*/package.xml interfaces/*/msg/*.msg interfaces/*/srv/*.srv interfaces/*/action/*.action)
 
 .PHONY: setup run test test-load lint bench clean interfaces
 
-setup: $(INTERFACES) $(PACKAGES) $(CTRL_C) $(ENVIRONMENT)
+setup: $(HOLD_REMOVED) $(INTERFACES) $(PACKAGES) $(ENVIRONMENT)
 
-$(INSTALLED): pyproject.toml
+# A venv of an older clone: its .pth file that held SIGINT at every start of Python goes, and
+# its console scripts start Python directly again (before anything else runs in it).
+$(HOLD_REMOVED): tools/remove_ctrl_c_hold.py
+	test ! -x $(PY) || $(PY) -S tools/remove_ctrl_c_hold.py $(VENV)
+	mkdir -p $(VENV) && rm -f $(VENV)/.ctrl_c && touch $@
+
+$(INSTALLED): pyproject.toml | $(HOLD_REMOVED)
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[test,interfaces]'
@@ -39,12 +45,6 @@ $(PACKAGES): $(INTERFACES) $(PACKAGE_SOURCES) tools/register_packages.py
 	$(PY) tools/register_packages.py
 	touch $@
 
-# A Ctrl-C while a command starts ends it quietly (ros_tutorials_common/ctrl_c.py): a .pth
-# file, and the console scripts started through `env --block-signal=INT`.
-$(CTRL_C): $(INSTALLED) ros_tutorials_common/ctrl_c.py
-	$(PY) -c 'from ros_tutorials_common.ctrl_c import install; print(*install(), sep="\n")'
-	touch $@
-
 # `source .venv/bin/activate` sets ROS_VERSION, ROS_PYTHON_VERSION and ROS_DISTRO, as a ROS
 # install's setup.bash does (the official "Configuring environment" tutorial looks for them).
 $(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.py
@@ -54,7 +54,6 @@ $(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.p
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.
 interfaces: $(INTERFACES)
 
-# roslaunch is `python -m launcher` as a console script: Ctrl-C is quiet from its first instant.
 run: setup
 	$(VENV)/bin/roslaunch union.launch
 

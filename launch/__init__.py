@@ -2,12 +2,6 @@
 launcher (the launch system is not on PyPI). ``ros2 launch FILE.launch.py`` runs a file that
 imports it; see launcher/python_files.py."""
 
-# ruff: noqa: E402 - the imports follow the release of Ctrl-C, as in every package here
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)
-
 from launch import (
     actions,
     conditions,

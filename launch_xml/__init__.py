@@ -1,5 +1,1 @@
 """launch_xml: its XMLLaunchDescriptionSource, for Python launch files that include XML."""
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

@@ -9,10 +9,6 @@ process specs with full command lines, printable), supervise (start, prefix outp
 shut down). ``LaunchError`` is the one error type every stage raises for bad input.
 """
 
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)
-
 
 class LaunchError(Exception):
     """A problem in a launch file or on the command line: reported as one line, exit code 1."""

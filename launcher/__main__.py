@@ -1,21 +1,6 @@
 """The launcher's command line: python -m launcher [PKG] FILE [name:=value ...] [options]."""
 
-# ruff: noqa: E402 - the imports follow the SIGINT handler: a Ctrl-C during them must be quiet
-
 from __future__ import annotations
-
-import os
-import signal
-
-
-def _interrupted_before_start(signum: int, _frame: object) -> None:
-    # Ctrl-C while the launcher imports and reads the file: nothing has started, leave
-    # quietly with a shell's status (the supervisor installs its own handler before starting).
-    os._exit(128 + signum)
-
-
-if __name__ == "__main__":
-    signal.signal(signal.SIGINT, _interrupted_before_start)
 
 import argparse
 import shlex
@@ -30,6 +15,7 @@ from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve, valid_name
 from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 EXAMPLES = """\
 examples:
@@ -201,6 +187,7 @@ def _print_and_end(text: str) -> int:
     return 0
 
 
+@exits_130_on_ctrl_c  # until the supervisor handles it (Supervisor.run)
 def main(
     argv: list[str] | None = None, program: str | None = None, standalone: bool | None = None
 ) -> int:

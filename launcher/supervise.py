@@ -58,7 +58,6 @@ from typing import IO, ClassVar
 from launcher import LaunchError, guardian
 from launcher.declarations import Step
 from launcher.plan import ProcessSpec, program_path
-from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults
 
@@ -381,12 +380,6 @@ class Supervisor:
         if os.getppid() != self.launcher_pid:  # the launcher died before prctl took effect
             os.kill(os.getpid(), signal.SIGKILL)
 
-    def _die_with_launcher_sigint_held(self) -> None:
-        # A command of this project starts with SIGINT blocked: a stop while Python is still
-        # starting waits until the command can end quietly (ros_tutorials_common/ctrl_c.py).
-        self._die_with_launcher()
-        ctrl_c.block_sigint()
-
     def start(self, child: Child) -> None:
         spec = child.spec
         env = dict(os.environ)
@@ -409,9 +402,7 @@ class Supervisor:
             env=env,
             cwd=spec.cwd,
             start_new_session=True,
-            preexec_fn=self._die_with_launcher_sigint_held
-            if ctrl_c.starts_project_command(spec.command)
-            else self._die_with_launcher,
+            preexec_fn=self._die_with_launcher,
         )
         self.keeper.watch(child.process.pid)
         child.started_at, child.restart_at = time.monotonic(), None
@@ -481,7 +472,9 @@ class Supervisor:
 
     def _relay(self, child: Child, line: str, screen: IO[str], held: list[str]) -> None:
         """Show a line; hold back a traceback of a child we are stopping (see _flush_held)."""
-        starts = ("Traceback (most recent call last):", "Fatal Python error:")
+        # (A KeyboardInterrupt raised in C code has no traceback: its line comes first, then
+        # the error it caused, such as rclpy's "ImportError: initialization failed".)
+        starts = ("Traceback (most recent call last):", "Fatal Python error:", "KeyboardInterrupt")
         if held or (child.stage and line.startswith(starts)):
             held.append(line)
             if len(held) >= MAX_TRACEBACK_LINES:

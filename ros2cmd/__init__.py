@@ -9,7 +9,3 @@
 
 See `ros2 --help`; the ROS 1 front-ends are in ros1/.
 """
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

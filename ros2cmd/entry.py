@@ -10,7 +10,10 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
+
+@exits_130_on_ctrl_c  # while rclpy loads, too
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
     if words[:1] == ["launch"]:

@@ -53,8 +53,8 @@ from ros2cmd.local_participants import (
     still_there,
     unexplained,
 )
-from ros2cmd.wait import count_ctrl_c, spin_until
-from ros_tutorials_common import bounded
+from ros2cmd.wait import spin_until
+from ros_tutorials_common import bounded, ctrl_c
 from ros_tutorials_common.ros import init
 
 # Set (to a number of seconds), how long a command waits by default for the thing it names to
@@ -224,7 +224,7 @@ class Graph(VisibleNames):
         except KeyboardInterrupt:  # pressed meanwhile: everything exists, close it first
             self.close()
             raise
-        count_ctrl_c()
+        ctrl_c.count_presses()  # a Ctrl-C lost on its way still ends a wait (see ctrl_c.py)
         # SIGTERM shuts ROS down (rclpy's handler) and nothing more: a wait for a file's
         # bytes (`rosparam load FIFO`) asks whether it happened.
         bounded.stop_requested = lambda: not self.node.context.ok()

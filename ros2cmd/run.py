@@ -17,7 +17,7 @@ import sys
 from collections.abc import Sequence
 
 from ros2cmd.errors import ToolError
-from ros_tutorials_common import ctrl_c, names, packages
+from ros_tutorials_common import names, packages
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 # ROS 1 special keys with no ROS 2 meaning, and what to do instead.
@@ -164,14 +164,9 @@ def _exec(command: list[str], prefix: list[str]) -> None:
     command = [*prefix, *command]
     sys.stdout.flush()
     sys.stderr.flush()
-    held = not prefix and ctrl_c.starts_project_command(command)
-    if held:  # until the executable can end quietly on Ctrl-C (see ctrl_c.py)
-        ctrl_c.block_sigint()
     try:
         os.execvp(command[0], command)
     except OSError as error:
-        if held:
-            ctrl_c.unblock_sigint()
         raise ToolError(f"cannot run {command[0]}: {error.strerror}") from None
 
 

@@ -4,7 +4,8 @@
 complete) and ``action send_goal`` (a goal's answer) all wait here. A goal may run for long,
 so this loop can also:
 
-- stop at once when ``interrupted()`` says Ctrl-C was pressed (``Interrupted``);
+- stop at once when ``interrupted()`` says Ctrl-C was pressed (``Interrupted``), or when a
+  Ctrl-C was counted whose KeyboardInterrupt never reached it (ros_tutorials_common/ctrl_c.py);
 - check every SERVER_CHECK_PERIOD that an action server is still in the graph: a server that
   crashed or was stopped never answers, and waiting for it would last forever (``ServerLost``).
 """
@@ -12,14 +13,14 @@ so this loop can also:
 from __future__ import annotations
 
 import math
-import signal
-import threading
 import time
 from collections.abc import Callable
 from typing import TypeVar
 
 from rclpy.action import ActionClient
 from rclpy.executors import Executor
+
+from ros_tutorials_common import ctrl_c
 
 # Waits spin in slices this long at most, so that a Ctrl-C is noticed at once ...
 SPIN_SLICE = 0.1
@@ -31,29 +32,6 @@ T = TypeVar("T")
 
 class Interrupted(Exception):
     """The user pressed Ctrl-C."""
-
-
-# Ctrl-C presses seen by the tools' SIGINT handler (count_ctrl_c).
-_presses = 0
-
-
-def _count_and_raise(signum: int, frame: object) -> None:
-    global _presses
-    _presses += 1
-    raise KeyboardInterrupt
-
-
-def count_ctrl_c() -> None:
-    """From now on a Ctrl-C raises KeyboardInterrupt as Python's own handler does, and is
-    counted, so that spin_until notices one whose KeyboardInterrupt never reached it.
-
-    Python raises it in whatever Python code the main thread runs at that instant; raised in
-    code that C calls and whose errors C drops, it is gone, and a `rostopic echo` waiting for
-    its topic ran on for the whole wait (seen once in about 700 Ctrl-C's during a start, under
-    load). Counting does not depend on the exception.
-    """
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGINT, _count_and_raise)
 
 
 class ServerLost(Exception):
@@ -82,9 +60,9 @@ def spin_until(
     start = time.monotonic()
     deadline = start + timeout
     next_check = start + SERVER_CHECK_PERIOD
-    presses = _presses
+    presses = ctrl_c.presses
     while not (result := condition()):
-        if _presses != presses:  # a Ctrl-C came and its KeyboardInterrupt was lost
+        if ctrl_c.presses != presses:  # a Ctrl-C came and its KeyboardInterrupt was lost
             raise KeyboardInterrupt
         if interrupted is not None and interrupted():
             raise Interrupted

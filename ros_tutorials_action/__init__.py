@@ -1,5 +1,1 @@
 """The action lesson: a Fibonacci action server and a one-shot action client."""
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

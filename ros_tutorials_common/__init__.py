@@ -10,13 +10,9 @@ checks that importing any of them loads no rclpy):
 - ``lesson_scripts``: the lessons' console scripts: the DDS defaults, then the lesson's main
 - ``cli``: argument types and exit codes shared by the command-line programs
 - ``bounded``: reading files, pipes and YAML from users within limits
-- ``ctrl_c``: a Ctrl-C while a command starts ends it quietly
+- ``ctrl_c``: how the tools end on Ctrl-C
 
 ``ros_tutorials_common.ros``: what needs rclpy, the command line before ``rclpy.init``
 (``ros_args``: DDS defaults and checked ROS arguments; ``user_args``: the program's own
 arguments; ``init``, ``run_node``).
 """
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

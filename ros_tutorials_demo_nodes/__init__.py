@@ -2,7 +2,3 @@
 every half second and the server that answers, each with a parameter that turns service
 introspection off, to metadata, or to contents. They run under demo_nodes_cpp's and
 demo_nodes_py's names (`ros2 run demo_nodes_cpp introspection_service`)."""
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

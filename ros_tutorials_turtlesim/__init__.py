@@ -1,5 +1,1 @@
 """turtlesim on rclpy: the simulator (turtlesim_node), turtle_teleop_key, mimic and draw_square."""
-
-from ros_tutorials_common.ctrl_c import release as _release_ctrl_c
-
-_release_ctrl_c()  # Ctrl-C from here on ends a command quietly (see ctrl_c.py)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -130,6 +131,117 @@ def fails(*args: str, timeout: float = TIMEOUT) -> str:
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1, f"expected one error line, got:\n{result.stderr}"
     return lines[0]
+
+
+ROOT = Path(__file__).resolve().parents[1]
+_FRAME = re.compile(r'  File "(?P<file>[^"]*)", line \d+, in (?P<function>.+)$')
+
+
+def _ours(file: str) -> bool:
+    """A file of this project's packages (not of the venv's, which may sit inside it)."""
+    return file.startswith(str(ROOT)) and not file.startswith(sys.prefix)
+
+
+# How rclpy refuses to go on in the context its signal handler has shut down (a node created
+# while Ctrl-C or SIGTERM arrives, before it spins).
+ROS_SHUT_DOWN = re.compile(
+    r"RCLError: .*context (is not valid|is invalid)|NotInitializedException|"
+    r"ExternalShutdownException"
+)
+
+
+SPINNING = {"spin", "spin_once", "spin_until_future_complete"}  # rclpy's: a node running
+# What Python prints between an exception and the one raised while it was handled (or from it).
+CHAINED = ("During handling of the above exception", "The above exception was the direct cause")
+TRACEBACK = "Traceback (most recent call last):"
+LABEL = re.compile(r"^\[[^\]]*\] ")  # the launcher's "[name] " before a child's lines
+
+
+def _after_blanks(lines: list[str], at: int) -> int:
+    while at < len(lines) and not lines[at].strip():
+        at += 1
+    return at
+
+
+def error_reports(output: str) -> list[list[list[str]]]:
+    """Python's reports of uncaught (or unraisable) errors in a program's output: each a list of
+    blocks (a traceback's lines and the exception's line, or the exception's line alone), one
+    per exception of a chain ("During handling of the above exception ...")."""
+    programs: dict[str, list[str]] = {}  # the launcher's children's lines interleave
+    for line in output.splitlines():
+        label = LABEL.match(line)
+        programs.setdefault(label[0] if label else "", []).append(
+            line[label.end() if label else 0 :]
+        )
+    return [report for lines in programs.values() for report in _reports_in(lines)]
+
+
+def _reports_in(lines: list[str]) -> list[list[list[str]]]:
+    in_pth = False  # site's report of a failed .pth line is indented by two spaces
+    for number, line in enumerate(lines):
+        if line.startswith("Error processing line ") or line == "Remainder of file ignored":
+            in_pth = line.startswith("Error")
+        elif in_pth:
+            lines[number] = line.removeprefix("  ")
+    reports, at = [], 0
+    while at < len(lines):
+        follows = _after_blanks(lines, at + 1)
+        chained = follows < len(lines) and lines[follows].startswith(CHAINED)
+        alone = lines[at].rstrip(": ") == "KeyboardInterrupt"  # raised outside Python code
+        if not (lines[at].startswith(TRACEBACK) or (lines[at][:1].strip() and chained) or alone):
+            at += 1
+            continue
+        blocks = []
+        while True:
+            block = [lines[at]]
+            if lines[at].startswith(TRACEBACK):
+                while at + 1 < len(lines):  # frames, their source, blank lines; then the error
+                    at += 1
+                    block.append(lines[at])
+                    if lines[at][:1].strip():
+                        break
+            blocks.append(block)
+            follows = _after_blanks(lines, at + 1)
+            if follows < len(lines) and lines[follows].startswith(CHAINED):
+                at = _after_blanks(lines, follows + 1)
+                continue
+            at += 1
+            break
+        reports.append(blocks)
+    return reports
+
+
+def tracebacks_after_start(output: str, node: bool = False) -> list[str]:
+    """Python's error reports in a program's output other than its own for a Ctrl-C while the
+    program starts: a Ctrl-C before the program's first function runs (while site reads the
+    .pth files or modules import) prints one, as for any Python program (docs/dev/limits.md).
+    Such a report has a KeyboardInterrupt in its chain (alone, or as the cause of the error a
+    C extension then raised: "ImportError: initialization failed") and no frame in a function
+    of this project (a console script's or a package's, outside module level). A child's lines
+    may carry the launcher's "[name] " label.
+
+    NODE (a lesson node, as ros2/examples writes one: rclpy.init and the node's creation come
+    before its try): its start lasts until it spins, so a KeyboardInterrupt through its main
+    is accepted there, and so is rclpy's refusal to create the node in the context its signal
+    handler has just shut down (ROS_SHUT_DOWN); not once a frame is in rclpy's spin.
+    """
+    found = []
+    for blocks in error_reports(output):
+        errors = [block[-1] for block in blocks]
+        frames = [match for block in blocks for match in map(_FRAME.match, block) if match]
+        if node:
+            started = not any(frame["function"] in SPINNING for frame in frames)
+        else:
+            started = not any(
+                frame["function"] != "<module>"
+                and (_ours(frame["file"]) or frame["file"].startswith(str(BIN)))
+                for frame in frames
+            )
+        interrupted = any(error.rstrip(": ") == "KeyboardInterrupt" for error in errors)
+        refused = node and any(ROS_SHUT_DOWN.search(error) for error in errors)
+        if not (started and (interrupted or refused)):
+            found.append("\n".join(line for block in blocks for line in block))
+    return found
 
 
 def ready(server: NodeProcess) -> NodeProcess:

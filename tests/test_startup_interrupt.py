@@ -1,4 +1,15 @@
-"""Ctrl-C at any instant of a command's start: no traceback, no "Fatal Python error".
+"""Ctrl-C at any instant of a command's start: it ends, and prints no traceback once it runs.
+
+Before a program's first function runs (Python's start, the .pth files, the imports), a Ctrl-C
+gets Python's own answer, as for any Python program (docs/dev/limits.md, "Ctrl-C at any
+moment"): a KeyboardInterrupt traceback (status 130), "Fatal Python error: init_import_site"
+and one (status 1, while site reads the .pth files), or an error it caused ("ImportError:
+initialization failed" from rclpy's C extension, status 1); rarely Python loses it (its
+"Exception ignored" lines, or a Ctrl-C that reached the interpreter the ROS wheels' bootstrapper
+replaces), and a second Ctrl-C stops the program. A lesson node's start lasts until it spins
+(rclpy.init and its node's creation come before its try, as in ros2/examples): a traceback
+through its main, or rclpy's refusal to create its node in the context its Ctrl-C handler
+shut down. These are accepted, and nothing else (helpers.tracebacks_after_start).
 
 A sweep starts a command as a user's shell would (without the ROS wheels' bootstrap done, so
 the interpreter re-executes itself as it does for a user), sends SIGINT after a delay (to the
@@ -12,6 +23,7 @@ them (the runs go in parallel, which loads the machine further). See ros_tutoria
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -19,12 +31,10 @@ import sysconfig
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from fnmatch import fnmatch
 from pathlib import Path
 
 import pytest
-import tomllib
-from helpers import TIMEOUT
+from helpers import ROS_SHUT_DOWN, TIMEOUT, error_reports, tracebacks_after_start
 from rclpy.context import Context
 
 from ros_tutorials_common import ctrl_c
@@ -35,6 +45,24 @@ DELAYS = (0.0, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.25, 0.4, 0.6, 0.9, 1.
 # Killed by SIGINT (a shell shows 130), 130 from the program itself, or 0 from a program
 # for which Ctrl-C is the normal end (a node, once running).
 STOPPED = {-signal.SIGINT, 128 + signal.SIGINT, 0}
+LOST_GRACE = 2.0  # seconds a program whose Ctrl-C Python lost has to end anyway
+LOST_WAIT = 10.0  # seconds before a Ctrl-C sent before the ROS wheels' re-exec is pressed again
+# Python's words for a KeyboardInterrupt while it initialises (its streams, site): status 1.
+INIT_INTERRUPTED = re.compile(r"^Fatal Python error: init_\w+: .*\nPython runtime state: ", re.M)
+
+
+def stopped_well(status: int, err: str, node: bool = False) -> bool:
+    """How a command may end after Ctrl-C (see the module's docstring): killed by SIGINT or
+    its own 0 or 130, or status 1 where Python's report of a Ctrl-C while starting ended it
+    (for NODE, a lesson node or its launch, also rclpy's refusal to create the node in the
+    context its signal handler has shut down: helpers.ROS_SHUT_DOWN)."""
+    init = INIT_INTERRUPTED.search(err)  # Python ends there: what follows is its own report
+    if err.count("Fatal Python error") != (1 if init else 0):
+        return False
+    before = err[: init.start()] if init else err
+    if tracebacks_after_start(before, node):
+        return False
+    return status in STOPPED or (status == 1 and bool(init or error_reports(before)))
 
 
 def user_env() -> dict[str, str]:
@@ -44,8 +72,53 @@ def user_env() -> dict[str, str]:
     return env
 
 
+def lost_while_starting(err: str) -> bool:
+    """Whether Python lost the Ctrl-C while the program started, and said so: raised in a
+    callback Python runs for itself during an import (a module lock's weakref callback), it
+    reports "Exception ignored in: ..."; raised while site runs a .pth file's line, site
+    reports "Error processing line 1 of ....pth" and goes on (docs/dev/limits.md)."""
+    lost = re.search(
+        r"^(Exception ignored in: |Error processing line \d+ of ).*\n(?:.*\n)*? *KeyboardInterrupt",
+        err,
+        re.M,
+    )
+    return bool(lost) and not tracebacks_after_start(err)
+
+
+def _text(written: bytearray) -> str:
+    return written.decode(errors="replace")
+
+
+def _before_reexec(pid: int) -> bool:
+    """Whether the process is still the interpreter that the ROS wheels' bootstrapper (a .pth
+    file) replaces by a new one with the libraries' path: a Ctrl-C whose handler Python has
+    not run yet when it calls execve is lost (docs/dev/limits.md)."""
+    try:
+        return b"_ROS_WHEELS_BOOTSTRAP_COMPLETE=" not in Path(f"/proc/{pid}/environ").read_bytes()
+    except OSError:  # ended already
+        return False
+
+
+def _ends(process: subprocess.Popen, written: bytearray, timeout: float) -> bool:
+    """Whether the process ends within timeout seconds; False sooner (LOST_GRACE) once its
+    output says Python lost the Ctrl-C while starting."""
+    deadline = time.monotonic() + timeout
+    while process.poll() is None:
+        if lost_while_starting(_text(written)):
+            try:
+                process.wait(LOST_GRACE)
+            except subprocess.TimeoutExpired:
+                return False
+        elif time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
 def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int, str]:
-    """Start command, SIGINT it after delay seconds, wait for its end: (status, stderr)."""
+    """Start command, SIGINT it after delay seconds, wait for its end: (status, stderr). A
+    Ctrl-C that Python lost while starting (its "Exception ignored" lines, or before the ROS
+    wheels' re-exec) is pressed again, as a user would."""
     process = subprocess.Popen(
         command,
         stdin=subprocess.DEVNULL,
@@ -54,129 +127,115 @@ def interrupt_after(command: list[str], delay: float, group: bool) -> tuple[int,
         env=user_env(),
         start_new_session=True,  # its own process group, as a terminal's foreground job
     )
+    written = bytearray()
+
+    def read() -> None:
+        for chunk in iter(lambda: process.stderr.read1(), b""):
+            written.extend(chunk)
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
     time.sleep(delay)  # where in the start the Ctrl-C falls; nothing depends on the exact time
-    (os.killpg if group else os.kill)(process.pid, signal.SIGINT)
+    press = os.killpg if group else os.kill
+    before_reexec = _before_reexec(process.pid)
+    press(process.pid, signal.SIGINT)
+    ended = _ends(process, written, LOST_WAIT if before_reexec else TIMEOUT)
+    if not ended and (before_reexec or lost_while_starting(_text(written))):
+        press(process.pid, signal.SIGINT)
+        ended = _ends(process, written, TIMEOUT)
+    if ended:
+        reader.join(TIMEOUT)
+        return process.returncode, _text(written)
+    # Whether the Ctrl-C is still pending (SigPnd/ShdPnd bit 2) and blocked (SigBlk), and
+    # (SIGABRT: Python's fault handler, PYTHONFAULTHANDLER in conftest) where each thread was.
     try:
-        _, err = process.communicate(timeout=TIMEOUT)
+        status = Path(f"/proc/{process.pid}/status").read_text().splitlines()
+    except OSError:
+        status = []
+    masks = [line for line in status if line.startswith(("SigPnd", "ShdPnd", "SigBlk"))]
+    os.killpg(process.pid, signal.SIGABRT)
+    try:
+        process.wait(5)
     except subprocess.TimeoutExpired:
-        # Whether the Ctrl-C is still pending (SigPnd/ShdPnd bit 2) and blocked (SigBlk), and
-        # (SIGABRT: Python's fault handler, PYTHONFAULTHANDLER in conftest) where each thread was.
-        try:
-            status = Path(f"/proc/{process.pid}/status").read_text().splitlines()
-        except OSError:
-            status = []
-        masks = [line for line in status if line.startswith(("SigPnd", "ShdPnd", "SigBlk"))]
-        os.killpg(process.pid, signal.SIGABRT)
-        try:
-            _, err = process.communicate(timeout=5)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            _, err = process.communicate()
-        pytest.fail(
-            f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; "
-            + " ".join(masks)
-            + "; where it was:\n"
-            + err.decode(errors="replace")[-4000:]
-        )
-    return process.returncode, err.decode(errors="replace")
+        os.killpg(process.pid, signal.SIGKILL)
+    reader.join(5)
+    text = _text(written)
+    pytest.fail(
+        f"{command}: still running {TIMEOUT:.0f} s after Ctrl-C at {delay} s; "
+        + " ".join(masks)
+        + "; where it was:\n"
+        + (text if len(text) < 6000 else f"{text[:3000]}\n...\n{text[-3000:]}")
+    )
 
 
+# name: (command line, SIGINT to its process group (a terminal's Ctrl-C), runs lesson nodes)
 COMMANDS = {
-    "rostopic echo (a tool, ROS 1 spelling)": ([str(BIN / "rostopic"), "echo", "/chatter"], False),
-    "talker (a lesson node)": ([str(BIN / "talker")], False),
+    "rostopic echo (a tool, ROS 1 spelling)": (
+        [str(BIN / "rostopic"), "echo", "/chatter"],
+        False,
+        False,
+    ),
+    "talker (a lesson node)": ([str(BIN / "talker")], False, True),
     "rosrun add_two_ints_server (exec)": (
         [str(BIN / "rosrun"), "ros_tutorials_service", "add_two_ints_server"],
         False,
+        True,
     ),
     "roslaunch union.launch (the launcher and its children)": (
         [str(BIN / "roslaunch"), "ros_tutorials_topic", "union.launch"],
+        True,
         True,
     ),
 }
 
 
 @pytest.mark.parametrize("name", COMMANDS)
-def test_ctrl_c_at_any_instant_of_the_start_prints_no_traceback(name: str, ros_domain: int):
-    command, group = COMMANDS[name]
+def test_ctrl_c_at_any_instant_of_the_start_ends_it_with_no_traceback_once_running(
+    name: str, ros_domain: int
+):
+    command, group, node = COMMANDS[name]
     with ThreadPoolExecutor(max_workers=4) as pool:
         runs = list(pool.map(lambda delay: interrupt_after(command, delay, group), DELAYS))
     bad = [
         f"Ctrl-C after {delay} s: status {status}\n{err}"
         for delay, (status, err) in zip(DELAYS, runs, strict=True)
-        if status not in STOPPED or "Traceback" in err or "Fatal Python error" in err
+        if not stopped_well(status, err, node)
     ]
     assert not bad, f"{len(bad)} of {len(DELAYS)} runs of {name}:\n" + "\n".join(bad[:2])
 
 
-def test_other_programs_of_the_environment_keep_pythons_ctrl_c(ros_domain: int):
-    """Only this project's commands hold SIGINT: Python's own KeyboardInterrupt elsewhere."""
-    code = "import time; print('ready', flush=True); time.sleep(60)"
-    process = subprocess.Popen(
-        [sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=user_env()
-    )
-    assert process.stdout.readline() == b"ready\n"
-    blocked = Path(f"/proc/{process.pid}/status").read_text().split("SigBlk:")[1].split()[0]
-    assert not int(blocked, 16) & (1 << (signal.SIGINT - 1)), "SIGINT left blocked"
-    process.send_signal(signal.SIGINT)
-    _, err = process.communicate(timeout=TIMEOUT)
-    assert b"KeyboardInterrupt" in err and process.returncode == -signal.SIGINT
+def test_no_code_runs_at_every_start_of_python_and_console_scripts_are_pips():
+    """Ctrl-C needs nothing of the environment: no .pth file of this project, and the console
+    scripts start Python directly."""
+    site_packages = Path(sysconfig.get_paths()["purelib"])
+    assert not list(site_packages.glob("*ros_tutorials_ctrl_c*"))
+    for name in ("ros2", "rostopic", "roslaunch", "talker"):
+        first = (BIN / name).read_text().splitlines()[0]
+        assert first == f"#!{sys.executable}", first
 
 
-def test_which_command_lines_are_this_projects():
-    python = sys.executable
-    assert ctrl_c.is_project_command([python, "-m", "launcher", "union.launch"])
-    assert ctrl_c.is_project_command([python, "-X", "dev", "-mros2cmd", "topic", "list"])
-    assert ctrl_c.is_project_command([python, str(ROOT / "ros_tutorials_topic" / "talker.py")])
-    assert ctrl_c.is_project_command([python, str(BIN / "rostopic"), "list"])
-    assert not ctrl_c.is_project_command([python, "-m", "pytest"])
-    assert not ctrl_c.is_project_command([python, "-c", "import launcher"])
-    assert not ctrl_c.is_project_command([python, str(BIN / "pip"), "list"])
-    assert not ctrl_c.is_project_command([python])
-    assert ctrl_c.starts_project_command([python, "-m", "ros_tutorials_topic.publisher"])
-    assert ctrl_c.starts_project_command([str(BIN / "talker")])
-    assert not ctrl_c.starts_project_command(["/bin/sleep", "1"])
-
-
-def test_every_package_releases_ctrl_c_and_make_setup_installed_the_hold():
-    """A package whose __init__ did not release SIGINT would leave its commands deaf to it."""
-    patterns = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"][
-        "packages"
-    ]["find"]["include"]
-    found = {path.parent.name for path in ROOT.glob("*/__init__.py")}
-    assert {name for name in found if any(fnmatch(name, p) for p in patterns)} == ctrl_c.PACKAGES
-    for name in ctrl_c.PACKAGES:
-        assert "_release_ctrl_c()" in (ROOT / name / "__init__.py").read_text(), name
-    pth = Path(sysconfig.get_paths()["purelib"]) / ctrl_c.PTH_NAME
-    assert pth.read_text() == ctrl_c.pth_line()
-
-
-def test_errors_a_ctrl_c_causes_in_ros_end_quietly_and_others_do_not():
-    """What ROS raises once rclpy's signal handler has shut the context down counts as the
-    Ctrl-C (no traceback, death by SIGINT); other ROS errors keep their traceback."""
-    rcl_error = type("RCLError", (RuntimeError,), {})
-    stopped = [
-        "failed to shutdown: rcl_shutdown already called on the given context, at init.c:333",
-        "Failed to create publisher: the given context is not valid",
-    ]
-    for text in stopped:
-        assert ctrl_c.interrupted(rcl_error(text)), text
-    assert not ctrl_c.interrupted(rcl_error("failed to create subscription: invalid topic name"))
-    assert not ctrl_c.interrupted(RuntimeError("rcl_shutdown already called"))  # not ROS's
-
-
-def test_a_lost_ctrl_c_is_not_delivered_again_where_ros_is_down_already(monkeypatch):
-    """In a node whose Ctrl-C rclpy's handler answered by shutting ROS down, the program ends
-    through ExternalShutdownException; a KeyboardInterrupt delivered again would only come
-    after its except clause and end it by SIGINT instead of exit status 0."""
-    delivered = []
-    monkeypatch.setattr(ctrl_c, "_deliver_again", lambda: delivered.append(True))
-    lost = type("Unraisable", (), {"exc_value": KeyboardInterrupt(), "object": None})()
-    monkeypatch.setattr(ctrl_c, "ros_stopped", True)
-    ctrl_c._quiet_unraisablehook(lost)
-    assert delivered == []
-    monkeypatch.setattr(ctrl_c, "ros_stopped", False)  # a tool: only the KeyboardInterrupt
-    ctrl_c._quiet_unraisablehook(lost)
-    assert delivered == [True]
+def test_make_setup_removes_what_an_older_set_up_installed_for_ctrl_c(tmp_path: Path):
+    """An older clone's venv: its .pth file goes and its console scripts get pip's line back
+    (tools/remove_ctrl_c_hold.py, run by `make setup`); other files stay as they were."""
+    site_packages = tmp_path / "lib" / "python3.11" / "site-packages"
+    site_packages.mkdir(parents=True)
+    (site_packages / "00_ros_tutorials_ctrl_c.pth").write_text("import _signal\n")
+    (site_packages / "other.pth").write_text("import other\n")
+    (tmp_path / "bin").mkdir()
+    held = tmp_path / "bin" / "rostopic"
+    body = "# -*- coding: utf-8 -*-\nfrom ros2cmd.ros1 import rostopic\n"
+    held.write_text(f"#!/usr/bin/env -S --block-signal=INT {sys.executable}\n{body}")
+    plain = tmp_path / "bin" / "pip"
+    plain.write_text(f"#!{sys.executable}\nimport sys\n")
+    (tmp_path / "bin" / "python").symlink_to(sys.executable)
+    tool = [sys.executable, "-S", str(ROOT / "tools" / "remove_ctrl_c_hold.py"), str(tmp_path)]
+    said = subprocess.run(tool, capture_output=True, text=True, check=True).stdout
+    assert "removed" in said and "1 console scripts" in said, said
+    assert sorted(p.name for p in site_packages.iterdir()) == ["other.pth"]
+    assert held.read_text() == f"#!{sys.executable}\n{body}"
+    assert plain.read_text() == f"#!{sys.executable}\nimport sys\n"
+    again = subprocess.run(tool, capture_output=True, text=True, check=True).stdout
+    assert again == "", "a second run finds nothing to undo"
 
 
 def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
@@ -187,14 +246,14 @@ def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
         "Unable to convert call argument '0' to Python object (#define "
         "PYBIND11_DETAILED_ERROR_MESSAGES or compile in debug mode for details)"
     )
-    monkeypatch.setattr(ctrl_c, "pressed", False)
+    monkeypatch.setattr(ctrl_c, "presses", 0)
     assert not ctrl_c.interrupted(converted)
-    monkeypatch.setattr(ctrl_c, "pressed", True)
+    monkeypatch.setattr(ctrl_c, "presses", 1)
     assert ctrl_c.interrupted(converted)
     assert not ctrl_c.interrupted(RuntimeError("another error"))
 
 
-def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are():
+def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are(monkeypatch):
     """rclpy's Future.__del__ (and the executor's) fails on an object whose __init__ a Ctrl-C
     cut short ("Exception ignored in: <function Future.__del__ ...>"): said nothing of; other
     unraisable errors are."""
@@ -214,19 +273,13 @@ def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are
     def unraisable(exc_value, where):
         return type("Unraisable", (), {"exc_value": exc_value, "object": where})()
 
-    previous = ctrl_c._previous_unraisablehook
-    ctrl_c._previous_unraisablehook = seen.append
-    try:
-        ctrl_c._quiet_unraisablehook(unraisable(failed.value, Future.__del__))
-        ctrl_c._quiet_unraisablehook(
-            unraisable(executor_failed.value, SingleThreadedExecutor.__del__)
-        )
-        assert seen == []
-        other = unraisable(AttributeError("x"), test_which_command_lines_are_this_projects)
-        ctrl_c._quiet_unraisablehook(other)
-        assert seen == [other]
-    finally:
-        ctrl_c._previous_unraisablehook = previous
+    monkeypatch.setattr(sys, "__unraisablehook__", seen.append)  # Python's, which prints
+    ctrl_c._unraisable(unraisable(failed.value, Future.__del__))
+    ctrl_c._unraisable(unraisable(executor_failed.value, SingleThreadedExecutor.__del__))
+    assert seen == []
+    other = unraisable(AttributeError("x"), stopped_well)
+    ctrl_c._unraisable(other)
+    assert seen == [other]
 
 
 def test_keyboard_interrupt_waits_until_rclpy_has_shut_ros_down(context):
@@ -272,13 +325,13 @@ def test_a_node_sees_ros_down_when_ctrl_c_reaches_it(node_process):
 
 def test_a_ctrl_c_that_lands_in_a_del_is_not_lost(node_process):
     """Python cannot raise a KeyboardInterrupt out of a __del__ (rclpy's Future and Task have
-    one; the executor drops one per callback): it reports it as unraisable and runs on. This
-    project's hook delivers that Ctrl-C again, so the program stops (`rostopic echo` ran on
-    for 30 s after a Ctrl-C under load). Here the Ctrl-C lands in a __del__ by construction."""
+    one; the executor drops one per callback): it reports it as unraisable and runs on. The
+    tools' hook (ctrl_c.count_presses) delivers that Ctrl-C again, so the tool stops (`rostopic
+    echo` ran on for 30 s after a Ctrl-C under load). Here the Ctrl-C lands in a __del__."""
     code = (
         "import os, signal, sys, time\n"
         "from ros_tutorials_common import ctrl_c\n"
-        "sys.unraisablehook = ctrl_c._quiet_unraisablehook  # as release() sets it\n"
+        "ctrl_c.count_presses()\n"
         "class Collected:\n"
         "    pressed = False\n"
         "    def __del__(self):\n"
@@ -300,8 +353,11 @@ def test_a_ctrl_c_that_lands_in_a_del_is_not_lost(node_process):
     assert program.lines == ["stopped by Ctrl-C"], program.output
 
 
-def test_sigterm_at_any_instant_of_a_nodes_start_ends_it_quietly(ros_domain: int):
-    """A talker sent SIGTERM as it starts ends without a traceback or a hang."""
+def test_sigterm_at_any_instant_of_a_nodes_start_ends_it_by_sigterm_or_normally(ros_domain: int):
+    """A talker sent SIGTERM as it started ends by SIGTERM, normally, or by rclpy's error for
+    what it did in the context rclpy's SIGTERM handler had just shut down in its own thread
+    (create the node, or publish from its timer: a plain rclpy node's race, status 1): never
+    by SIGINT as after a Ctrl-C (once seen in 5 of 20 runs), never by another error."""
 
     def terminate_after(delay: float) -> tuple[int, str]:
         process = subprocess.Popen(
@@ -322,12 +378,17 @@ def test_sigterm_at_any_instant_of_a_nodes_start_ends_it_quietly(ros_domain: int
 
     with ThreadPoolExecutor(max_workers=4) as pool:
         runs = list(pool.map(terminate_after, DELAYS))
-    # A lesson is plain rclpy: a SIGTERM while it creates its node (rclpy's handler shut ROS
-    # down under it) ends it as ctrl_c.py ends a Ctrl-C at that instant, by SIGINT, quietly.
-    ended = {0, -signal.SIGTERM, 128 + signal.SIGTERM, -signal.SIGINT}
+    ended = {0, -signal.SIGTERM, 128 + signal.SIGTERM}
+
+    def ended_well(status: int, err: str) -> bool:
+        if status == 1:  # rclpy refused to go on in the context SIGTERM shut down
+            reports = error_reports(err)
+            return bool(reports) and all(ROS_SHUT_DOWN.search(r[-1][-1]) for r in reports)
+        return status in ended and "Traceback" not in err
+
     bad = [
         f"SIGTERM after {delay} s: status {status}\n{err}"
         for delay, (status, err) in zip(DELAYS, runs, strict=True)
-        if status not in ended or "Traceback" in err or "Fatal Python error" in err
+        if not ended_well(status, err)
     ]
     assert not bad, f"{len(bad)} of {len(DELAYS)} runs:\n" + "\n".join(bad[:2])

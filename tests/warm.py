@@ -173,11 +173,6 @@ def become(request: dict, fds: list[int], imported: dict[str, str]) -> None:
     random.seed()  # every child would otherwise draw the same numbers
     argv = request["argv"]
     sys.orig_argv = [sys.executable, *argv]
-    # What the first import of this project does in a command of its own (not the server):
-    # an uncaught Ctrl-C then ends it quietly.
-    from ros_tutorials_common import ctrl_c
-
-    ctrl_c.release()
 
 
 def run(argv: Sequence[str]) -> None:

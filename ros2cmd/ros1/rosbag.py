@@ -24,6 +24,7 @@ from ros2cmd.bag.options import (
 )
 from ros2cmd.errors import ToolError
 from ros_tutorials_common.cli import positive_rate, stdout_closed
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 def _record_arguments(parser: argparse.ArgumentParser) -> None:
@@ -107,6 +108,7 @@ def rosbag_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rosbag(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] in (["info"], ["reindex"]):  # offline: no rclpy to load

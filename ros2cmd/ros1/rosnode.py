@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from ros2cmd import node
 from ros2cmd.ros1 import tool
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 def rosnode_parser() -> argparse.ArgumentParser:
@@ -22,5 +23,6 @@ def rosnode_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rosnode(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosnode_parser(), argv)

@@ -22,6 +22,7 @@ from ros2cmd.graph import Graph
 from ros2cmd.messages import parse_yaml
 from ros2cmd.ros1 import tool
 from ros_tutorials_common import packages
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 # How many running nodes an error names.
 NODES_NAMED = 4
@@ -219,5 +220,6 @@ def rosparam_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rosparam(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosparam_parser(), argv)

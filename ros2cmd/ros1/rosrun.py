@@ -31,11 +31,13 @@ from ros2cmd.errors import ToolError
 from ros2cmd.run import run
 from ros_tutorials_common import packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
 
 
 @quiet_on_closed_pipe
+@exits_130_on_ctrl_c  # the console script's entry
 def rosrun(argv: Sequence[str] | None = None) -> int:
     """The `rosrun` command (console script)."""
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -14,6 +14,7 @@ from ros2cmd import service
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.ros1 import tool
 from ros2cmd.typenames import load_type
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 def rosservice_parser() -> argparse.ArgumentParser:
@@ -72,5 +73,6 @@ def _service_info(graph: Graph, name: str) -> None:
     print(f"Args: {' '.join(fields)}")
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rosservice(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosservice_parser(), argv)

@@ -15,6 +15,7 @@ from ros2cmd import topic
 from ros2cmd.graph import Graph
 from ros2cmd.ros1 import tool
 from ros_tutorials_common.cli import positive_int, positive_rate
+from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 def rostopic_parser() -> argparse.ArgumentParser:
@@ -70,5 +71,6 @@ def _pub(graph: Graph, args: argparse.Namespace) -> None:
         topic.pub(graph, args.topic, args.type, values, rate=None, latch=True)
 
 
+@exits_130_on_ctrl_c  # the console script's entry
 def rostopic(argv: Sequence[str] | None = None) -> int:
     return tool.run(rostopic_parser(), argv)
