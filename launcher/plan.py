@@ -132,6 +132,30 @@ def _label(node: NodeDecl) -> str:
     return f"{node.namespace.rstrip('/')}/{base}".lstrip("/")
 
 
+# The --ros-args options that take a NAME:=VALUE rule (rcl's arguments.c), and what one is.
+_REMAP, _PARAM = "a remap is FROM:=TO", "a parameter is NAME:=VALUE"
+_RULE_OPTIONS = {"-r": _REMAP, "--remap": _REMAP, "-p": _PARAM, "--param": _PARAM}
+
+
+def _check_ros_args(args: list[str], where: str) -> None:
+    """A node's args with a rule rcl cannot parse would end the node in rclpy.init's
+    traceback: say it here, in one line, before anything starts."""
+    in_ros_args = False
+    for position, word in enumerate(args):
+        if word == "--ros-args":
+            in_ros_args = True
+        elif word == "--":
+            in_ros_args = False
+        elif in_ros_args and word in _RULE_OPTIONS:
+            rule = args[position + 1] if position + 1 < len(args) else ""
+            name, separator, _ = rule.partition(":=")
+            if not separator or not name:
+                shown = f"{word} {rule}".strip()
+                raise LaunchError(
+                    f"{where}: args: invalid ROS argument '{shown}': {_RULE_OPTIONS[word]}"
+                )
+
+
 def make_plan(
     launch: Launch,
     screen: bool = False,
@@ -149,6 +173,7 @@ def make_plan(
             command = command_for(node.package or "", node.executable or "", node.where)
             command += node.args + ros_arguments(node)
         command = node.launch_prefix + command
+        _check_ros_args(node.args, node.where)
         _check_program(command[0], node.where)
         label = _label(node)
         full_name = None  # the node's own name, whatever its process is called (exec_name)

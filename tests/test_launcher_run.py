@@ -13,7 +13,7 @@ import time
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT, NodeProcess, spin_until
+from helpers import TIMEOUT, NodeProcess, run, spin_until
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
@@ -203,16 +203,29 @@ def test_required_node_failure_ends_the_launch_with_exit_code_1(node_process, tm
     xml = (
         "<launch>\n"
         '  <node pkg="ros_tutorials_topic" type="talker" name="talker"/>\n'
-        '  <node pkg="ros_tutorials_topic" type="listener" name="crasher" required="true"\n'
-        '        args="--ros-args -r bad"/>\n'
+        '  <node pkg="ros_tutorials_service" type="add_two_ints_client" name="crasher"\n'
+        '        required="true" args="one two"/>\n'
         "</launch>\n"
     )
     launcher = node_process("-m", "launcher", launch_file(tmp_path, xml, "test.launch"))
     assert launcher.wait() == 1
     output = launcher.output
-    assert "[launcher] crasher died with exit code 1; it is required, so the launch ends" in output
-    assert "[crasher] error: invalid ROS arguments" in output
+    assert "[launcher] crasher died with exit code 2; it is required, so the launch ends" in output
+    assert "[crasher] usage: add_two_ints_client" in output
     assert_all_gone(list(started_pids(launcher.lines).values()))
+
+
+def test_args_that_rcl_cannot_parse_are_refused_before_anything_starts(tmp_path):
+    xml = (
+        '<launch>\n  <node pkg="ros_tutorials_topic" type="talker" name="talker"/>\n'
+        '  <node pkg="ros_tutorials_topic" type="listener" name="l" args="--ros-args -r bad"/>\n'
+        "</launch>\n"
+    )
+    result = run("roslaunch", launch_file(tmp_path, xml, "t.launch"))
+    assert result.returncode == 1 and not result.stdout, result
+    assert result.stderr.endswith(
+        "t.launch:3: args: invalid ROS argument '-r bad': a remap is FROM:=TO\n"
+    ), result.stderr
 
 
 def test_on_exit_shutdown_after_a_clean_exit_ends_with_code_0(node_process, tmp_path):
