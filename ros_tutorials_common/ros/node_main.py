@@ -35,7 +35,6 @@ from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 from rclpy.utilities import remove_ros_args
 
-from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 # The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
@@ -67,28 +66,7 @@ def ros_args(argv: Sequence[str] | None = None) -> list[str]:
         raise SystemExit(f"error: {problem}")
     apply_dds_defaults()
     _CtrlCOnceRosIsDown.install()
-    _note_sigterm()
     return argv
-
-
-def _note_sigterm() -> None:
-    """Remember a SIGTERM (ctrl_c.terminated), so that a program it stops while starting
-    (rclpy's handler shut ROS down under a node being created: an RCLError) ends by SIGTERM,
-    not by SIGINT as after a Ctrl-C. rclpy.init puts its own handler in front and calls this
-    one after it; where rclpy does not handle SIGTERM, this ends the program as before."""
-    if threading.current_thread() is not threading.main_thread():
-        return
-    if signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
-        return  # the program's own
-
-    def noted(signum: int, frame: object) -> None:
-        ctrl_c.terminated = True
-        options = get_current_signal_handlers_options()
-        if options not in (SignalHandlerOptions.SIGTERM, SignalHandlerOptions.ALL):
-            signal.signal(signal.SIGTERM, signal.SIG_DFL)
-            signal.raise_signal(signal.SIGTERM)
-
-    signal.signal(signal.SIGTERM, noted)
 
 
 class _CtrlCOnceRosIsDown:
@@ -132,11 +110,7 @@ class _CtrlCOnceRosIsDown:
     def __call__(self, signum: int, frame: object) -> None:
         options = get_current_signal_handlers_options()
         if options in (SignalHandlerOptions.SIGINT, SignalHandlerOptions.ALL):
-            # ROS down: the program ends anyway (ExternalShutdownException), so a
-            # KeyboardInterrupt Python loses in a __del__ is not delivered again (ctrl_c.py),
-            # where it could only come after the program's own except and end it by SIGINT.
-            ctrl_c.ros_stopped = self.wait_until_down(self.WAIT)
-        ctrl_c.pressed = True  # what the KeyboardInterrupt may turn into is a stop too
+            self.wait_until_down(self.WAIT)
         raise KeyboardInterrupt
 
 
