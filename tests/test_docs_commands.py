@@ -442,6 +442,11 @@ def normalise(text: str, home: Path, numbers: bool) -> list[str]:
     text = re.sub(r"\.py: \d+:", ".py: N:", text)  # a warning's line in the code
     if numbers:
         text = re.sub(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", "#", text)
+    # `ros2 topic pub --once` says it waits only when the subscriber is not matched yet when it
+    # looks (ros2cli's too): whether it is depends on discovery's timing, not on the command.
+    text = re.sub(
+        r"^Waiting for at least \d+ matching subscription\(s\)\.\.\.\n", "", text, flags=re.M
+    )
     lines = [line.rstrip() for line in text.splitlines()]
     while lines and not lines[-1]:
         lines.pop()
