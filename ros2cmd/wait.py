@@ -63,6 +63,7 @@ def spin_until(
     presses = ctrl_c.presses
     while not (result := condition()):
         if ctrl_c.presses != presses:  # a Ctrl-C came and its KeyboardInterrupt was lost
+            ctrl_c.delivered = ctrl_c.presses  # delivered here: not again by the hook
             raise KeyboardInterrupt
         if interrupted is not None and interrupted():
             raise Interrupted

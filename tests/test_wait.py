@@ -56,3 +56,30 @@ def test_a_ctrl_c_before_the_wait_does_not_end_it(executor: SingleThreadedExecut
         assert wait.spin_until(executor, lambda: calls.append(1) or len(calls) > 3, timeout=30)
     finally:
         signal.signal(signal.SIGINT, previous)
+
+
+class _Unraisable:
+    """What Python hands sys.unraisablehook for a KeyboardInterrupt raised in a __del__."""
+
+    def __init__(self) -> None:
+        self.exc_type, self.exc_value = KeyboardInterrupt, KeyboardInterrupt()
+        self.exc_traceback, self.err_msg, self.object = None, None, None
+
+
+def test_a_lost_ctrl_c_is_delivered_again_once_not_twice(monkeypatch):
+    """A press lost in a __del__ that the wait loop has already delivered (its count) is not
+    delivered a second time by the hook: a running echo once ended 0, then 130."""
+    previous = signal.getsignal(signal.SIGINT)
+    monkeypatch.setattr(sys, "unraisablehook", sys.unraisablehook)
+    ctrl_c.count_presses()
+    try:
+        monkeypatch.setattr(ctrl_c, "presses", ctrl_c.presses + 1)  # the press, counted
+        monkeypatch.setattr(ctrl_c, "delivered", ctrl_c.presses)  # and delivered by the wait
+        ctrl_c._unraisable(_Unraisable())
+        time.sleep(0.5)  # the hook's redelivery would come 0.01 s later: nothing may come
+        monkeypatch.setattr(ctrl_c, "presses", ctrl_c.presses + 1)  # a press nobody delivered
+        ctrl_c._unraisable(_Unraisable())
+        with pytest.raises(KeyboardInterrupt):
+            time.sleep(5)  # the hook delivers this one again
+    finally:
+        signal.signal(signal.SIGINT, previous)
