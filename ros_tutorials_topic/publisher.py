@@ -42,6 +42,9 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
+    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
+        if rclpy.ok():
+            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

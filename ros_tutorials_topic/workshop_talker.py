@@ -30,6 +30,9 @@ def main(args=None):
         rclpy.spin(node)  # the seed's `while not rospy.is_shutdown()` loop, run by the timer
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C: the seed's `except rospy.ROSInterruptException: pass`
+    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
+        if rclpy.ok():
+            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()
