@@ -12,6 +12,7 @@ Each prints one JSON line on stdout when done ("ready" lines before that).
 from __future__ import annotations
 
 import json
+import os
 import signal
 import sys
 import time
@@ -137,15 +138,18 @@ MANY_TOPIC = "/bench_many_{}"
 MANY_SUBSCRIBERS = 2  # the recorder and the bare subscriber, in the same run
 
 
-def publish_many(topics: int, seconds: float) -> dict:
-    """TOPICS topics at 1 kHz each (a burst of one message per topic every millisecond)."""
-    node = Node("bag_bench_many_publisher")
+def publish_many(topics: int, seconds: float, part: int = 0, parts: int = 1) -> dict:
+    """TOPICS topics at 1 kHz each (a burst of one message per topic every millisecond); with
+    PARTS processes, this one publishes every PARTS-th topic from PART on."""
+    node = Node(f"bag_bench_many_publisher_{part}")
     publishers = [
-        node.create_publisher(MsgTutorial, MANY_TOPIC.format(i), QOS) for i in range(topics)
+        node.create_publisher(MsgTutorial, MANY_TOPIC.format(i), QOS)
+        for i in range(part, topics, parts)
     ]
     print("ready", flush=True)
     deadline = time.monotonic() + 120
-    while min(p.get_subscription_count() for p in publishers) < MANY_SUBSCRIBERS:
+    subscribers = int(os.environ.get("BENCH_SUBSCRIBERS", MANY_SUBSCRIBERS))
+    while min(p.get_subscription_count() for p in publishers) < subscribers:
         if time.monotonic() > deadline:
             raise SystemExit("not every topic had its subscribers within 120 s")
         time.sleep(0.01)
@@ -159,7 +163,7 @@ def publish_many(topics: int, seconds: float) -> dict:
         msg.data = sent
         for publisher in publishers:
             publisher.publish(msg)
-        sent += topics
+        sent += len(publishers)
         next_tick += 0.001
         wait = next_tick - time.monotonic()
         if wait > 0:
@@ -167,7 +171,7 @@ def publish_many(topics: int, seconds: float) -> dict:
     for publisher in publishers:
         publisher.wait_for_all_acked(Duration(seconds=30))
     elapsed = time.monotonic() - start
-    return {"sent": sent, "seconds": elapsed, "rate": sent / elapsed / topics}
+    return {"sent": sent, "seconds": elapsed, "rate": sent / elapsed / len(publishers)}
 
 
 def bare_many(topics: int) -> dict:
@@ -203,7 +207,7 @@ def main() -> None:
     elif kind == "listen":
         result = listen(int(sys.argv[2]))
     elif kind == "publish_many":
-        result = publish_many(int(sys.argv[2]), float(sys.argv[3]))
+        result = publish_many(int(sys.argv[2]), float(sys.argv[3]), *map(int, sys.argv[4:6]))
     elif kind == "bare_many":
         result = bare_many(int(sys.argv[2]))
     else:

@@ -26,6 +26,21 @@ def test_sequence_gaps_count_while_the_topic_has_one_publisher():
     assert loss.news() == []  # told once
 
 
+def test_a_batch_counts_as_its_messages_one_by_one():
+    one_by_one, batched = LossCount(), LossCount()
+    sequences = [1, 2, None, 5, 0, 6, 10, 3, 4]  # unknown numbers; a new publisher from 3
+    for sequence in sequences:
+        one_by_one.received("/a", sequence)
+    batched.received_many("/a", sequences[:4])
+    batched.received_many("/a", sequences[4:])
+    for loss in (one_by_one, batched):
+        loss.look_at_publishers(lambda topic: 1)
+        loss.received_many("/a", [5, 7])
+        loss.look_at_publishers(lambda topic: 1)
+    assert one_by_one.totals() == batched.totals() == {"/a": 1}
+    assert one_by_one.topics["/a"].last_sequence == batched.topics["/a"].last_sequence == 7
+
+
 def test_two_publishers_numbers_are_not_gaps():
     loss = LossCount()
     loss.look_at_publishers(lambda topic: 2)

@@ -26,6 +26,7 @@ import yaml
 from helpers import BIN, TIMEOUT, NodeProcess, run, spin_until
 from mcap.reader import make_reader
 from rclpy.node import Node
+from rclpy.qos import QoSProfile
 from rclpy.serialization import serialize_message
 from rosbags.rosbag2 import Reader
 from std_msgs.msg import String
@@ -33,7 +34,7 @@ from std_msgs.msg import String
 from ros2cmd.bag import definitions, offered_qos
 from ros2cmd.bag import writer as bag_writer
 from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.metadata import TopicInfo
+from ros2cmd.bag.metadata import FileInfo, TopicInfo, bag_metadata, dump_yaml, metadata_text
 from ros2cmd.bag.reader import BagReader
 from ros2cmd.bag.writer import BagWriter
 from ros2cmd.errors import ToolError
@@ -447,3 +448,46 @@ def test_metadata_of_the_wrong_shape_or_size_is_refused(tmp_path, small_bag) -> 
         folder = _with_metadata(tmp_path, small_bag, change)
         assert expected in fails("rosbag", "info", str(folder)), expected
     assert expected in fails("ros2", "bag", "play", str(folder))
+
+
+def test_metadata_text_is_the_yaml_dump_with_no_anchors() -> None:
+    """metadata.yaml's text, each topic rendered once (the recorder rewrites it every second),
+    is what dump_yaml writes; a QoS list shared by every topic is written out each time, as
+    yaml-cpp does, not as a YAML anchor and aliases."""
+    shared_qos = [offered_qos.qos_to_dict(QoSProfile(depth=10))]
+    topics = [
+        TopicInfo(f"/t{i}", "std_msgs/msg/String", shared_qos, "RIHS01_ab", message_count=i)
+        for i in range(3)
+    ] + [TopicInfo("/quiet", "std_msgs/msg/String")]
+    for custom_data in (None, {"lost": "7"}):
+        data = bag_metadata(topics, [FileInfo("b_0.mcap", 5, 10, 3)], "jazzy", custom_data)
+        text = metadata_text(data)
+        assert text == dump_yaml({"rosbag2_bagfile_information": data})
+        assert "&id" not in text and "*id" not in text
+        assert yaml.safe_load(text) == {"rosbag2_bagfile_information": data}
+    assert metadata_text(bag_metadata([], [FileInfo("b_0.mcap")])) == dump_yaml(
+        {"rosbag2_bagfile_information": bag_metadata([], [FileInfo("b_0.mcap")])}
+    )
+
+
+def test_a_batch_of_messages_is_written_as_one_at_a_time(tmp_path) -> None:
+    """write_many (the recorder's batches): every message, in order, counted per topic, the
+    bag's start and duration from the earliest and latest receive times, chunks in between."""
+    writer = BagWriter(tmp_path / "batch", chunk_size=1_000, flush_period=3600)
+    for topic in ("/a", "/b"):
+        writer.add_topic(TopicInfo(topic, "std_msgs/msg/String"), "string data\n", "ros2msg")
+    data = b"\x00\x01\x00\x00" + bytes(60)
+    writer.write_many("/a", [(data, 100 + i, i) for i in range(300)])
+    writer.write_many("/b", [(data, 50, 0), (data, 900, 1)])  # earlier and later than /a's
+    writer.write_many("/b", [])
+    writer.write("/a", data, 400, 300)
+    assert writer.topics["/a"].message_count == 301 and writer.topics["/b"].message_count == 2
+    assert (writer.file_info.starting_time, writer.file_info.duration) == (50, 850)
+    assert writer.message_count == 303
+    writer.close()
+    with BagReader(tmp_path / "batch") as reader:
+        assert reader.bag.topics["/a"].message_count == 301
+        assert (reader.bag.start, reader.bag.end) == (50, 900)
+        assert reader.bag.chunk_count > 3
+        messages = list(reader.messages())
+    assert sorted(m.log_time for m in messages if m.topic == "/a") == list(range(100, 401))

@@ -53,13 +53,20 @@ class LossCount:
 
     def received(self, topic: str, sequence: int | None) -> None:
         """A message arrived with its publication sequence number (None or 0: unknown)."""
-        if not sequence:
-            return
+        self.received_many(topic, [sequence])
+
+    def received_many(self, topic: str, sequences: list[int | None]) -> None:
+        """Messages of one topic arrived, in this order, with these sequence numbers."""
         entry = self._topic(topic)
-        last = entry.last_sequence
-        if last is not None and sequence > last + 1:
-            entry.pending_gaps += sequence - last - 1
-        entry.last_sequence = sequence  # lower than before: a new publisher started over
+        last, gaps = entry.last_sequence, 0
+        for sequence in sequences:
+            if not sequence:
+                continue
+            if last is not None and sequence > last + 1:
+                gaps += sequence - last - 1
+            last = sequence  # lower than before: a new publisher started over
+        entry.last_sequence = last
+        entry.pending_gaps += gaps
 
     def look_at_publishers(self, count_publishers: Callable[[str], int]) -> None:
         """Every so often: gaps counted since the last look are loss only if the topic had

@@ -278,31 +278,47 @@ class Recorder:
     def drain(self) -> None:
         """Take what else is waiting, without a round through the executor for each message.
 
-        The executor wakes up for the first message of a burst; taking the rest directly costs
-        a fraction of its per-callback overhead (which at 1 kHz is most of the recorder's CPU).
+        The executor wakes up for the first message of a burst; taking the rest directly, a
+        topic's batch at a time, costs a fraction of its per-callback overhead (which at 1 kHz
+        is most of the recorder's CPU).
         """
         for topic, subscription in self.subscriptions.items():
-            for _ in range(DRAIN_LIMIT):
-                if self.limit_reached:
-                    return
-                with subscription.handle:
-                    taken = subscription.handle.take_message(subscription.msg_type, True)
-                if taken is None:
-                    break
-                self._received(topic, taken[0], taken[1])
+            if self.limit_reached:
+                return
+            taken = []
+            with subscription.handle:
+                take = subscription.handle.take_message
+                for _ in range(DRAIN_LIMIT):
+                    message = take(subscription.msg_type, True)
+                    if message is None:
+                        break
+                    taken.append(message)
+            if taken:
+                self._received_many(topic, taken)
 
     def _received(self, topic: str, data: bytes, message_info: dict[str, Any]) -> None:
-        received = message_info.get("received_timestamp") or time.time_ns()
-        self.loss.received(topic, message_info.get("publication_sequence_number"))
-        if self.paused or self.limit_reached or (self.stop_ns and received > self.stop_ns):
+        self._received_many(topic, [(data, message_info)])
+
+    def _received_many(self, topic: str, taken: list[tuple[bytes, dict[str, Any]]]) -> None:
+        """Messages of one topic as taken: (serialized bytes, message info)."""
+        infos = [info for _, info in taken]
+        self.loss.received_many(topic, [info.get("publication_sequence_number") for info in infos])
+        if self.paused or self.limit_reached:
             return
-        self.writer.write(topic, data, received, message_info.get("source_timestamp") or 0)
-        if (
-            self.options.max_messages is not None
-            and self.writer.message_count >= self.options.max_messages
-        ):
+        now = time.time_ns()
+        batch = [
+            (data, info.get("received_timestamp") or now, info.get("source_timestamp") or 0)
+            for data, info in taken
+        ]
+        if self.stop_ns:  # stopping: what arrived after the stop is not written
+            batch = [message for message in batch if message[1] <= self.stop_ns]
+        limit = self.options.max_messages
+        if limit is not None:
+            batch = batch[: max(0, limit - self.writer.message_count)]
+        self.writer.write_many(topic, batch)
+        if limit is not None and self.writer.message_count >= limit:
             self.limit_reached = True
-            self.stop_reason = f"{self.options.max_messages} messages recorded"
+            self.stop_reason = f"{limit} messages recorded"
 
     def report_loss(self) -> None:
         """Say what was lost since the last report, per topic (loss.py)."""
