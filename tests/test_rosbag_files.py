@@ -19,6 +19,7 @@ import signal
 import subprocess
 import termios
 import time
+import warnings
 from pathlib import Path
 
 import pytest
@@ -491,3 +492,30 @@ def test_a_batch_of_messages_is_written_as_one_at_a_time(tmp_path) -> None:
         assert reader.bag.chunk_count > 3
         messages = list(reader.messages())
     assert sorted(m.log_time for m in messages if m.topic == "/a") == list(range(100, 401))
+
+
+def test_overlapping_chunks_are_read_in_log_time_order_from_the_start(tmp_path) -> None:
+    """A file whose chunks overlap in time (not what this recorder writes; another writer's)
+    is read through the mcap reader's merge, from the start offset on, with no warning."""
+    from mcap.writer import Writer
+
+    from ros2cmd.bag.mcap_file import McapFile
+
+    path = tmp_path / "overlap.mcap"
+    with open(path, "wb") as stream:
+        writer = Writer(stream, chunk_size=1)  # one message per chunk
+        writer.start(profile="ros2", library="test")
+        schema = writer.register_schema("std_msgs/msg/String", "ros2msg", b"string data")
+        channel = writer.register_channel("/chatter", "cdr", schema)
+        for log_time in (10, 30, 20, 40):  # chunk [30] and chunk [20] overlap
+            data = serialize_message(String(data=str(log_time)))
+            writer.add_message(channel, log_time, data, log_time)
+        writer.finish()
+    bag = McapFile(path)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # the mcap reader's deprecated arguments included
+            times = [message.log_time for message in bag.messages(None, start=20)]
+    finally:
+        bag.close()
+    assert times == [20, 30, 40]

@@ -198,7 +198,7 @@ class McapFile:
             for _schema, channel, message in self.reader.iter_messages(
                 topics=sorted(topics) if topics is not None else None,
                 log_time_order=True,
-                start_time=start,
+                starting_at=start,  # mcap >= 1.6: start_time is its deprecated alias
             ):
                 yield BagMessage(
                     channel.topic, message.data, message.log_time, message.publish_time
