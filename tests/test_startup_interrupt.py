@@ -76,9 +76,12 @@ def lost_while_starting(err: str) -> bool:
     """Whether Python lost the Ctrl-C while the program started, and said so: raised in a
     callback Python runs for itself during an import (a module lock's weakref callback), it
     reports "Exception ignored in: ..."; raised while site runs a .pth file's line, site
-    reports "Error processing line 1 of ....pth" and goes on (docs/dev/limits.md)."""
+    reports "Error processing line 1 of ....pth" and goes on; raised while Python checks the
+    script's folder for sys.path, it reports "Failed checking if argv[0] is an import path
+    entry" and goes on (docs/dev/limits.md)."""
     lost = re.search(
-        r"^(Exception ignored in: |Error processing line \d+ of ).*\n(?:.*\n)*? *KeyboardInterrupt",
+        r"^(Exception ignored in: |Error processing line \d+ of "
+        r"|Failed checking if argv\[0\] is an import path entry).*\n(?:.*\n)*? *KeyboardInterrupt",
         err,
         re.M,
     )
