@@ -80,7 +80,8 @@ def _ctrl_c_until_all_gone(proc: subprocess.Popen, limit: float = 15.0) -> float
 
     def read() -> None:  # keep its output flowing; note the children the launcher escalated
         for line in proc.stdout or ():
-            if "still running after SIGINT" in line:
+            # the launcher's spelling, or ros2 launch's ("... escalating to 'SIGTERM'")
+            if "still running after SIGINT" in line or "escalating to 'SIGTERM'" in line:
                 escalations.append(line.strip())
 
     threading.Thread(target=read, daemon=True).start()

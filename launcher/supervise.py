@@ -29,7 +29,9 @@ launch does (``[INFO] [launch]: All log files can be found below DIR``, ``[INFO]
 [turtlesim_node-1]: process started with pid [1234]``, each process named after its
 executable and numbered in the order they start), ``roslaunch`` and ``python -m launcher``
 keep this launcher's own ``[launcher] started ns1/talker (pid 1234)``. The same facts either way,
-and this launcher's shutdown and error lines in both.
+and this launcher's shutdown and error lines in both, except the escalation: ``ros2 launch``
+says ``process[talker-1] failed to terminate '5' seconds after receiving 'SIGINT', escalating
+to 'SIGTERM'`` as ros2 launch does.
 
 Output is relayed line by line, and a line is never held whole: it is read in pieces of at
 most MAX_LINE_BYTES. The log file gets every byte; the screen shows a longer line cut at
@@ -645,6 +647,22 @@ class Supervisor:
         if count:
             self.say(f"all {count} process(es) stopped")
 
+    def _say_escalation(self, child: Child, then: signal.Signals, seconds: str) -> None:
+        """A child still running after its signal: ros2 launch's two lines (its
+        execute_local.py: the error with the seconds since the SIGINT, then 'sending signal'),
+        or the launcher's own."""
+        sent = signal.Signals(child.stage).name
+        if self.ros2:
+            self.say(
+                f"process[{child.name}] failed to terminate '{seconds}' seconds after "
+                f"receiving '{sent}', escalating to '{then.name}'",
+                "ERROR",
+                child.name,
+            )
+            self.say(f"sending signal '{then.name}' to process[{child.name}]", who=child.name)
+        else:
+            self.say(f"still running after {sent}: sending {then.name}", "WARNING", child.name)
+
     def _escalate(self, child: Child) -> None:
         """Send the next signal of SIGINT -> SIGTERM -> SIGKILL to the child's group."""
         assert child.process is not None
@@ -654,10 +672,11 @@ class Supervisor:
         elif child.stage == 0:
             child.stage, child.deadline = signal.SIGINT, now + spec.sigterm_timeout
         elif child.stage == signal.SIGINT:
-            self.say("still running after SIGINT: sending SIGTERM", "WARNING", child.name)
+            self._say_escalation(child, signal.SIGTERM, f"{spec.sigterm_timeout:g}")
             child.stage, child.deadline = signal.SIGTERM, now + spec.sigkill_timeout
         else:
-            if child.stage == signal.SIGTERM:
-                self.say("still running after SIGTERM: sending SIGKILL", "WARNING", child.name)
+            if child.stage == signal.SIGTERM:  # ros2 launch: float(sigterm) + float(sigkill)
+                after = str(float(spec.sigterm_timeout) + float(spec.sigkill_timeout))
+                self._say_escalation(child, signal.SIGKILL, after)
             child.stage, child.deadline = signal.SIGKILL, float("inf")
         _kill_group(child.process.pid, child.stage)

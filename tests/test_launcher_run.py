@@ -184,6 +184,47 @@ def test_sigterm_escalates_for_a_child_that_ignores_sigint(node_process, tmp_pat
     assert_all_gone(pids)
 
 
+def test_ros2_launch_says_the_escalation_as_ros2_launch(node_process, tmp_path):
+    # ros2 launch (launch/actions/execute_local.py) logs each step of the escalation as an
+    # error naming the seconds since the SIGINT, then the signal it sends.
+    stubborn = script(
+        tmp_path,
+        "stubborn",
+        "import signal, time\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\n"
+        "signal.signal(signal.SIGTERM, signal.SIG_IGN)\nprint('ready', flush=True)\n"
+        "time.sleep(600)\n",
+    )
+    xml = (
+        f'<launch><executable cmd="{stubborn}" name="stubborn" output="screen" '
+        'sigterm_timeout="1" sigkill_timeout="1"/></launch>'
+    )
+    launcher = node_process("-m", "ros2cmd", "launch", launch_file(tmp_path, xml))
+    lines = launcher.wait_for_output(
+        lambda lines: (
+            "[stubborn-1] ready" in lines
+            and any("process started with pid" in line for line in lines)
+        ),
+        what="ready, its pid",
+    )
+    started = re.search(r"\[stubborn-1\]: process started with pid \[(\d+)\]", "\n".join(lines))
+    assert started is not None, lines
+    pid = int(started[1])
+    launcher.process.send_signal(signal.SIGINT)
+    launcher.wait()
+    lines = launcher.output.splitlines()
+    expected = [
+        "[ERROR] [stubborn-1]: process[stubborn-1] failed to terminate '1' seconds after "
+        "receiving 'SIGINT', escalating to 'SIGTERM'",
+        "[INFO] [stubborn-1]: sending signal 'SIGTERM' to process[stubborn-1]",
+        "[ERROR] [stubborn-1]: process[stubborn-1] failed to terminate '2.0' seconds after "
+        "receiving 'SIGTERM', escalating to 'SIGKILL'",
+        "[INFO] [stubborn-1]: sending signal 'SIGKILL' to process[stubborn-1]",
+    ]
+    assert [line for line in lines if line in expected] == expected
+    assert not any("still running after" in line for line in lines)
+    assert_all_gone([pid])
+
+
 def test_respawn_backs_off_and_gives_up_after_max_retries(node_process, tmp_path):
     crash = script(tmp_path, "crash", "print('run', flush=True)\nraise SystemExit(3)\n")
     xml = (
