@@ -63,28 +63,27 @@ def alive(pid: int) -> bool:
         return False
 
 
-# The launcher's "<child> still running after SIGINT: sending SIGTERM" lines of the last
-# _ctrl_c_until_all_gone: a child that waited for the escalation (docs/dev/limits.md says why
-# a node can: Fast DDS's wheel spins in DomainParticipant::set_listener).
-escalations: list[str] = []
-
-
-def _ctrl_c_until_all_gone(proc: subprocess.Popen, limit: float = 15.0) -> float:
+def _ctrl_c_until_all_gone(
+    proc: subprocess.Popen, limit: float = 15.0, escalations: list[str] | None = None
+) -> float:
     """Ctrl-C to the launcher alone (as a terminal would); seconds until every process is gone.
 
     A run that is not over within ``limit`` seconds is reported as a failure (the caller's
-    clean-up kills what is left), never waited on forever.
+    clean-up kills what is left), never waited on forever. ``escalations`` gets the
+    launcher's lines naming a child that waited for its SIGTERM (docs/dev/limits.md says why a
+    node can: the Fast DDS wheel's deadlock, or a SIGINT rclpy missed).
     """
     family = descendants(proc.pid) | {proc.pid}
-    escalations.clear()
+    found = [] if escalations is None else escalations
 
     def read() -> None:  # keep its output flowing; note the children the launcher escalated
         for line in proc.stdout or ():
             # the launcher's spelling, or ros2 launch's ("... escalating to 'SIGTERM'")
             if "still running after SIGINT" in line or "escalating to 'SIGTERM'" in line:
-                escalations.append(line.strip())
+                found.append(line.strip())
 
-    threading.Thread(target=read, daemon=True).start()
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
     stopping = time.monotonic()
     os.kill(proc.pid, signal.SIGINT)
     while any(alive(pid) for pid in family):
@@ -92,7 +91,9 @@ def _ctrl_c_until_all_gone(proc: subprocess.Popen, limit: float = 15.0) -> float
             stuck = sorted(pid for pid in family if alive(pid))
             raise RuntimeError(f"{proc.args}: still running {limit:g} s after Ctrl-C: {stuck}")
         time.sleep(0.005)
-    return time.monotonic() - stopping
+    gone = time.monotonic() - stopping
+    reader.join(5.0)  # the output ends with the last process: its last lines are read
+    return gone
 
 
 def _kill_leftovers(proc: subprocess.Popen) -> None:
@@ -129,8 +130,8 @@ def _ready_then_stop(args: list[str]) -> Run:
         ready = time.monotonic() - began
         inner = launcher_pid(proc.pid) if "launcher" in args else proc.pid
         rss, guardian_private = peak_rss_mib(inner), private_mib(proc.pid)
-        down = _ctrl_c_until_all_gone(proc)
-        time.sleep(0.1)  # the reader has the launcher's last lines
+        escalations: list[str] = []
+        down = _ctrl_c_until_all_gone(proc, escalations=escalations)
         for line in escalations:
             print(f"# waited for the escalation ({down:.2f} s): {line}", flush=True)
         return ready, down, rss, guardian_private, len(escalations) > 0
@@ -194,7 +195,10 @@ def escalation(rounds: int = 3) -> list[Row]:
         try:
             if not wait_for_lines(proc, lambda line: "ignoring SIGINT" in line, timeout=60):
                 raise RuntimeError("the stubborn process never started")
-            samples.append(_ctrl_c_until_all_gone(proc))
+            said: list[str] = []
+            samples.append(_ctrl_c_until_all_gone(proc, escalations=said))
+            if not said:  # what launch_and_shutdown counts must be seen where it happens
+                raise RuntimeError("the launcher escalated without saying so")
         finally:
             _kill_leftovers(proc)
     worst = max(samples)
