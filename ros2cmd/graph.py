@@ -113,9 +113,20 @@ def until_stopped() -> contextlib.AbstractContextManager:
     Enter it before printing anything that tells the user the command now runs until
     Ctrl-C ("publishing and latching message. Press ctrl-C to terminate"): a Ctrl-C
     answering that line must find the command already in this state, however late the
-    process gets the CPU back after printing.
+    process gets the CPU back after printing. An error the Ctrl-C caused on its way up
+    (ctrl_c.interrupted: rclpy's C++ had called the Python code it interrupted) ends it the
+    same way.
     """
-    return contextlib.suppress(KeyboardInterrupt, ExternalShutdownException)
+    return _UntilStopped()
+
+
+class _UntilStopped(contextlib.AbstractContextManager):
+    def __exit__(self, kind: type | None, error: BaseException | None, tb: object) -> bool:
+        if error is None:
+            return False
+        return isinstance(error, (KeyboardInterrupt, ExternalShutdownException)) or (
+            isinstance(error, Exception) and ctrl_c.interrupted(error)
+        )
 
 
 @dataclass

@@ -277,6 +277,27 @@ def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
     assert not ctrl_c.interrupted(RuntimeError("another error"))
 
 
+def test_a_command_that_runs_until_ctrl_c_ends_normally_on_an_error_the_ctrl_c_caused():
+    """`rostopic echo` (until_stopped) Ctrl-C'd while rclpy's C++ ran its Python code: the
+    error that comes out (here one raised in handling the KeyboardInterrupt) is its normal end,
+    as the KeyboardInterrupt itself is; an error of its own still goes up."""
+    from ros2cmd.graph import until_stopped
+
+    def fails_after_ctrl_c():
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as ctrl_c_pressed:
+            message = "<built-in method take_message> returned a result with an error set"
+            raise SystemError(message) from ctrl_c_pressed
+
+    with until_stopped():
+        raise KeyboardInterrupt
+    with until_stopped():
+        fails_after_ctrl_c()
+    with pytest.raises(ValueError), until_stopped():
+        raise ValueError("not a Ctrl-C")
+
+
 def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are(monkeypatch):
     """rclpy's Future.__del__ (and the executor's) fails on an object whose __init__ a Ctrl-C
     cut short ("Exception ignored in: <function Future.__del__ ...>"): said nothing of; other
