@@ -118,3 +118,78 @@ def test_the_users_discovery_range_wins(ros_domain: int):
         assert 7400 + 250 * ros_domain in udp_ports(talker.process.pid), talker.output
     finally:
         talker.kill()
+
+
+# A server and a client whose answers can never reach it: the client asks for TRANSIENT_LOCAL
+# answers, which the server's VOLATILE response writer does not offer (their request ends
+# match). The server gets the request, then its rmw waits for the client's reader for the
+# response writer's max_blocking_time and drops the answer with a RuntimeWarning.
+UNANSWERABLE = """
+import sys, time, warnings
+import rclpy
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.qos import DurabilityPolicy, QoSProfile
+from ros_tutorials_interfaces.srv import AddTwoInts
+
+served = []
+contexts = [Context(), Context()]
+for context in contexts:
+    rclpy.init(context=context)
+server = rclpy.create_node("server", context=contexts[0])
+
+
+def serve(request, response):
+    served.append(time.monotonic())
+    return response
+
+
+server.create_service(AddTwoInts, "unanswerable", serve)
+client = rclpy.create_node("client", context=contexts[1]).create_client(
+    AddTwoInts, "unanswerable",
+    qos_profile=QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL),
+)
+executor = SingleThreadedExecutor(context=contexts[0])
+executor.add_node(server)
+deadline = time.monotonic() + float(sys.argv[1])
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    while not served and time.monotonic() < deadline:
+        client.call_async(AddTwoInts.Request(a=1, b=2))
+        executor.spin_once(timeout_sec=0.5)  # returns once the answer is sent or dropped
+if not served:
+    sys.exit("the server never got a request")
+print(f"{time.monotonic() - served[0]:.2f}")
+print(*(str(warning.message) for warning in caught), sep="\\n")
+"""
+
+
+def blocked_answer(env: dict[str, str]) -> tuple[float, str]:
+    """Seconds a server spent on an answer that could not be delivered, and its warnings."""
+    result = subprocess.run(
+        [sys.executable, "-c", UNANSWERABLE, str(TIMEOUT)],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=2 * TIMEOUT,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    seconds, warnings = result.stdout.split("\n", 1)
+    return float(seconds), warnings
+
+
+def test_a_server_waits_5_s_for_a_client_it_has_not_found_yet(tmp_path):
+    """The profile's "service" writer: a server that got a request before it found the
+    client's reader waits up to 5 s for it, not Fast DDS's 100 ms, before dropping the answer
+    (ros2/rmw_fastrtps#842). The control, the profile without that writer, drops it at once."""
+    seconds, warnings = blocked_answer(dict(os.environ))
+    assert "client will not receive response" in warnings
+    assert seconds >= 4.5, f"the answer was dropped after {seconds} s"
+
+    profile = Path(DDS_DEFAULTS["FASTRTPS_DEFAULT_PROFILES_FILE"]).read_text()
+    without = tmp_path / "without_service_writer.xml"
+    without.write_text(profile[: profile.index("  <data_writer")] + "</profiles>\n")
+    env = {**os.environ, "FASTRTPS_DEFAULT_PROFILES_FILE": str(without)}
+    seconds, warnings = blocked_answer(env)
+    assert "client will not receive response" in warnings
+    assert seconds < 4.5, f"without the profile's writer the answer waited {seconds} s"

@@ -104,9 +104,12 @@ def exchange(terminal, mine: str, mine_says: str, theirs: str, theirs_says: str)
     exit status 0."""
     copied = terminal(f"ros2 run my_lessons {mine}")
     project = terminal(f"ros2 run {theirs}")
-    for process, text in ((copied, mine_says), (project, theirs_says)):
+    for process, text, other in ((copied, mine_says, project), (project, theirs_says, copied)):
         if text:  # the Num publisher logs nothing
-            process.wait_for_text(text, timeout=TIMEOUT)
+            try:
+                process.wait_for_text(text, timeout=TIMEOUT)
+            except pytest.fail.Exception as failed:  # what the other side said, too
+                pytest.fail(f"{failed}\nthe other side's output was:\n{other.output}")
     for process, command in ((copied, mine), (project, theirs)):
         one_shot = "client" in command and "introspection" not in command
         status = process.wait() if one_shot else process.interrupt()
