@@ -182,11 +182,12 @@ def test_a_server_waits_5_s_for_a_client_it_has_not_found_yet(tmp_path):
     """The profile's "service" writer: a server that got a request before it found the
     client's reader waits up to 5 s for it, not Fast DDS's 100 ms, before dropping the answer
     (ros2/rmw_fastrtps#842). The control, the profile without that writer, drops it at once."""
-    seconds, warnings = blocked_answer(dict(os.environ))
+    ours = DDS_DEFAULTS["FASTRTPS_DEFAULT_PROFILES_FILE"]
+    seconds, warnings = blocked_answer({**os.environ, "FASTRTPS_DEFAULT_PROFILES_FILE": ours})
     assert "client will not receive response" in warnings
     assert seconds >= 4.5, f"the answer was dropped after {seconds} s"
 
-    profile = Path(DDS_DEFAULTS["FASTRTPS_DEFAULT_PROFILES_FILE"]).read_text()
+    profile = Path(ours).read_text()
     without = tmp_path / "without_service_writer.xml"
     without.write_text(profile[: profile.index("  <data_writer")] + "</profiles>\n")
     env = {**os.environ, "FASTRTPS_DEFAULT_PROFILES_FILE": str(without)}
