@@ -365,7 +365,10 @@ def _action_graph(node: Node, turtle: str) -> str:
                              node.count_subscribers(f"{prefix}{topic}"))
         for topic in ("feedback", "status")
     }  # fmt: skip
-    return f"services {services}; topics (publishers, subscribers) {topics}"
+    # Every node of the graph, twice if two have one name (another test's simulator not yet
+    # gone: a lookup by node name then finds only one of them).
+    nodes = sorted(f"{ns.rstrip('/')}/{name}" for name, ns in node.get_node_names_and_namespaces())
+    return f"services {services}; topics (publishers, subscribers) {topics}; nodes {nodes}"
 
 
 class Rotation:
