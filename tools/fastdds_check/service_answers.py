@@ -5,8 +5,8 @@ server that got a request before it found the client's reader drops the answer a
 100 ms (Fast DDS's default max_blocking_time, ros2/rmw_fastrtps#842), and the project's
 "service" writer profile (5 s) keeps it. Each round starts the workshop's
 add_two_ints_client, then its server, as two people starting them in two terminals, in a
-network namespace of its own whose loopback drops a share of UDP packets (discovery's), and
-counts the clients that got no answer within their 30 s.
+network namespace of its own whose loopback drops a share of its UDP packets, and counts
+the clients that got no answer within their 30 s.
 
     sudo .venv/bin/python tools/fastdds_check/service_answers.py [--rounds 40] [--drop 0.15]
         [--without-service-writer]
@@ -35,13 +35,20 @@ CLIENT = "ros_tutorials_service.workshop_add_two_ints_client"
 SERVER = "ros_tutorials_service.workshop_add_two_ints_server"
 
 
-def namespace(name: str, drop: float) -> None:
-    """A network namespace with loopback up, dropping DROP of the UDP packets it receives."""
-    subprocess.run(["ip", "netns", "add", name], check=True)
+def namespace(name: str, drop: float) -> str | None:
+    """Set up network namespace NAME: loopback up, dropping DROP of the UDP packets it
+    receives. What failed, as one line; None if all went well."""
     inside = ["ip", "netns", "exec", name]
-    subprocess.run([*inside, "ip", "link", "set", "lo", "up"], check=True)
     rule = ["-p", "udp", "-m", "statistic", "--mode", "random", "--probability", str(drop)]
-    subprocess.run([*inside, "iptables", "-A", "INPUT", *rule, "-j", "DROP"], check=True)
+    for step in (
+        ["ip", "netns", "add", name],
+        [*inside, "ip", "link", "set", "lo", "up"],
+        [*inside, "iptables", "-A", "INPUT", *rule, "-j", "DROP"],
+    ):
+        done = subprocess.run(step, capture_output=True, text=True)
+        if done.returncode != 0:
+            return f"{' '.join(step)}: {done.stderr.strip() or f'exit {done.returncode}'}"
+    return None
 
 
 def one_round(inside: list[str], env: dict[str, str]) -> tuple[bool, str]:
@@ -75,12 +82,15 @@ def main(argv: list[str]) -> int:
         help="the project's profile without its \"service\" writer: Fast DDS's 100 ms",
     )
     options = parser.parse_args(argv)
+    if not 0 <= options.drop < 1 or options.rounds < 1 or not 0 <= options.domain_id <= 232:
+        parser.error("--drop is a share from 0 to below 1, --rounds at least 1, "
+                     "--domain-id from 0 to 232")  # fmt: skip
     missing = [tool for tool in ("ip", "iptables") if shutil.which(tool) is None]
     if os.geteuid() != 0 or missing:
-        print(f"needs root and ip, iptables (missing: {missing or 'root'})", file=sys.stderr)
+        lacking = ([] if os.geteuid() == 0 else ["root"]) + missing
+        print(f"service_answers.py needs root, ip and iptables; lacking: {', '.join(lacking)}",
+              file=sys.stderr)  # fmt: skip
         return 1
-    if not 0 <= options.drop < 1 or options.rounds < 1:
-        parser.error("--drop is a share from 0 to below 1, --rounds at least 1")
 
     env = {**os.environ, "ROS_DOMAIN_ID": str(options.domain_id)}
     apply_dds_defaults(env)
@@ -91,16 +101,19 @@ def main(argv: list[str]) -> int:
             without.write_text(profile[: profile.index("  <data_writer")] + "</profiles>\n")
             env["FASTRTPS_DEFAULT_PROFILES_FILE"] = str(without)
         name = f"rt_service_answers_{os.getpid()}"
-        namespace(name, options.drop)
         lost = dropped = 0
         try:
+            problem = namespace(name, options.drop)
+            if problem:
+                print(f"cannot set up the network namespace: {problem}", file=sys.stderr)
+                return 1
             for number in range(1, options.rounds + 1):
                 answered, said = one_round(["ip", "netns", "exec", name], env)
                 lost += not answered
                 dropped += "client will not receive response" in said
                 print(f"round {number}: {'answered' if answered else 'NO ANSWER'}", flush=True)
         finally:
-            subprocess.run(["ip", "netns", "delete", name], check=False)
+            subprocess.run(["ip", "netns", "delete", name], capture_output=True, check=False)
     profile = env["FASTRTPS_DEFAULT_PROFILES_FILE"]
     print(f"{lost} of {options.rounds} answers lost ({dropped} dropped by the server, "
           f"'client will not receive response'); {options.drop:.0%} of UDP packets dropped; "
