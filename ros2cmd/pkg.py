@@ -14,7 +14,11 @@ ros_tutorials_turtlesim's, listed under the name the tutorials type.
 
 `create` writes the files ros2pkg's templates write (package.xml, setup.py, setup.cfg,
 resource/, test/, the node; CMakeLists.txt and src/ for ament_cmake; LICENSE for the licenses
-ament_copyright knows, in ros2cmd/licenses/) and prints the same lines while it does.
+ament_copyright knows, in ros2cmd/licenses/) and prints the same lines while it does. Unlike
+ros2pkg's templates, every value is escaped for the file it goes into (XML in package.xml,
+a Python string in setup.py), and what cannot be written safely (a control character, a
+dependency that is not a package name, a package.xml catkin_pkg would not read) is refused
+with one line before anything is written.
 """
 
 from __future__ import annotations
@@ -29,6 +33,7 @@ import sys
 import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
+from xml.sax.saxutils import escape, quoteattr
 
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import ament, packages
@@ -42,6 +47,11 @@ KNOWN_LICENSES = (
 BUILD_TYPES = ("ament_cmake", "ament_python")
 # REP 144: what colcon, CMake and Python (an ament_python package is a Python package) accept.
 PACKAGE_NAME = r"[a-z][a-z0-9_]*"
+# A dependency: a package or a rosdep key (python3-pytest): also a CMake and XML word.
+DEPENDENCY_NAME = r"[A-Za-z0-9][A-Za-z0-9_.+-]*"
+# What XML 1.0 cannot hold, and control characters (a newline would break setup.py's
+# one-line strings); lone surrogates are bytes of the command line that are not UTF-8.
+UNWRITABLE = re.compile(r"[\x00-\x1f\x7f-\x9f\ud800-\udfff\ufffe\uffff]")
 
 
 def package_prefix(name: str) -> Path:
@@ -161,15 +171,16 @@ def _group(tag: str, names: list[str]) -> list[str]:
 
 def package_xml(package: NewPackage) -> str:
     schema = f"http://download.ros.org/schema/package_format{package.package_format}.xsd"
+    email = quoteattr(package.maintainer_email)
     lines = [
         '<?xml version="1.0"?>',
         f'<?xml-model href="{schema}" schematypens="http://www.w3.org/2001/XMLSchema"?>',
         f'<package format="{package.package_format}">',
         f"  <name>{package.name}</name>",
         "  <version>0.0.0</version>",
-        f"  <description>{package.description}</description>",
-        f'  <maintainer email="{package.maintainer_email}">{package.maintainer_name}</maintainer>',
-        f"  <license>{package.license}</license>",
+        f"  <description>{escape(package.description)}</description>",
+        f"  <maintainer email={email}>{escape(package.maintainer_name)}</maintainer>",
+        f"  <license>{escape(package.license)}</license>",
         "",
         *_group("buildtool_depend", package.buildtool_dependencies),
         *_group("depend", package.dependencies),
@@ -180,6 +191,11 @@ def package_xml(package: NewPackage) -> str:
         "</package>",
     ]
     return "\n".join(lines) + "\n"
+
+
+def python_text(value: str) -> str:
+    """value inside a single-quoted Python string, as ros2pkg's setup.py template quotes."""
+    return value.replace("\\", "\\\\").replace("'", "\\'")
 
 
 def setup_py(package: NewPackage) -> str:
@@ -203,10 +219,10 @@ setup(
     ],
     install_requires=['setuptools'],
     zip_safe=True,
-    maintainer='{package.maintainer_name}',
-    maintainer_email='{package.maintainer_email}',
-    description='{package.description}',
-    license='{package.license}',
+    maintainer='{python_text(package.maintainer_name)}',
+    maintainer_email='{python_text(package.maintainer_email)}',
+    description='{python_text(package.description)}',
+    license='{python_text(package.license)}',
     tests_require=['pytest'],
     entry_points={{
         'console_scripts': [
@@ -568,6 +584,7 @@ def create(args: argparse.Namespace) -> None:
         node_name=node_name,
         library_name=library_name,
     )
+    check_writable(package)
     destination = args.destination_directory
     package_path = os.path.join(destination, package.name)
     if os.path.exists(package_path):
@@ -593,6 +610,35 @@ def create(args: argparse.Namespace) -> None:
         write_package(package, destination)
     except OSError as error:
         raise ToolError(f"cannot create the package: {error}") from None
+
+
+def check_writable(package: NewPackage) -> None:
+    """ToolError, before anything is written, for a value that cannot go into the files."""
+    for option, value in (
+        ("--description", package.description),
+        ("--license", package.license),
+        ("--maintainer-name", package.maintainer_name),
+        ("--maintainer-email", package.maintainer_email),
+    ):
+        found = UNWRITABLE.search(value)
+        if found:
+            raise ToolError(
+                f"{option} cannot be written into package.xml: it holds the character "
+                f"U+{ord(found.group()):04X} (a control character, or bytes that are not UTF-8)"
+            )
+    for name in package.dependencies:
+        if not re.fullmatch(DEPENDENCY_NAME, name):
+            raise ToolError(
+                f"--dependencies {name!r} is not a package name: letters, digits and "
+                "'_', '-', '.', '+', starting with a letter or digit"
+            )
+    from catkin_pkg import package as catkin_package  # here: `ros2 pkg list` needs it not
+
+    try:  # what colcon reads the package.xml with: a file it would refuse is not written
+        catkin_package.parse_package_string(package_xml(package), warnings=[])
+    except catkin_package.InvalidPackage as error:
+        reason = next(line.strip("- ") for line in str(error).splitlines() if line.strip())
+        raise ToolError(f"cannot create the package: {reason}") from None
 
 
 def write_package(package: NewPackage, destination: str) -> None:

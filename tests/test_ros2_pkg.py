@@ -7,9 +7,11 @@ catkin_pkg parses its package.xml, Python runs its node.
 
 from __future__ import annotations
 
+import ast
 import os
 import subprocess
 import sys
+import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 import pytest
@@ -233,3 +235,83 @@ def test_create_refuses_what_ros2pkg_refuses(tmp_path):
     assert unknown.returncode == 0
     assert "[WARNING]: Unknown license 'Custom'." in unknown.stdout
     assert not (tmp_path / "other_pkg" / "LICENSE").exists()
+
+
+def _setup_keywords(setup_py: Path) -> dict[str, object]:
+    """The literal keyword values of setup.py's setup(...) call, as Python reads them."""
+    tree = ast.parse(setup_py.read_text())
+    call = next(
+        node
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "setup"
+    )
+    return {
+        keyword.arg: ast.literal_eval(keyword.value)
+        for keyword in call.keywords
+        if isinstance(keyword.value, ast.Constant)
+    }
+
+
+def test_create_escapes_every_value_it_writes(tmp_path):
+    """ros2pkg's templates paste the values in as they are: `--description
+    "</description><evil/>"` makes a package.xml no XML reader takes. Here each value is
+    escaped for its file, and reads back as typed."""
+    description = "</description><evil/> & a 'quote' \\ \"too\""
+    name = 'O\'Brien & <Co> "Ltd"'
+    license_ = "Apache-2.0 </license>"
+    for build_type in ("ament_python", "ament_cmake"):
+        package = f"n5_{build_type}"
+        result = create(
+            tmp_path, package, "--build-type", build_type, "--description", description,
+            "--maintainer-name", name, "--maintainer-email", "ob@example.com",
+            "--license", license_, "--node-name", "node",
+        )  # fmt: skip
+        assert result.returncode == 0, result.stderr
+        manifest = parse_package(str(tmp_path / package / "package.xml"))  # as colcon reads
+        read = ElementTree.parse(tmp_path / package / "package.xml").getroot()
+        assert read.findtext("description") == description  # catkin_pkg keeps it as XML
+        assert manifest.maintainers[0].name == name
+        assert manifest.licenses == [license_]
+        assert "<evil/>" not in (tmp_path / package / "package.xml").read_text()
+    keywords = _setup_keywords(tmp_path / "n5_ament_python" / "setup.py")
+    assert keywords["description"] == description
+    assert keywords["maintainer"] == name
+    assert keywords["license"] == license_
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (
+            ("--description", "two\nlines"),
+            "error: --description cannot be written into package.xml: it holds the character "
+            "U+000A (a control character, or bytes that are not UTF-8)",
+        ),
+        (
+            ("--dependencies", "rclcpp) execute_process(COMMAND touch pwned"),
+            "error: --dependencies 'rclcpp) execute_process(COMMAND touch pwned' is not a "
+            "package name: letters, digits and '_', '-', '.', '+', starting with a letter or "
+            "digit",
+        ),
+        (
+            ("--maintainer-email", 'ob"@example.com'),
+            'error: cannot create the package: Invalid email "ob"@example.com" for person "ada"',
+        ),
+        (
+            ("--description", ""),
+            "error: cannot create the package: Package description must not be empty",
+        ),
+        (
+            ("--dependencies", "n6"),
+            'error: cannot create the package: The package "n6" must not "build_depend" on a '
+            "package with the same name as this package",
+        ),
+    ],
+)
+def test_create_refuses_what_cannot_be_written_safely(tmp_path, args, message):
+    """One line, and nothing written: not a package colcon would build wrong, or fail on."""
+    assert fails(
+        "ros2", "pkg", "create", "--destination-directory", str(tmp_path),
+        "--maintainer-name", "ada", "n6", *args,
+    ) == message  # fmt: skip
+    assert list(tmp_path.iterdir()) == []
