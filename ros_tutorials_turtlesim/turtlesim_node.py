@@ -13,6 +13,10 @@ Parameters ``background_r/g/b`` (changeable while running) and ``holonomic``.
 
 Added here: ``headless``, ``snapshot_path`` and ``snapshot_on_exit`` parameters, and
 ``~/snapshot`` (std_srvs/srv/Trigger) or SIGUSR1 to write the canvas to a PNG while running;
+``headless`` says whether a window is open (true also when none could open). Any process of
+the domain can set parameters and call services, so a snapshot_path set while running must be
+in the folder turtlesim was started in (or be the one it was started with), and a snapshot
+only ever replaces an earlier snapshot, never another file;
 and ``~/_canvas/compressed`` (sensor_msgs/msg/CompressedImage, PNG): the canvas as drawn, at
 most 20 frames a second and only when it changed, only while someone subscribes (the web
 viewer, ``ros2 run ros_tutorials_web viewer``, shows it in a browser). Its name is hidden, so
@@ -151,16 +155,17 @@ class TurtlesimNode(Node):
             False,
             ParameterDescriptor(description="If true, then turtles will be holonomic"),
         )
-        self.declare_parameter(
-            "headless",
-            False,
-            ParameterDescriptor(description="Never open a window", read_only=True),
-        )
+        # Declared again, read-only, once it is known whether a window opened.
+        self.declare_parameter("headless", False)
         self.declare_parameter(
             "snapshot_path",
             default_snapshot_name(self.get_fully_qualified_name()),
             ParameterDescriptor(description="Where ~/snapshot, SIGUSR1 and the exit write the PNG"),
         )
+        # Relative paths are relative to it; a path set while running must be in it.
+        self.home = os.path.realpath(os.getcwd())
+        # The path whoever started turtlesim named (command line, launch file): allowed anywhere.
+        self.started_snapshot_path = os.path.abspath(self.get_parameter("snapshot_path").value)
         self.declare_parameter(
             "snapshot_on_exit",
             False,
@@ -174,6 +179,15 @@ class TurtlesimNode(Node):
         self._parameters_set([])
 
         self.canvas = self._open_canvas()
+        self.undeclare_parameter("headless")
+        self.declare_parameter(
+            "headless",
+            not self.canvas.windowed,
+            ParameterDescriptor(
+                description="Never open a window (true also when none could open)", read_only=True
+            ),
+            ignore_override=True,
+        )
         self.turtles: dict[str, TurtleEntry] = {}
         self._id_counter = 0  # for turtleN names
         self._spawned = 0  # for shell colours
@@ -239,7 +253,24 @@ class TurtlesimNode(Node):
         for parameter in parameters:
             if parameter.name == "snapshot_path" and not str(parameter.value):
                 return SetParametersResult(successful=False, reason="snapshot_path is empty")
+            if parameter.name == "snapshot_path":
+                outside = self.snapshot_path_outside(str(parameter.value))
+                if outside:
+                    return SetParametersResult(successful=False, reason=outside)
         return SetParametersResult(successful=True)
+
+    def snapshot_path_outside(self, value: str) -> str | None:
+        """Why a snapshot may not be written to value (None: it may): only in the folder
+        turtlesim was started in, links followed, or to the path it was started with."""
+        path = os.path.abspath(value)
+        if path == self.started_snapshot_path:
+            return None
+        if os.path.commonpath([os.path.realpath(path), self.home]) == self.home:
+            return None
+        return (
+            f"snapshot_path {value} is outside the folder turtlesim was started in "
+            f"({self.home}): only a path in there may be set while it runs"
+        )
 
     def _parameters_set(self, _parameters: list[Parameter]) -> None:
         # Read here once, not every update: 62.5 updates/s times every turtle's colour sensor.
@@ -252,17 +283,25 @@ class TurtlesimNode(Node):
         self._snapshot_requested.set()
 
     def save_snapshot(self, path: str | None = None) -> str:
-        """Write the canvas as it looks now to a PNG; return the absolute path."""
-        path = os.path.abspath(path or self.get_parameter("snapshot_path").value)
+        """Write the canvas as it looks now to a PNG: to path (trusted: this process names
+        it) or to snapshot_path (checked again: the folder may have changed since it was set).
+        Return the absolute path; canvas.SnapshotRefused says why nothing was written."""
+        if path is None:
+            path = self.get_parameter("snapshot_path").value
+            outside = self.snapshot_path_outside(path)
+            if outside:
+                raise canvas.SnapshotRefused(outside)
+        path = os.path.abspath(path)
         with self._lock:
             turtles = [entry.turtle for entry in self.turtles.values()]
-            self.canvas.save_png(path, self.background, turtles)
+            picture = self.canvas.snapshot(self.background, turtles)
+        canvas.write_snapshot(path, picture)
         return path
 
     def _write_snapshot(self) -> tuple[bool, str]:
         try:
             path = self.save_snapshot()
-        except (OSError, canvas.pygame.error) as error:
+        except canvas.SnapshotRefused as error:
             self.get_logger().error(f"Could not write the snapshot: {error}")
             return False, str(error)
         self.get_logger().info(f"Wrote the canvas to {path}")
@@ -279,6 +318,7 @@ class TurtlesimNode(Node):
         by a logger of its own, after the node (and its /rosout publisher) is gone.
         """
         path = self.get_parameter("snapshot_path").value
+        outside = self.snapshot_path_outside(path)
         wanted = self.get_parameter("snapshot_on_exit").value
         logger = get_logger(self.get_name())
         # An action server holds the node: destroyed first, so that destroy_node() really
@@ -288,8 +328,10 @@ class TurtlesimNode(Node):
         self.destroy_node()
         if wanted:
             try:
+                if outside:
+                    raise canvas.SnapshotRefused(outside)
                 logger.info(f"Wrote the canvas to {self.save_snapshot(path)}")
-            except (OSError, canvas.pygame.error) as error:
+            except canvas.SnapshotRefused as error:
                 logger.error(f"Could not write the snapshot: {error}")
         self.canvas.close()
 

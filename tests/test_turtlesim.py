@@ -15,6 +15,8 @@ import pytest
 from action_msgs.msg import GoalStatus
 from geometry_msgs.msg import Twist
 from helpers import spin_until
+from rcl_interfaces.msg import SetParametersResult
+from rcl_interfaces.srv import SetParameters
 from rclpy.action import ActionClient
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -23,6 +25,7 @@ from turtlesim.action import RotateAbsolute
 from turtlesim.msg import Color, Pose
 from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
 
+from ros_tutorials_turtlesim import canvas
 from ros_tutorials_turtlesim.canvas import to_pixels
 from ros_tutorials_turtlesim.draw_square import DrawSquare
 from ros_tutorials_turtlesim.simulation import (
@@ -103,7 +106,9 @@ class Probe:
 
 
 @pytest.fixture
-def sim(context, executor) -> Iterator[TurtlesimNode]:
+def sim(context, executor, tmp_path, monkeypatch) -> Iterator[TurtlesimNode]:
+    """turtlesim started in a folder of its own (tmp_path), where its snapshots go."""
+    monkeypatch.chdir(tmp_path)
     node = TurtlesimNode(context=context, parameter_overrides=[Parameter("headless", value=True)])
     executor.add_node(node)
     yield node
@@ -341,7 +346,85 @@ def test_snapshot_service_writes_the_png(sim, probe, tmp_path):
     assert image.get_size() == (500, 500)
     sim.set_parameters([Parameter("snapshot_path", value=str(tmp_path / "missing" / "x.png"))])
     answer = probe.call(Trigger, "/turtlesim/snapshot")
-    assert not answer.success and answer.message
+    missing = tmp_path / "missing" / "x.png"
+    assert (
+        not answer.success
+        and answer.message == f"cannot write {missing}: No such file or directory"
+    )
+
+
+def set_remotely(probe: Probe, name: str, value: str) -> SetParametersResult:
+    """What `ros2 param set /turtlesim NAME VALUE` from any process of the domain does: a
+    call of the node's set_parameters service."""
+    message = Parameter(name, value=value).to_parameter_msg()
+    return probe.call(SetParameters, "/turtlesim/set_parameters", parameters=[message]).results[0]
+
+
+def test_a_snapshot_path_outside_the_start_folder_is_refused(
+    sim, probe, tmp_path, tmp_path_factory
+):
+    """Any process of the domain (on a shared classroom machine, another user's) can set
+    parameters and call services: it cannot make turtlesim write outside the folder turtlesim
+    was started in, not through a link in that folder either."""
+    victim = tmp_path_factory.mktemp("elsewhere") / "notes.txt"
+    victim.write_text("my notes")
+    (tmp_path / "link.png").symlink_to(victim)
+    home = tmp_path.resolve()
+    for value in (str(victim), "link.png"):
+        result = set_remotely(probe, "snapshot_path", value)
+        assert not result.successful
+        assert result.reason == (
+            f"snapshot_path {value} is outside the folder turtlesim was started in ({home}): "
+            "only a path in there may be set while it runs"
+        )
+    assert sim.get_parameter("snapshot_path").value == "turtlesim.png"
+    # A link made after the path was set: seen when the snapshot is written.
+    assert set_remotely(probe, "snapshot_path", "later.png").successful
+    (tmp_path / "later.png").symlink_to(victim)
+    answer = probe.call(Trigger, "/turtlesim/snapshot")
+    assert not answer.success
+    assert answer.message.startswith("snapshot_path later.png is outside the folder")
+    assert victim.read_text() == "my notes"
+    # In the folder, in a folder of it: written.
+    (tmp_path / "pictures").mkdir()
+    assert set_remotely(probe, "snapshot_path", "pictures/one.png").successful
+    answer = probe.call(Trigger, "/turtlesim/snapshot")
+    assert answer.success and answer.message == str(tmp_path / "pictures" / "one.png")
+
+
+def test_a_snapshot_never_replaces_another_file(sim, probe, tmp_path):
+    """Only an earlier snapshot is replaced; any other file (a PNG of another program too)
+    is left as it is, and the service says why."""
+    notes = tmp_path / "notes.png"
+    notes.write_bytes(b"not a picture")
+    other = tmp_path / "other.png"
+    pygame.image.save(pygame.Surface((500, 500)), str(other))
+    before = other.read_bytes()
+    for path in (notes, other, tmp_path):
+        assert set_remotely(probe, "snapshot_path", str(path)).successful
+        answer = probe.call(Trigger, "/turtlesim/snapshot")
+        assert not answer.success
+        assert answer.message == f"{path} exists and is not a turtlesim snapshot: not overwritten"
+    assert notes.read_bytes() == b"not a picture" and other.read_bytes() == before
+    assert set_remotely(probe, "snapshot_path", "snap.png").successful
+    for _ in range(2):  # the second replaces the first
+        assert probe.call(Trigger, "/turtlesim/snapshot").success
+    assert pygame.image.load(str(tmp_path / "snap.png")).get_size() == (500, 500)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.png", "other.png", "snap.png"]
+
+
+def test_a_snapshot_that_cannot_be_written_leaves_nothing(sim, probe, tmp_path):
+    """A write that fails (/dev/full, a full disk) answers success=False with the reason,
+    and no partial file is left: the PNG goes to a file of its own first, renamed when whole."""
+    with pytest.raises(canvas.SnapshotRefused) as refused:
+        sim.save_snapshot("/dev/full")  # a path this process names: only the file rule holds
+    assert str(refused.value) == "/dev/full exists and is not a turtlesim snapshot: not overwritten"
+    with pytest.raises(canvas.SnapshotRefused) as refused:
+        canvas.write_snapshot(str(tmp_path / "missing" / "x.png"), b"data")
+    assert str(refused.value) == (
+        f"cannot write {tmp_path / 'missing' / 'x.png'}: No such file or directory"
+    )
+    assert list(tmp_path.iterdir()) == []
 
 
 def _action_graph(node: Node, turtle: str) -> str:

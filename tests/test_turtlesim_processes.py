@@ -17,7 +17,7 @@ import time
 import pygame
 import pytest
 from geometry_msgs.msg import Twist
-from helpers import BIN, TIMEOUT, ok, retry_until, spin_until
+from helpers import BIN, TIMEOUT, NodeProcess, ok, retry_until, spin_until
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from turtlesim.msg import Pose
@@ -337,8 +337,31 @@ def test_a_display_that_cannot_open_means_headless_with_a_warning(node_process):
     )
     sim.wait_for_text("Spawning turtle [turtle1]")
     assert "Running headless: no window could open on DISPLAY=:4242" in sim.output
+    # The parameter says what turtlesim does, not what it was asked (issue 36).
+    assert "    headless: true\n" in ok("ros2", "param", "dump", "/turtlesim")
     assert sim.interrupt() == 0
     assert "Traceback" not in sim.output
+
+
+def test_a_snapshot_on_a_full_disk_answers_false_and_leaves_nothing(ros_domain, tmp_path):
+    """A disk that takes no more (here a limit on the size of a file, `prlimit --fsize`, which
+    write() meets as it meets a full disk): success=False with the reason, and no file, not
+    even an empty one."""
+    target = tmp_path / "full.png"
+    sim = NodeProcess(
+        "-m", "ros_tutorials_turtlesim.turtlesim_node",
+        "--ros-args", "-p", f"snapshot_path:={target}", "--disable-external-lib-logs",
+        env=HEADLESS, prefix=("prlimit", "--fsize=2048"),
+    )  # fmt: skip
+    try:
+        sim.wait_for_text("Spawning turtle [turtle1]")
+        answer = ok("ros2", "service", "call", "/turtlesim/snapshot", "std_srvs/srv/Trigger")
+        reason = f"cannot write {target}: File too large (nothing written)"
+        assert f"success=False, message='{reason}'" in answer
+        assert list(tmp_path.iterdir()) == []
+        sim.wait_for_text(f"Could not write the snapshot: {reason}")
+    finally:
+        sim.kill()
 
 
 def test_ctrl_c_then_sigterm_at_once_still_closes_cleanly(node_process):

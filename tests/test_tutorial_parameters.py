@@ -141,6 +141,8 @@ def test_list_options_describe_and_delete(turtlesim):
     # prefixes are namespaces ('qos_overrides' for 'qos_overrides.x'), as rclpy lists them
     assert page("ros2 param list /turtlesim --param-prefixes background") == ""
     assert page("ros2 param get /turtlesim holonomic") == "Boolean value is: False\n"
+    # started without a display: headless, and the parameter says so
+    assert page("ros2 param get /turtlesim headless") == "Boolean value is: True\n"
     assert page("ros2 param get /turtlesim snapshot_path --hide-type") == "turtlesim.png\n"
     described = page("ros2 param describe /turtlesim background_r headless")
     assert described.splitlines() == [
@@ -153,7 +155,7 @@ def test_list_options_describe_and_delete(turtlesim):
         "    Step: 1",
         "Parameter name: headless",
         "  Type: boolean",
-        "  Description: Never open a window",
+        "  Description: Never open a window (true also when none could open)",
         "  Constraints:",
         "    Read only: true",
     ]
