@@ -33,7 +33,13 @@ from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop, wait_f
 from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
 
 CANVAS = "/turtlesim/_canvas/compressed"
-LINK = r"http://\S+"  # the viewer prints where it listens
+LINK = r"http://\S+"  # the viewer prints where it listens, with its token
+
+
+def _ws_url(link: str) -> str:
+    """The viewer's WebSocket, with the token of the link it printed."""
+    page, _, query = link.partition("?")
+    return f"{page}ws?{query}"
 
 
 FAST = "/fast"  # the 1 kHz topic of the load test
@@ -49,13 +55,13 @@ def _rss_mib(pid: int) -> float:
 
 
 def _stalled_tab(url: str) -> socket.socket:
-    """A tab that opens the WebSocket and then never reads: its socket's buffers fill up."""
-    host, port = re.match(r"http://([^:/]+):(\d+)/", url).groups()
+    """A tab that opens the WebSocket (url) and then never reads: its socket's buffers fill."""
+    host, port, path = re.match(r"http://([^:/]+):(\d+)(/\S*)", url).groups()
     sock = socket.create_connection((host, int(port)))
     sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
     key = base64.b64encode(os.urandom(16)).decode()
     sock.sendall(
-        f"GET /ws HTTP/1.1\r\nHost: {host}:{port}\r\nUpgrade: websocket\r\n"
+        f"GET {path} HTTP/1.1\r\nHost: {host}:{port}\r\nUpgrade: websocket\r\n"
         f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n"
         "Sec-WebSocket-Version: 13\r\n\r\n".encode()
     )
@@ -86,7 +92,7 @@ class Tabs(threading.Thread):
             await asyncio.gather(*(self._one(client, i) for i in range(TABS)))
 
     async def _one(self, client: aiohttp.ClientSession, i: int) -> None:
-        async with client.ws_connect(self.url + "ws") as ws:
+        async with client.ws_connect(self.url) as ws:
             await ws.send_str(json.dumps({"watch": FAST}))
             while not self.stop.is_set():
                 try:
@@ -117,7 +123,7 @@ class Tab(threading.Thread):
             self.error = error
 
     async def _read(self) -> None:
-        async with aiohttp.ClientSession() as client, client.ws_connect(self.url + "ws") as ws:
+        async with aiohttp.ClientSession() as client, client.ws_connect(self.url) as ws:
             while not self.stop.is_set():
                 try:
                     message = await ws.receive(timeout=0.2)
@@ -158,7 +164,7 @@ def _run(turtles: int, seconds: float) -> dict:
         bench.drive(bench.spawn(turtles))
         bench.spin_for(2.0)
         idle = _measure(bench, [sim.pid, viewer.pid], seconds)
-        tab = Tab(link[0])
+        tab = Tab(_ws_url(link[0]))
         tab.start()
         bench.spin_until(lambda: len(tab.arrivals) > 5 or tab.error is not None)
         if tab.error is not None:
@@ -238,9 +244,9 @@ def load(seconds: float = 10.0) -> list[Row]:
             published[0] += 1
 
         bench.node.create_timer(0.001, publish)
-        tabs = Tabs(link[0])
+        tabs = Tabs(_ws_url(link[0]))
         tabs.start()
-        stalled = _stalled_tab(link[0])
+        stalled = _stalled_tab(_ws_url(link[0]))
         bench.spin_until(lambda: min(tabs.topic) > 5 or tabs.error is not None)
         if tabs.error is not None:
             raise tabs.error

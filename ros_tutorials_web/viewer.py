@@ -3,6 +3,7 @@
     ros2 run ros_tutorials_web viewer              # http://127.0.0.1:8080/ (or a free port)
     ros2 run ros_tutorials_web viewer --port 9000  # exactly this port
     ros2 run ros_tutorials_web viewer --host 0.0.0.0   # reachable from other machines too
+    ros2 run ros_tutorials_web viewer --allow-origin https://8080-abc.example.dev  # a proxy
 
 One page shows, live: every turtlesim's canvas (its ~/_canvas/compressed topic, any
 sensor_msgs/msg/CompressedImage topic in fact), the graph as rqt_graph draws it, the /rosout
@@ -13,6 +14,16 @@ subscribes: it changes nothing in the graph.
 The web side is aiohttp (HTTP and WebSockets on asyncio); the page is static files in
 static/. Each browser tab gets, per stream, only the newest value it has not sent yet: a
 slow or stalled tab misses frames, it never makes the viewer queue them.
+
+Who may look: the viewer prints a link with a token made for this run (``/?token=...``);
+opening it sets a cookie for this host and port, and every request but the page's own files
+needs the token (the cookie, ``?token=``, or ``Authorization: token ...``). As Jupyter and VS
+Code's servers do, a request whose ``Host`` is not a name the viewer serves is refused (DNS
+rebinding: a web site whose name resolves to 127.0.0.1), and so is one whose ``Origin`` is
+not the viewer's own page (any web site the learner visits can open a WebSocket to
+127.0.0.1): a 403 with the reason. A cloud editor's forwarded port shows the page under
+another origin: ``--allow-origin`` names it. With ``--host 0.0.0.0`` (or ``::``) any ``Host``
+is accepted, the token still guards.
 
 HTTP: ``/`` the page, ``/static/...`` its files, ``/ws`` the WebSocket,
 ``/api/graph.svg`` the graph picture, ``/api/topics`` topics and types (JSON),
@@ -33,15 +44,20 @@ import argparse
 import asyncio
 import contextlib
 import errno
+import hmac
+import ipaddress
 import json
 import math
+import secrets
 import signal
 import socket
 import struct
 import sys
 import threading
+import urllib.parse
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Awaitable, Callable, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -75,6 +91,21 @@ def port_number(text: str) -> int:
     return port
 
 
+def origin(text: str) -> str:
+    """An argparse type: a web origin, scheme://host[:port], as a browser's Origin header
+    spells it (lower case, no path)."""
+    problem = f"{text!r} is not an origin: http(s)://host[:port], e.g. https://8080-x.example.dev"
+    url = urllib.parse.urlsplit(text.strip())
+    try:
+        url.port  # noqa: B018 - raises ValueError for a port that is not a number
+    except ValueError:
+        raise argparse.ArgumentTypeError(problem) from None
+    has_more = url.path not in ("", "/") or url.query or url.fragment or "@" in url.netloc
+    if url.scheme not in ("http", "https") or not url.hostname or has_more:
+        raise argparse.ArgumentTypeError(problem)
+    return f"{url.scheme}://{url.netloc.lower()}"
+
+
 def parse_args(argv: Sequence[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
         prog="viewer", description="The running ROS system in a browser: turtlesim, graph, log"
@@ -89,6 +120,16 @@ def parse_args(argv: Sequence[str]) -> argparse.Namespace:
         "--host",
         default=DEFAULT_HOST,
         help=f"the address to listen on (default {DEFAULT_HOST}: this machine only)",
+    )
+    parser.add_argument(
+        "--allow-origin",
+        action="append",
+        default=[],
+        type=origin,
+        metavar="ORIGIN",
+        dest="allow_origins",
+        help="also accept the page shown from ORIGIN (a cloud editor's forwarded port, e.g. "
+        "https://8080-abc.example.dev); may be given more than once",
     )
     return parser.parse_args(argv)
 
@@ -119,11 +160,97 @@ def listen(host: str, port: int | None) -> socket.socket:
         raise SystemExit(f"error: port {wanted} on {host} {reason}") from None
 
 
-def link(sock: socket.socket) -> str:
-    host, port = sock.getsockname()[:2]
-    if host in ("0.0.0.0", "::"):
-        host = "127.0.0.1"  # what a browser on this machine opens; others use its address
-    return f"http://[{host}]:{port}/" if ":" in host else f"http://{host}:{port}/"
+WILDCARDS = ("0.0.0.0", "::")  # every address of the machine
+LOOPBACK_NAMES = ("localhost", "127.0.0.1", "::1")
+
+
+def link(host: str, port: int, token: str) -> str:
+    """The address a browser opens: the page, with this run's token."""
+    where = f"[{host}]" if ":" in host else host
+    return f"http://{where}:{port}/?token={token}"
+
+
+def is_loopback(address: str) -> bool:
+    try:
+        return ipaddress.ip_address(address).is_loopback
+    except ValueError:
+        return False
+
+
+def host_name(header: str) -> str | None:
+    """The name in a Host header (without its port, lower case), or None if it is not one."""
+    try:
+        return urllib.parse.urlsplit("//" + header).hostname
+    except ValueError:
+        return None
+
+
+@dataclass
+class Guard:
+    """Who may look: the Host, Origin and token checks every request goes through."""
+
+    token: str
+    cookie: str  # the cookie's name: one per port (cookies do not tell ports apart)
+    hosts: set[str] | None  # names accepted in Host; None: any (listening on every address)
+    origins: set[str] = field(default_factory=set)  # pages of other origins allowed
+    told: set[str] = field(default_factory=set)  # kinds of refusal logged once already
+
+    @classmethod
+    def for_socket(cls, sock: socket.socket, host: str, origins: Sequence[str]) -> Guard:
+        address, port = sock.getsockname()[:2]
+        if address in WILDCARDS:
+            hosts = None
+        else:
+            hosts = {*LOOPBACK_NAMES, address.lower(), host.lower()}
+            hosts.update(urllib.parse.urlsplit(o).hostname or "" for o in origins)
+        token = secrets.token_urlsafe(24)
+        return cls(token, f"ros_viewer_token_{port}", hosts, set(origins))
+
+    def refusal(self, request: web.Request) -> tuple[str, str] | None:
+        """(kind, reason) when the request is refused, None when it may pass."""
+        host = request.headers.get("Host", "")
+        name = host_name(host)
+        if not name or (self.hosts is not None and name not in self.hosts):
+            return "host", f"Host {host!r} is not a name this viewer serves"
+        page = request.headers.get("Origin")
+        if page is not None:
+            own = {f"http://{host.lower()}", f"https://{host.lower()}"}
+            if page.lower() not in own | self.origins:
+                return "origin", (
+                    f"Origin {page!r} is not this viewer's page (a proxy's page is allowed "
+                    "with --allow-origin ORIGIN)"
+                )
+        if request.path.startswith("/static/"):
+            return None  # the page's own files: nothing in them to hide
+        if not hmac.compare_digest(self.given_token(request).encode(), self.token.encode()):
+            return "token", "no valid token: open the link the viewer printed (with ?token=)"
+        return None
+
+    def given_token(self, request: web.Request) -> str:
+        words = request.headers.get("Authorization", "").split()
+        if len(words) == 2 and words[0].lower() == "token":
+            return words[1]
+        return request.query.get("token") or request.cookies.get(self.cookie, "")
+
+    def middleware(self, say: Callable[[str], None]) -> Any:
+        @web.middleware
+        async def check(
+            request: web.Request, handler: Callable[[web.Request], Awaitable[web.StreamResponse]]
+        ) -> web.StreamResponse:
+            refused = self.refusal(request)
+            if refused is not None:
+                kind, reason = refused
+                if kind not in self.told:  # once per kind: a page retrying is not a flood
+                    self.told.add(kind)
+                    say(f"Refused {request.method} {request.path}: {reason}")
+                return web.Response(status=403, text=f"403 Forbidden: {reason}\n")
+            response = await handler(request)
+            if request.query.get("token") == self.token and request.path == "/":
+                # The link was opened: the page's WebSocket and reloads carry the cookie.
+                response.set_cookie(self.cookie, self.token, httponly=True, samesite="Strict")
+            return response
+
+        return check
 
 
 def numbers(data: dict[str, Any], prefix: str = "") -> dict[str, float | None]:
@@ -309,7 +436,7 @@ class Hub:
             self.pictures.clear()  # not subscribed any more: these will be old
 
 
-def make_app(hub: Hub) -> web.Application:
+def make_app(hub: Hub, guard: Guard, say: Callable[[str], None]) -> web.Application:
     async def page(_request: web.Request) -> web.FileResponse:
         return web.FileResponse(STATIC / "index.html")
 
@@ -343,7 +470,7 @@ def make_app(hub: Hub) -> web.Application:
                 await sender
         return ws
 
-    app = web.Application()
+    app = web.Application(middlewares=[guard.middleware(say)])
     app.router.add_get("/", page)
     app.router.add_get("/ws", websocket)
     app.router.add_get("/api/graph.svg", graph_svg)
@@ -353,7 +480,25 @@ def make_app(hub: Hub) -> web.Application:
     return app
 
 
-async def serve(sock: socket.socket) -> None:
+def greeting(sock: socket.socket, guard: Guard) -> list[str]:
+    """What the viewer says when it listens: the link, and a warning when other machines
+    can reach it."""
+    address, port = sock.getsockname()[:2]
+    if address in WILDCARDS:
+        local = link("127.0.0.1" if address == "0.0.0.0" else "::1", port, guard.token)
+        others = link(socket.gethostname(), port, guard.token)
+        lines = [f"Open {local} in a browser (Ctrl-C to stop); from other machines {others}"]
+    else:
+        lines = [f"Open {link(address, port, guard.token)} in a browser (Ctrl-C to stop)"]
+    if not is_loopback(address):
+        lines.append(
+            f"Listening on {address}, not only on this machine: anyone on the network who has "
+            "the link can watch the graph, /rosout and every topic (the viewer publishes nothing)"
+        )
+    return lines
+
+
+async def serve(sock: socket.socket, guard: Guard) -> None:
     """Serve until Ctrl-C or SIGTERM, with the ROS node spinning in a thread of its own."""
     loop = asyncio.get_running_loop()
     stop = asyncio.Event()
@@ -373,11 +518,16 @@ async def serve(sock: socket.socket) -> None:
 
     thread = threading.Thread(target=spin, name="ros", daemon=True)
     thread.start()
-    runner = web.AppRunner(make_app(hub), handle_signals=False, access_log=None)
+    logger = watcher.get_logger()
+    app = make_app(hub, guard, logger.warning)
+    runner = web.AppRunner(app, handle_signals=False, access_log=None)
     await runner.setup()
     try:
         await web.SockSite(runner, sock, shutdown_timeout=1.0).start()
-        watcher.get_logger().info(f"Open {link(sock)} in a browser (Ctrl-C to stop)")
+        first, *warnings = greeting(sock, guard)
+        logger.info(first)
+        for line in warnings:
+            logger.warning(line)
         await stop.wait()
     finally:
         for tab in list(hub.tabs):
@@ -395,10 +545,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = parse_args(user_args(argv))
     sock = listen(args.host, args.port)  # before ROS starts: a taken port is one line
+    guard = Guard.for_socket(sock, args.host, args.allow_origins)
     try:
         # Ctrl-C and SIGTERM stop the event loop, which then ends ROS in order.
         init(argv, signal_handler_options=SignalHandlerOptions.NO)
-        asyncio.run(serve(sock))
+        asyncio.run(serve(sock, guard))
     except KeyboardInterrupt:  # pressed before the event loop took Ctrl-C over
         pass
     finally:

@@ -24,9 +24,11 @@ from helpers import BIN, TIMEOUT, ok, run
 
 from ros_tutorials_turtlesim.canvas import png_bytes
 from ros_tutorials_turtlesim.simulation import DEFAULT_PEN
+from ros_tutorials_web.viewer import Guard, greeting
 
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
 CANVAS = "/turtlesim/_canvas/compressed"
+LINK = r"Open (http://127\.0\.0\.1:\d+/\?token=[\w-]{32}) in a browser"
 DRIVE = ("{linear: {x: 2.0}, angular: {z: 1.8}}", "{linear: {x: 2.0}, angular: {z: -1.8}}")
 
 
@@ -77,11 +79,17 @@ class Tab:
                 return result
 
 
+def at(link: str, path: str = "") -> str:
+    """The viewer's PATH, with the token of the link it printed (http://HOST:PORT/?token=T)."""
+    page, _, query = link.partition("?")
+    return f"{page}{path}?{query}"
+
+
 def with_tab(url: str, test: Callable[[Tab], Any]) -> Any:
     """Run the async test(tab) with a WebSocket open to the viewer."""
 
     async def session() -> Any:
-        async with aiohttp.ClientSession() as client, client.ws_connect(url + "ws") as ws:
+        async with aiohttp.ClientSession() as client, client.ws_connect(at(url, "ws")) as ws:
             return await test(Tab(ws))
 
     return asyncio.run(session())
@@ -101,7 +109,7 @@ def viewer(class_own_domain, class_node_process) -> str:
         str(BIN / "ros2"), "run", "ros_tutorials_web", "viewer", "--port", "0"
     )
     line = process.wait_for_text("in a browser")[-1]
-    found = re.search(r"Open (http://127\.0\.0\.1:\d+/) in a browser", line)
+    found = re.search(LINK, line)
     assert found, line
     return found.group(1)
 
@@ -128,26 +136,26 @@ class TestViewer:
                     text = await page.text()
                     assert 'src="static/viewer.js"' in text and "http" not in text.split("-->")[1]
                 for name in ("viewer.js", "viewer.css"):
-                    async with client.get(viewer + "static/" + name) as file:
+                    async with client.get(at(viewer, "static/" + name)) as file:
                         assert file.status == 200
                 deadline = time.monotonic() + TIMEOUT
                 while True:  # the graph is looked at every second
-                    async with client.get(viewer + "api/topics") as answer:
+                    async with client.get(at(viewer, "api/topics")) as answer:
                         topics = await answer.json()
                     if "/turtle1/pose" in topics or time.monotonic() > deadline:
                         break
                     await asyncio.sleep(0.2)
                 assert topics["/turtle1/pose"] == ["turtlesim/msg/Pose"]
                 assert CANVAS not in topics  # hidden, as `ros2 topic list` hides it
-                async with client.get(viewer + "api/graph.svg") as answer:
+                async with client.get(at(viewer, "api/graph.svg")) as answer:
                     svg = await answer.text()
                     assert answer.content_type == "image/svg+xml"
                 assert svg.startswith("<svg") and ">/turtlesim</text>" in svg
                 assert "web_viewer" not in svg  # the viewer leaves itself out, as rqt_graph
-                async with client.get(viewer + "api/log") as answer:
+                async with client.get(at(viewer, "api/log")) as answer:
                     log = await answer.json()
                 assert any(e["msg"].startswith("Spawning turtle [turtle1]") for e in log)
-                async with client.get(viewer + "no/such/page") as answer:
+                async with client.get(at(viewer, "no/such/page")) as answer:
                     assert answer.status == 404
 
         asyncio.run(check())
@@ -249,7 +257,7 @@ class TestViewer:
     def test_bad_messages_and_a_tab_gone_mid_stream(self, viewer: str) -> None:
         async def rude() -> None:
             async with aiohttp.ClientSession() as client:
-                ws = await client.ws_connect(viewer + "ws")
+                ws = await client.ws_connect(at(viewer, "ws"))
                 for junk in ("not json", '{"watch": 5}', '{"watch": "no_slash"}', "[]", "{}"):
                     await ws.send_str(junk)
                 await ws.send_bytes(b"\x00" * 1000)
@@ -269,6 +277,127 @@ class TestViewer:
             )
 
         with_tab(viewer, still_serves)
+
+    # --- who may look: Origin, Host, token (what Jupyter and VS Code's servers check) -----
+
+    def test_a_websocket_from_another_web_site_is_refused(self, viewer: str) -> None:
+        """Any web page the learner visits can open ws://127.0.0.1:PORT/ws; the browser says
+        whose page it is in Origin, and only the viewer's own page may connect."""
+        own_page = viewer.split("/?")[0]  # http://127.0.0.1:PORT
+
+        async def check() -> None:
+            async with aiohttp.ClientSession() as client:
+                with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
+                    await client.ws_connect(at(viewer, "ws"), origin="https://evil.example")
+                assert refused.value.status == 403
+                async with client.get(at(viewer, "api/log"), headers={"Origin": "null"}) as got:
+                    assert got.status == 403
+                    assert (await got.text()).startswith(
+                        "403 Forbidden: Origin 'null' is not this viewer's page"
+                    )
+                async with client.ws_connect(at(viewer, "ws"), origin=own_page) as ws:
+                    assert not ws.closed  # the upgrade was answered: 101
+
+        asyncio.run(check())
+
+    def test_a_request_for_another_host_name_is_refused(self, viewer: str) -> None:
+        """DNS rebinding: a web site whose name is made to resolve to 127.0.0.1 reaches the
+        viewer with that name in Host, and the browser lets its page read the answers. The
+        viewer answers only for the names it listens on."""
+        port = int(re.search(r":(\d+)/", viewer).group(1))
+
+        async def check() -> None:
+            async with aiohttp.ClientSession() as client:
+                for path in ("", "api/topics", "api/log", "ws"):
+                    rebound = {"Host": f"rebind.example:{port}"}
+                    async with client.get(at(viewer, path), headers=rebound) as got:
+                        assert got.status == 403, path
+                        assert await got.text() == (
+                            f"403 Forbidden: Host 'rebind.example:{port}' is not a name this "
+                            "viewer serves\n"
+                        )
+                for name in ("localhost", "127.0.0.1"):
+                    ours = {"Host": f"{name}:{port}"}
+                    async with client.get(at(viewer, "api/log"), headers=ours) as got:
+                        assert got.status == 200, name
+
+        asyncio.run(check())
+
+    def test_the_token_is_needed(self, viewer: str) -> None:
+        """Without the token of the printed link: 403, for the page, the API and the
+        WebSocket. Opening the link sets a cookie that carries it from then on."""
+        page, token = viewer.split("?token=")
+        port = int(re.search(r":(\d+)/", viewer).group(1))
+
+        async def check() -> None:
+            async with aiohttp.ClientSession() as client:
+                for url in (page, page + "api/log", page + "?token=wrong", page + "api/log?token="):
+                    async with client.get(url) as got:
+                        assert got.status == 403, url
+                        assert "no valid token" in await got.text()
+                with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
+                    await client.ws_connect(page + "ws")
+                assert refused.value.status == 403
+                async with client.get(page + "static/viewer.js") as got:
+                    assert got.status == 200  # the page's own files hide nothing
+                async with client.get(
+                    page + "api/log", headers={"Authorization": f"token {token}"}
+                ) as got:
+                    assert got.status == 200
+                async with client.get(viewer) as got:
+                    assert got.status == 200
+                    cookie = got.cookies[f"ros_viewer_token_{port}"]
+                assert cookie.value == token
+                assert cookie["httponly"] and cookie["samesite"] == "Strict"
+                with_cookie = {"Cookie": f"ros_viewer_token_{port}={token}"}
+                async with client.get(page, headers=with_cookie) as got:
+                    assert got.status == 200
+
+        asyncio.run(check())
+
+
+def test_a_forwarded_port_is_allowed_by_name(own_domain, node_process) -> None:
+    """A cloud editor shows the page from an origin of its own (its forwarded port), and its
+    proxy may pass that name on in Host: --allow-origin names it, and only it."""
+    forwarded = "https://8080-abc.example.dev"
+    process = node_process(
+        str(BIN / "ros2"), "run", "ros_tutorials_web", "viewer", "--port", "0",
+        "--allow-origin", forwarded,
+    )  # fmt: skip
+    link = re.search(LINK, process.wait_for_text("in a browser")[-1]).group(1)
+
+    async def check() -> None:
+        async with aiohttp.ClientSession() as client:
+            async with client.ws_connect(at(link, "ws"), origin=forwarded) as ws:
+                assert not ws.closed
+            proxied = {"Host": "8080-abc.example.dev", "Origin": forwarded}
+            async with client.get(at(link, "api/log"), headers=proxied) as got:
+                assert got.status == 200
+            with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
+                await client.ws_connect(at(link, "ws"), origin="https://8081-abc.example.dev")
+            assert refused.value.status == 403
+
+    asyncio.run(check())
+    # The first refusal of a kind is said in the viewer's terminal too.
+    process.wait_for_text("Refused GET /ws: Origin 'https://8081-abc.example.dev'")
+
+
+def test_every_address_says_so() -> None:
+    """--host 0.0.0.0: a link that works here, one for other machines, and a warning that
+    anyone on the network can now watch. (A socket bound, never listening: nothing reachable.)"""
+    with socket.socket() as sock:
+        sock.bind(("0.0.0.0", 0))
+        port = sock.getsockname()[1]
+        guard = Guard.for_socket(sock, "0.0.0.0", [])
+        lines = greeting(sock, guard)
+    here = f"http://127.0.0.1:{port}/?token={guard.token}"
+    there = f"http://{socket.gethostname()}:{port}/?token={guard.token}"
+    assert lines == [
+        f"Open {here} in a browser (Ctrl-C to stop); from other machines {there}",
+        "Listening on 0.0.0.0, not only on this machine: anyone on the network who has the "
+        "link can watch the graph, /rosout and every topic (the viewer publishes nothing)",
+    ]
+    assert guard.hosts is None  # any name: other machines use theirs for this one
 
 
 class TestBadInput:
@@ -295,6 +424,14 @@ class TestBadInput:
         assert result.returncode == 1
         assert result.stderr == (
             "error: cannot listen on 192.0.2.1: not an address of this machine\n"
+        )
+
+    def test_allow_origin_not_an_origin(self) -> None:
+        result = run("viewer", "--allow-origin", "https://example.dev/path")
+        assert result.returncode == 2, result.stderr
+        assert result.stderr.splitlines()[-1] == (
+            "viewer: error: argument --allow-origin: 'https://example.dev/path' is not an "
+            "origin: http(s)://host[:port], e.g. https://8080-x.example.dev"
         )
 
     def test_unknown_host(self) -> None:

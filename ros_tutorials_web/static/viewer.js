@@ -18,6 +18,8 @@ function connect() {
   // Relative to the page: works behind a cloud editor's forwarded-port proxy too.
   const url = new URL("ws", location.href);
   url.protocol = location.protocol === "https:" ? "wss:" : "ws:";
+  // The link's ?token=, where a browser keeps no cookie (the viewer set one otherwise).
+  url.search = location.search;
   socket = new WebSocket(url);
   socket.binaryType = "arraybuffer";
   socket.onopen = () => {
