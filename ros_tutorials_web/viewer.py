@@ -211,13 +211,13 @@ class Guard:
         host = request.headers.get("Host", "")
         name = host_name(host)
         if not name or (self.hosts is not None and name not in self.hosts):
-            return "host", f"Host {host!r} is not a name this viewer serves"
+            return "host", f"Host {host[:100]!r} is not a name this viewer serves"
         page = request.headers.get("Origin")
         if page is not None:
             own = {f"http://{host.lower()}", f"https://{host.lower()}"}
             if page.lower() not in own | self.origins:
                 return "origin", (
-                    f"Origin {page!r} is not this viewer's page (a proxy's page is allowed "
+                    f"Origin {page[:100]!r} is not this viewer's page (a proxy's page is allowed "
                     "with --allow-origin ORIGIN)"
                 )
         if request.path.startswith("/static/"):
