@@ -9,12 +9,7 @@ from launch._base import caller_where
 from launcher import LaunchError
 
 # Names whose absence has a reason worth saying, and what to do instead.
-EXPLAINED = {
-    name: "rclpy has no component container in ROS 2 Jazzy, so composable nodes cannot be "
-    "loaded here; start each component as a node of its own (launch_ros.actions.Node with the "
-    "package's executable)"
-    for name in ("ComposableNodeContainer", "LoadComposableNodes", "ComposableNode")
-}
+EXPLAINED: dict[str, str] = {}
 
 
 def module_getattr(module: str, names: Callable[[], list[str]]) -> Callable[[str], Any]:

@@ -31,14 +31,15 @@ class _OnEvent(EventHandler):
     def register(self, context: LaunchContext) -> None:
         index = None
         if self.target_action is not None:
-            index = context.resolver.process_index.get(id(self.target_action))
+            index = context.state.process_index.get(id(self.target_action))
             if index is None:  # its target is executed later: register it then
-                context.resolver.deferred_handlers.append((self, context))
+                context.state.deferred_handlers.append((self, context))
                 return
         self.register_at(context, When(self.event, index))
 
     def register_at(self, context: LaunchContext, when: When) -> None:
-        inner = LaunchContext(context.scope.child(when=when), {"runtime": True})
+        inner = context.child(when=when)
+        inner.locals = {"runtime": True}
         if self.actions is None:
             return
         if callable(self.actions) and not isinstance(self.actions, Action):
@@ -47,7 +48,7 @@ class _OnEvent(EventHandler):
             def call(info: dict) -> list[Step]:
                 return run_handler_function(function, info, inner, self, when)
 
-            context.resolver.add_step(Step(when, "call", call=call, where=self.where))
+            context.sink.add_step(Step(when, "call", call=call, where=self.where))
             return
         actions = self.actions if isinstance(self.actions, (list, tuple)) else [self.actions]
         for action in actions:

@@ -1,0 +1,46 @@
+"""ROS names as launch files write them, the one place for both front-ends and the launch
+model: namespaces joined, node and namespace parts checked, remaps checked as rcl checks them,
+nested parameter mappings flattened into names."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from ros_tutorials_common.names import TOKEN, valid_remap_name
+
+_TOKEN = re.compile(TOKEN)
+
+
+def join_namespace(base: str, name: str) -> str:
+    """Namespace ``name`` relative to ``base`` (absolute if it starts with /)."""
+    full = name if name.startswith("/") else f"{base.rstrip('/')}/{name}"
+    return "/" + "/".join(part for part in full.split("/") if part)
+
+
+def remap_problem(name: str, side: str) -> str | None:
+    """Why rcl would refuse ``name`` as the ``side`` ("from" or "to") of a remap; else None."""
+    if valid_remap_name(name, side):
+        return None
+    return (
+        f"remap {side}={name!r} is not a valid ROS name (parts of letters, digits and _, "
+        "not starting with a digit, separated by one /; ~/ only at the start)"
+    )
+
+
+def valid_name(name: str) -> bool:
+    """One part of a ROS name: ASCII letters, digits and _, not starting with a digit (rcl
+    refuses 'pé' and 'nsü', which str.isalnum takes)."""
+    return _TOKEN.fullmatch(name) is not None
+
+
+def flatten(value: Any, separator: str, prefix: str = "") -> list[tuple[str, Any]]:
+    """A mapping as (name, value) pairs, nested keys joined by ``separator``: "." for a ROS 2
+    node's parameters (launch_ros), "/" for roslaunch's parameter server keys."""
+    if not isinstance(value, dict):
+        return [(prefix, value)]
+    pairs = []
+    for key, item in value.items():
+        name = f"{prefix.rstrip(separator)}{separator}{key}" if prefix else str(key)
+        pairs += flatten(item, separator, name)
+    return pairs
