@@ -155,19 +155,11 @@ class LogInfo(Action):
         self.msg = msg
 
     def execute(self, context: LaunchContext) -> None:
-        from launch.substitutions import LocalSubstitution
-
-        local = any(isinstance(part, LocalSubstitution) for part in normalize(self.msg))
-        if local and context.locals.get("runtime"):  # the event's values, when it happens
-            runtime = context
-
-            def call(info: dict) -> list[Step]:
-                from launch.events import event_from
-
-                runtime.locals["event"] = event_from(info)
-                return [Step(runtime.when, "log", perform(self.msg, runtime), where=self.where)]
-
-            context.sink.add_step(Step(context.when, "call", call=call, where=self.where))
+        parts = normalize(self.msg)
+        if context.locals.get("runtime") and not all(isinstance(p, str) for p in parts):
+            # In an event handler: performed when the event happens, as ros2 launch does
+            # (the event's values, an environment variable that is set by then).
+            context.sink.add_step(lazy_step(self, context, lambda: perform(self.msg, context)))
             return
         text = perform(self.msg, context)
         context.sink.add_step(Step(context.when, "log", text, where=self.where))
@@ -177,6 +169,25 @@ class LogInfo(Action):
             part if isinstance(part, str) else part.perform(context) for part in normalize(self.msg)
         )
         return Step(when, "log", text)
+
+
+def lazy_step(
+    action: Action, context: LaunchContext, text: Callable[[], str], kind: str = "log"
+) -> Step:
+    """A step of an event handler whose text is performed when the event happens, with the
+    event in ``context.locals``; a substitution that fails then shuts the launch down with
+    its one line, as it would end ros2 launch."""
+
+    def call(info: dict) -> list[Step]:
+        from launch.events import event_from
+
+        context.locals["event"] = event_from(info)
+        try:
+            return [Step(context.when, kind, text(), where=action.where)]
+        except LaunchError as error:
+            return [Step(context.when, "shutdown", str(error), where=action.where)]
+
+    return Step(context.when, "call", kind, call=call, where=action.where)
 
 
 class EmitEvent(Action):
@@ -192,6 +203,10 @@ class EmitEvent(Action):
                 f"EmitEvent({type(self.event).__name__}) is not supported here; only "
                 "EmitEvent(event=Shutdown(...))"
             )
+        if context.locals.get("runtime") and not isinstance(self.event.reason, str):
+            reason = lambda: perform(self.event.reason, context)  # noqa: E731
+            context.sink.add_step(lazy_step(self, context, reason, "shutdown"))
+            return
         reason = perform(self.event.reason, context)
         context.sink.add_step(Step(context.when, "shutdown", reason, where=self.where))
 

@@ -228,6 +228,8 @@ def format_plan(
     labels = [spec.label for spec in specs]
     for step in steps or []:
         what = {"log": f"log: {step.text}", "shutdown": f"shutdown: {step.text}"}
+        if step.kind == "call" and step.text in what:  # a log or shutdown made at the event
+            what["call"] = f"{step.text}: (its text when the event happens)"
         lines.append(f"{what.get(step.kind, 'call: a function of the launch file')}  "
                      f"({step.when.describe(labels)})")  # fmt: skip
     for spec in specs:

@@ -262,10 +262,12 @@ def test_using_event_handlers_becomes_processes_and_steps_that_wait(tutorial_pac
     assert ("log", "Turtlesim started, spawning turtle", When("start", 0)) in logs
     assert ("log", "Spawn finished", When("exit", 1)) in logs
     assert ("shutdown", "Window closed", When("exit", 0)) in logs
-    closed = f"{os.environ['USER']} closed the turtlesim window"
-    assert ("log", closed, When("exit", 0)) in logs
+    # EnvironmentVariable('USER') is read when the turtlesim exits, as ros2 launch reads it
+    (closed,) = [s for s in launch.steps if s.kind == "call" and s.when == When("exit", 0)]
+    (said,) = closed.call({"returncode": 0, "pid": 1})
+    assert said.text == f"{os.environ['USER']} closed the turtlesim window"
     calls = sorted(s.when.event for s in launch.steps if s.kind == "call")
-    assert calls == ["shutdown", "stdout"]  # the event's reason, and OnProcessIO's function
+    assert calls == ["exit", "shutdown", "stdout"]  # USER, the event's reason, OnProcessIO's
     # The functions run when their event happens, with its values.
     (shutdown,) = [s for s in launch.steps if s.kind == "call" and s.when.event == "shutdown"]
     (said,) = shutdown.call({"reason": "Window closed"})

@@ -75,6 +75,21 @@ def test_the_tutorials_are_one_plan_in_python_xml_and_yaml(tutorial_package, tmp
         assert plans["py"][-1][2].endswith("turtlesim2/sim background_r 200")
 
 
+def test_an_event_handlers_substitutions_are_performed_when_the_event_happens(
+    tutorial_package, monkeypatch
+):
+    # Using-Event-Handlers where USER is unset (a container, a service): the file loads, as
+    # it does with ros2 launch; only when the turtlesim exits is the variable read.
+    monkeypatch.delenv("USER", raising=False)
+    launch = resolve(tutorial_package / "example_event_handlers_launch.py", {}, Options())
+    (closed,) = [s for s in launch.steps if s.kind == "call" and s.when.event == "exit"]
+    (said,) = closed.call({"returncode": 0, "pid": 1})
+    assert said.kind == "shutdown" and "USER" in said.text
+    monkeypatch.setenv("USER", "learner")
+    (said,) = closed.call({"returncode": 0, "pid": 1})
+    assert (said.kind, said.text) == ("log", "learner closed the turtlesim window")
+
+
 # -- ROS 1 files people write ------------------------------------------------------------------
 
 
