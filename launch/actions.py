@@ -40,6 +40,9 @@ __all__ = [
 ]  # fmt: skip
 
 
+DEFAULT_OUTPUT_FORMAT = "[{this.process_description.final_name}] {line}"
+
+
 def seconds(value: Any, context: LaunchContext, where: str, what: str) -> float:
     """A period or a timeout: a number, or text or substitutions that give one."""
     text = value if isinstance(value, (int, float)) else perform(value, context)
@@ -156,7 +159,8 @@ class LogInfo(Action):
 
     def execute(self, context: LaunchContext) -> None:
         parts = normalize(self.msg)
-        if context.locals.get("runtime") and not all(isinstance(p, str) for p in parts):
+        plain = all(isinstance(p, str) for p in parts)
+        if context.locals.get("runtime") and (not plain or "once" in context.locals):
             # In an event handler: performed when the event happens, as ros2 launch does
             # (the event's values, an environment variable that is set by then).
             context.sink.add_step(lazy_step(self, context, lambda: perform(self.msg, context)))
@@ -179,8 +183,11 @@ def lazy_step(
     its one line, as it would end ros2 launch."""
 
     def call(info: dict) -> list[Step]:
+        from launch.event_handlers import first_event
         from launch.events import event_from
 
+        if not first_event(context, info):
+            return []
         context.locals["event"] = event_from(info)
         try:
             return [Step(context.when, kind, text(), where=action.where)]
@@ -203,7 +210,8 @@ class EmitEvent(Action):
                 f"EmitEvent({type(self.event).__name__}) is not supported here; only "
                 "EmitEvent(event=Shutdown(...))"
             )
-        if context.locals.get("runtime") and not isinstance(self.event.reason, str):
+        plain = isinstance(self.event.reason, str)
+        if context.locals.get("runtime") and (not plain or "once" in context.locals):
             reason = lambda: perform(self.event.reason, context)  # noqa: E731
             context.sink.add_step(lazy_step(self, context, reason, "shutdown"))
             return
@@ -283,12 +291,18 @@ class TimerAction(Action):
         super().__init__(**kw)
         self.period = period
         self.actions = list(actions)
+        self.cancel_on_shutdown = cancel_on_shutdown
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
 
     def execute(self, context: LaunchContext) -> None:
         period = seconds(self.period, context, self.where, "TimerAction period")
+        if not flag(self.cancel_on_shutdown, context):
+            context.sink.warn(
+                f"{self.where}: TimerAction(cancel_on_shutdown=False): a shutdown cancels "
+                "every timer in this launcher, this one too"
+            )
         later = context.child(when=context.when.later(period))
         for action in self.actions:
             later.visit(action)
@@ -324,7 +338,7 @@ class ExecuteProcess(Action):
         emulate_tty: bool = False,
         prefix: SomeSubstitutionsType | None = None,
         output: SomeSubstitutionsType = "log",
-        output_format: str = "[{this.process_description.final_name}] {line}",
+        output_format: str = DEFAULT_OUTPUT_FORMAT,
         log_cmd: bool = False,
         on_exit: Any = None,
         respawn: bool | SomeSubstitutionsType = False,
@@ -395,6 +409,11 @@ class ExecuteProcess(Action):
         decl.required = any(isinstance(a, EmitEvent) and not callable(a) for a in exit_actions)
 
     def execute(self, context: LaunchContext) -> None:
+        if self.output_format != DEFAULT_OUTPUT_FORMAT:
+            context.sink.warn(
+                f"{self.where}: output_format is not used: this launcher prefixes each line "
+                "with [name] (ros2 launch's default format)"
+            )
         decl = self.process_decl(context)
         if decl.required and decl.respawn:
             raise self.error("a process cannot both respawn and shut the launch down on exit")

@@ -422,3 +422,47 @@ def test_the_refusal_is_one_line_from_the_command(tmp_path):
     assert result.returncode == 1 and "Traceback" not in result.stderr
     assert result.stderr.strip().count("\n") == 0
     assert "MiB in all; refusing" in result.stderr
+
+
+def test_handle_once_handles_only_the_first_event(tmp_path):
+    path = write(
+        tmp_path,
+        "t.launch.py",
+        """from launch import LaunchDescription
+from launch.actions import ExecuteProcess, LogInfo, RegisterEventHandler
+from launch.event_handlers import OnProcessExit
+
+def generate_launch_description():
+    flaky = ExecuteProcess(cmd=['false'], respawn=True)
+    return LaunchDescription([flaky, RegisterEventHandler(OnProcessExit(
+        target_action=flaky, on_exit=[LogInfo(msg='first exit')], handle_once=True))])
+""",
+    )
+    launch = resolve(path, {}, Options())
+    (step,) = launch.steps
+    first, second = {"returncode": 1, "pid": 1}, {"returncode": 1, "pid": 2}
+    assert [s.text for s in step.call(first)] == ["first exit"]
+    assert step.call(second) == []
+
+
+def test_what_this_launcher_cannot_honour_is_said_not_dropped(tmp_path):
+    path = write(
+        tmp_path,
+        "t.launch.py",
+        """from launch import LaunchDescription
+from launch.actions import ExecuteProcess, TimerAction
+
+def generate_launch_description():
+    return LaunchDescription([
+        ExecuteProcess(cmd=['true'], output_format='{line}'),
+        TimerAction(period=1.0, actions=[], cancel_on_shutdown=False),
+    ])
+""",
+    )
+    warnings = resolve(path, {}, Options()).warnings
+    assert any(":6: output_format is not used" in w for w in warnings)
+    assert any(":7: TimerAction(cancel_on_shutdown=False)" in w for w in warnings)
+    text = path.read_text().replace("cancel_on_shutdown=False", "cancel_on_shutdwn=False")
+    with pytest.raises(LaunchError) as raised:  # a misspelt keyword is the file's own error
+        resolve(write(tmp_path, "t.launch.py", text), {}, Options())
+    assert "cancel_on_shutdwn" in str(raised.value)
