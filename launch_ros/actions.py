@@ -16,7 +16,7 @@ from launch_ros.utilities import (
 )
 from launcher import LaunchError
 from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
-from launcher.naming import join_namespace, remap_problem, valid_name
+from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
 from ros_tutorials_common.bounded import InputError, read_params_file
 
 __all__ = [
@@ -147,7 +147,10 @@ class PushRosNamespace(Action):
 
     def execute(self, context: LaunchContext) -> None:
         value = perform(self.namespace, context)
-        context.ros_namespace = join_namespace(context.ros_namespace, value)
+        full = namespace_under(context.ros_namespace, value)
+        if full is None:
+            raise self.error(f"invalid namespace {value!r}")
+        context.ros_namespace = full
 
 
 PushROSNamespace = PushRosNamespace

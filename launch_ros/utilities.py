@@ -12,7 +12,7 @@ from launch._base import LaunchContext, Substitution, element_at, perform
 from launch.actions import flag
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 from launcher import LaunchError
-from launcher.naming import flatten, join_namespace, remap_problem, valid_name
+from launcher.naming import flatten, namespace_under, remap_problem
 from launcher.substitutions import substituted_params_file
 from ros_tutorials_common.bounded import InputError, load_yaml, parameter_problem, read_params_file
 
@@ -47,9 +47,10 @@ def _yaml(text: str, where: str) -> Any:
 
 def relative_namespace(entity: Any, base: str, context: LaunchContext) -> str:
     """``entity``'s node_namespace, relative to ``base`` (absolute if it starts with /)."""
-    namespace = join_namespace(base, perform(entity.node_namespace, context))
-    if namespace != "/" and not all(valid_name(p) for p in namespace[1:].split("/")):
-        raise LaunchError(f"{entity.where}: invalid namespace {namespace!r}")
+    value = perform(entity.node_namespace, context)
+    namespace = namespace_under(base, value)
+    if namespace is None:
+        raise LaunchError(f"{entity.where}: invalid namespace {value!r}")
     return namespace
 
 

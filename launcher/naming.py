@@ -44,3 +44,14 @@ def flatten(value: Any, separator: str, prefix: str = "") -> list[tuple[str, Any
         name = f"{prefix.rstrip(separator)}{separator}{key}" if prefix else str(key)
         pairs += flatten(item, separator, name)
     return pairs
+
+
+def namespace_under(base: str, value: str) -> str | None:
+    """Namespace ``value`` under ``base`` (absolute if it starts with /), or None if a part of
+    it is not a valid name ("a//b" has an empty part: a typo)."""
+    full = join_namespace(base, value)
+    parts = value.strip("/").split("/")
+    bad_part = value.strip("/") and not all(valid_name(part) for part in parts)
+    if bad_part or (full != "/" and not all(valid_name(p) for p in full[1:].split("/"))):
+        return None
+    return full

@@ -39,7 +39,7 @@ from launcher.declarations import (
     Step,
     When,
 )
-from launcher.naming import flatten, join_namespace, remap_problem, valid_name
+from launcher.naming import flatten, join_namespace, namespace_under, remap_problem, valid_name
 from launcher.parse import YAML_SUFFIXES, Element, parse_file
 from launcher.substitutions import (
     MAX_LAUNCH_SUBSTITUTED,
@@ -741,12 +741,26 @@ class Resolver:
 
     def namespace(self, element: Element, name: str, scope: Scope) -> str:
         value = self.text(element, name, scope)
-        full = join_namespace(scope.namespace, value)
-        parts = value.strip("/").split("/")  # "a//b" has an empty part: a typo, refused
-        bad_part = value.strip("/") and not all(valid_name(part) for part in parts)
-        if bad_part or (full != "/" and not all(valid_name(p) for p in full[1:].split("/"))):
+        full = namespace_under(scope.namespace, value)
+        if full is None:
             raise element.error(f"invalid namespace {value!r}")
         return full
+
+    def run(self, action: Any, element: Element, scope: Scope) -> None:
+        """Execute a launch action (launch/, launch_ros/) in ``scope``: what the tag does is
+        the action's one definition; its handler here only reads the attributes."""
+        from launch._base import LaunchContext
+
+        action.where = element.where
+        LaunchContext(scope, self, self.launch_state()).visit(action)
+
+    def launch_state(self) -> Any:
+        """The launch model's executor state, one for the whole launch (every format)."""
+        if self.python_state is None:
+            from launch._base import LaunchState
+
+            self.python_state = LaunchState()
+        return self.python_state
 
     # -- tags: arguments, scopes, includes ----------------------------------------------------
 
@@ -794,7 +808,10 @@ class Resolver:
 
     @tag("ros2", "let", {"name", "value"})
     def on_let(self, element: Element, scope: Scope) -> None:
-        scope.args[self.text(element, "name", scope)] = self.text(element, "value", scope)
+        from launch.actions import SetLaunchConfiguration
+
+        name, value = self.text(element, "name", scope), self.text(element, "value", scope)
+        self.run(SetLaunchConfiguration(name, value), element, scope)
 
     @tag("ros1", "group", {"ns", "clear_params"}, marks={"ns", "clear_params"})
     def on_ros1_group(self, element: Element, scope: Scope) -> None:
@@ -809,7 +826,9 @@ class Resolver:
 
     @tag("ros2", "push_ros_namespace", {"namespace"})
     def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
-        scope.namespace = self.namespace(element, "namespace", scope)
+        from launch_ros.actions import PushRosNamespace
+
+        self.run(PushRosNamespace(self.text(element, "namespace", scope)), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
          marks={"ns", "pass_all_args", "clear_params"})  # fmt: skip
@@ -846,8 +865,9 @@ class Resolver:
 
     @tag("ros2", "log", {"message", "level"})
     def on_log(self, element: Element, scope: Scope) -> None:
-        text = self.text(element, "message", scope)
-        self.add_step(Step(scope.when, "log", text, where=element.where))
+        from launch.actions import LogInfo
+
+        self.run(LogInfo(msg=self.text(element, "message", scope)), element, scope)
 
     @tag("ros2", "timer", {"period"})
     def on_timer(self, element: Element, scope: Scope) -> None:
@@ -879,22 +899,24 @@ class Resolver:
     @tag("ros2", "set_env", {"name", "value"})
     @tag("ros2", "env", {"name", "value"}, under={"node", "executable"})
     def on_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
+        from launch.actions import SetEnvironmentVariable
+
+        name, value = self.env_name(element, scope), self.text(element, "value", scope)
+        self.run(SetEnvironmentVariable(name, value), element, scope)
 
     @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
     def on_append_env(self, element: Element, scope: Scope) -> None:
         """Add to a variable of the environment the launch started with (or set before)."""
+        from launch.actions import AppendEnvironmentVariable
+
         name = self.env_name(element, scope)
         value = self.text(element, "value", scope)
         prepend = self.text(element, "prepend", scope, "false").strip().lower()
         if prepend not in ("true", "false", "1", "0", "yes", "no"):
             raise element.error(f"'prepend' must be true or false, not {prepend!r}")
         separator = self.text(element, "separator", scope, os.pathsep)
-        old = scope.env[name] if name in scope.env else os.environ.get(name)
-        if old:
-            first, last = (value, old) if prepend in ("true", "1", "yes") else (old, value)
-            value = first + separator + last
-        scope.env[name] = value
+        before = prepend in ("true", "1", "yes")  # launch_xml's own test writes "yes"
+        self.run(AppendEnvironmentVariable(name, value, before, separator), element, scope)
 
     @tag("ros2", "reset", set())
     def on_reset(self, element: Element, scope: Scope) -> None:
@@ -908,7 +930,9 @@ class Resolver:
 
     @tag("ros2", "unset_env", {"name"})
     def on_unset_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = None
+        from launch.actions import UnsetEnvironmentVariable
+
+        self.run(UnsetEnvironmentVariable(self.env_name(element, scope)), element, scope)
 
     @tag("ros2", "set_parameter", {"name", "value"})
     @tag("ros2", "param", PARAM_ATTRS, under={"node", "composable_node"}, marks={"value_sep"})
