@@ -85,13 +85,11 @@ def load_description(path: Path) -> Any:
 
 def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
     """Execute a Python launch file into the resolver of ``scope`` (launcher/resolve.py)."""
-    from launch._base import LaunchContext, LaunchState
+    from launch._base import LaunchContext
 
     description = load_description(path)
     resolver = scope.resolver
-    if resolver.python_state is None:  # one executor state for the whole launch
-        resolver.python_state = LaunchState()
-    state = resolver.python_state
+    state = resolver.launch_state()  # one executor state for the whole launch
     scope.args.update(scope.given)  # launch configurations: the given values first
     context = LaunchContext(scope, resolver, state)
     deferred_before = len(state.deferred_handlers)

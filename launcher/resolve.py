@@ -453,7 +453,7 @@ class Resolver:
         self.messages: list[str] = []
         self.steps: list[Step] = []
         self.warnings: list[str] = []
-        self.python_state: Any = None  # the launch model's own (python_files.py makes it)
+        self.python_state: Any = None  # the launch model's own state (launch_state())
         self.anon_names: dict[str, str] = {}
         self.include_chain: list[Path] = []
         self.depth = 0  # nested groups and includes
