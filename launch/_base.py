@@ -5,8 +5,9 @@ A Python launch file builds these objects; ``launcher/python_files.py`` calls it
 ``generate_launch_description()`` and executes the entities into the same plan the XML and
 YAML front-ends build (``launcher/resolve.py``, which also executes some of these actions for
 its tags): executing an action hands a process or a step to the context's sink
-(``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the line of the launch file that
-created it, so an error names the user's file:line, never a line in here.
+(``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
+line of the launch file that created it, so an error names the user's file:line, never a line
+in here.
 """
 
 from __future__ import annotations

@@ -6,15 +6,13 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from launch._base import LaunchContext, Substitution, element_at, perform
 from launch.actions import flag
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 from launcher import LaunchError
-from launcher.naming import flatten, namespace_under, remap_problem
+from launcher.naming import flatten, namespace_under, remap_problem, yaml_parameter
 from launcher.substitutions import substituted_params_file
-from ros_tutorials_common.bounded import InputError, load_yaml, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
 
 def _is_substitutions(value: Any) -> bool:
@@ -27,22 +25,14 @@ def parameter_value(value: Any, context: LaunchContext, where: str) -> Any:
     """A parameter's value as launch_ros gives it: substitutions and text read as YAML."""
     if isinstance(value, ParameterValue):
         text = perform(value.value, context)
-        return text if value.value_type is str else _yaml(text, where)
+        return text if value.value_type is str else yaml_parameter(text)
     if isinstance(value, bool | int | float) or value is None:
         return value
     if _is_substitutions(value):
-        return _yaml(perform(value, context), where)
+        return yaml_parameter(perform(value, context))
     if isinstance(value, (list, tuple)):
         return [parameter_value(item, context, where) for item in value]
     return value
-
-
-def _yaml(text: str, where: str) -> Any:
-    try:
-        value = load_yaml(text, "the parameter value")
-    except (yaml.YAMLError, InputError):
-        return text
-    return text if value is None or isinstance(value, dict) else value
 
 
 def relative_namespace(entity: Any, base: str, context: LaunchContext) -> str:

@@ -1,12 +1,15 @@
-"""ROS names as launch files write them, the one place for both front-ends and the launch
-model: namespaces joined, node and namespace parts checked, remaps checked as rcl checks them,
-nested parameter mappings flattened into names."""
+"""ROS names and parameters as launch files write them, the one place for the front-ends and
+the launch model: namespaces joined, node and namespace parts checked, remaps checked as rcl
+checks them, nested parameter mappings flattened into names, a parameter's text typed."""
 
 from __future__ import annotations
 
 import re
 from typing import Any
 
+import yaml
+
+from ros_tutorials_common.bounded import InputError, load_yaml
 from ros_tutorials_common.names import TOKEN, valid_remap_name
 
 _TOKEN = re.compile(TOKEN)
@@ -55,3 +58,14 @@ def namespace_under(base: str, value: str) -> str | None:
     if bad_part or (full != "/" and not all(valid_name(p) for p in full[1:].split("/"))):
         return None
     return full
+
+
+def yaml_parameter(text: str) -> Any:
+    """A ROS 2 parameter's text as launch_ros types it, in every format: read as YAML (``[2,
+    5, 8]`` is a list, ``2.5`` a double, ``true`` a bool), the text itself where YAML gives
+    no single value (a mapping, nothing, or no valid YAML)."""
+    try:
+        value = load_yaml(text, "the parameter value")
+    except (yaml.YAMLError, InputError):
+        return text
+    return text if value is None or isinstance(value, dict) else value

@@ -39,7 +39,14 @@ from launcher.declarations import (
     Step,
     When,
 )
-from launcher.naming import flatten, join_namespace, namespace_under, remap_problem, valid_name
+from launcher.naming import (
+    flatten,
+    join_namespace,
+    namespace_under,
+    remap_problem,
+    valid_name,
+    yaml_parameter,
+)
 from launcher.parse import YAML_SUFFIXES, Element, parse_file
 from launcher.substitutions import (
     MAX_LAUNCH_SUBSTITUTED,
@@ -344,16 +351,6 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     return text
 
 
-def _ros2_value(text: str) -> Any:
-    """A ROS 2 <param value>, typed as launch_ros types it: read as YAML (``[2, 5, 8]`` is a
-    list, ``2.5`` a double, ``true`` a bool), text where YAML gives no single value."""
-    try:
-        value = load_yaml(text, "the parameter value")
-    except (yaml.YAMLError, InputError):
-        return text
-    return text if value is None or isinstance(value, dict) else value
-
-
 # launch's type names for a ROS 2 <param type=...>: the type, and whether it is a list of it.
 ROS2_TYPES: dict[str, tuple[type | None, bool]] = {
     "str": (str, False), "int": (int, False), "float": (float, False), "bool": (bool, False),
@@ -366,13 +363,13 @@ PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep", "allow_su
 def _ros2_scalar(text: str, kind: type | None, element: Element) -> Any:
     """One value of a ROS 2 parameter as launch's coerce_to_type reads it."""
     if kind is None:
-        return _ros2_value(text)
+        return yaml_parameter(text)
     if kind is str:
         return text
     if kind is bool and text in ("1", "0"):  # launch takes 1 and 0 for true and false
         text = {"1": "true", "0": "false"}[text]
     try:
-        value = kind(text) if kind in (int, float) else _ros2_value(text)
+        value = kind(text) if kind in (int, float) else yaml_parameter(text)
     except ValueError:
         value = None
     if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
@@ -393,7 +390,7 @@ def _ros2_typed(texts: str | list[str], type_name: str | None, element: Element)
         return [_ros2_scalar(text, kind, element) for text in texts]
     if not is_list:
         return _ros2_scalar(texts, kind, element)
-    items = _ros2_value(texts)
+    items = yaml_parameter(texts)
     if not isinstance(items, list) or not all(
         isinstance(item, kind) and not (kind is int and isinstance(item, bool)) for item in items
     ):
@@ -893,7 +890,11 @@ class Resolver:
             names.append(name)
         if scope.fmt == "ros1":  # roslaunch: a later remap of the same name replaces the earlier
             scope.remaps[:] = [remap for remap in scope.remaps if remap[0] != names[0]]
-        scope.remaps.append((names[0], names[1]))
+            scope.remaps.append((names[0], names[1]))
+            return
+        from launch_ros.actions import SetRemap  # ROS 2: the action's one definition
+
+        self.run(SetRemap(names[0], names[1]), element, scope)
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
     @tag("ros2", "set_env", {"name", "value"})
