@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -69,6 +69,18 @@ class LaunchDescriptionEntity:
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return []
+
+
+class FrontendEntity(LaunchDescriptionEntity):
+    """An element a front-end (launch XML or YAML) parsed, executed where the description
+    reaches it: ``handle`` reads the element in the context's scope (its tag's handler)."""
+
+    def __init__(self, handle: Callable[[LaunchContext], None], where: str) -> None:
+        super().__init__()
+        self.handle, self.where = handle, where
+
+    def execute(self, context: LaunchContext) -> None:
+        self.handle(context)
 
 
 class Condition:

@@ -15,6 +15,7 @@ launch leaks included arguments). An included file sees only the arguments passe
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -613,6 +614,31 @@ class Resolver:
         finally:
             self.depth -= 1
 
+    def entities(self, element: Element) -> list[Any]:
+        """The children of a <group> or <timer> as launch entities (launch._base
+        .FrontendEntity), for the action that holds them (GroupAction, TimerAction): each, when
+        reached, is checked and read by its tag's handler in the scope the action gives it."""
+        from launch._base import FrontendEntity
+
+        def handle(child: Element, context: Any) -> None:
+            scope = context.frontend_scope
+            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, element.tag)
+            if self.enabled(child, scope):
+                TAGS[scope.fmt][child.tag].handler(self, child, scope)
+
+        return [FrontendEntity(functools.partial(handle, child), child.where)
+                for child in element.children]  # fmt: skip
+
+    def run_nested(self, action: Any, element: Element, scope: Scope) -> None:
+        """run() for an action that holds entities: one level deeper (a recursion is refused)."""
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise element.error(f"groups and includes nested more than {MAX_DEPTH} deep")
+            self.run(action, element, scope)
+        finally:
+            self.depth -= 1
+
     def resolve_children(self, element: Element, scope: Scope, parent: str) -> None:
         """Each enabled child of ``element``, by the handler its format registered for its tag."""
         allowed = allowed_tags(scope.fmt, parent)
@@ -818,8 +844,10 @@ class Resolver:
 
     @tag("ros2", "group", {"scoped"}, marks={"scoped"})
     def on_ros2_group(self, element: Element, scope: Scope) -> None:
+        from launch.actions import GroupAction
+
         scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
-        self.resolve_scope(element, scope.child() if scoped else scope)
+        self.run_nested(GroupAction(self.entities(element), scoped=scoped), element, scope)
 
     @tag("ros2", "push_ros_namespace", {"namespace"})
     def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
@@ -869,10 +897,13 @@ class Resolver:
     @tag("ros2", "timer", {"period"})
     def on_timer(self, element: Element, scope: Scope) -> None:
         """<timer period="S">: its children happen S seconds after the timer itself."""
+        from launch.actions import TimerAction
+
         period = self.number(element, "period", scope)
         if period is None:
             raise element.error("<timer> needs a 'period' in seconds")
-        self.resolve_scope(element, scope.child(when=scope.when.later(period)))
+        timer = TimerAction(period=period, actions=self.entities(element))
+        self.run_nested(timer, element, scope)
 
     # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 
