@@ -19,7 +19,8 @@ from launch._base import (
     perform,
 )
 from launch._missing import module_getattr
-from launcher.substitutions import to_bool
+from launcher.parse import Element
+from launcher.substitutions import substitute, to_bool
 
 __all__ = [
     "AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution",
@@ -28,6 +29,18 @@ __all__ = [
     "PythonExpression", "Substitution", "TextSubstitution", "ThisLaunchFile",
     "ThisLaunchFileDir",
 ]  # fmt: skip
+
+
+class FrontendText(Substitution):
+    """An attribute's text as a front-end (launch XML or YAML) wrote it, its $(...) performed
+    when the action that holds it needs the value (launch's parse_substitution, lazily)."""
+
+    def __init__(self, text: str, element: Element) -> None:
+        super().__init__()
+        self.text, self.element, self.where = text, element, element.where
+
+    def perform(self, context: LaunchContext) -> str:
+        return substitute(self.text, context.frontend_scope, self.element)
 
 
 class TextSubstitution(Substitution):

@@ -804,30 +804,47 @@ class Resolver:
         # (roslaunch's own tests load such files).
         if fixed and name in scope.given and not scope.pass_all:
             raise element.error(f"argument {name!r} has a fixed value and cannot be set")
+        if scope.fmt == "ros2":
+            self.declare(element, scope, name)
+            return
         if fixed:
             value = self.text(element, "value", scope)
         elif name in scope.given:
             value = scope.given[name]
-        elif scope.fmt == "ros2" and name in scope.args:  # ros2 launch keeps a value set before
-            value = scope.args[name]
-            if name in scope.inherited:  # said once, here, not again where it is read
-                scope.inherited.discard(name)
-                self.warn(
-                    f"{element.where}: argument {name!r} is {value!r}, the value of the file "
-                    "including this one (not passed to it), not its default; ros2 launch lets "
-                    "it in (its includes are not scoped)"
-                )
         elif "default" in element.attrs:
             value = self.text(element, "default", scope)
-        elif scope.fmt == "ros1":  # roslaunch fails only where such an argument is used
+        else:  # roslaunch fails only where such an argument is used
             scope.unset[name] = element.line
             return
-        else:
-            raise element.error(f"argument {name!r} is required: pass {name}:=<value>")
         choices = [self.text(child, "value", scope) for child in element.children]
         if choices and value not in choices:
             raise element.error(f"argument {name!r} is {value!r}; choose one of {choices}")
         scope.args[name] = value
+
+    def declare(self, element: Element, scope: Scope, name: str) -> None:
+        """A ROS 2 <arg>: DeclareLaunchArgument, its default performed only if no value was
+        given or set before (ros2 launch keeps a value set before, even one let in from the
+        including file, which is said once, here)."""
+        from launch.actions import DeclareLaunchArgument
+        from launch.substitutions import FrontendText
+
+        if name in scope.given:
+            scope.args[name] = scope.given[name]
+        elif name in scope.inherited and name in scope.args:
+            scope.inherited.discard(name)  # not again where it is read
+            self.warn(
+                f"{element.where}: argument {name!r} is {scope.args[name]!r}, the value of the "
+                "file including this one (not passed to it), not its default; ros2 launch lets "
+                "it in (its includes are not scoped)"
+            )
+        default = element.attrs.get("default")
+        choices = [self.text(child, "value", scope) for child in element.children]
+        action = DeclareLaunchArgument(
+            name,
+            default_value=None if default is None else FrontendText(default, element),
+            choices=choices or None,
+        )
+        self.run(action, element, scope)
 
     @tag("ros2", "let", {"name", "value"})
     def on_let(self, element: Element, scope: Scope) -> None:
