@@ -13,6 +13,9 @@ from ros_tutorials_common.bounded import InputError, load_yaml
 from ros_tutorials_common.names import TOKEN, valid_remap_name
 
 _TOKEN = re.compile(TOKEN)
+# Text YAML can only read as itself: no indicator first, no ": ", " #", quotes, newlines or
+# spaces at its ends.
+_PLAIN_TEXT = re.compile(r"[A-Za-z_/](?:[A-Za-z0-9_./ -]*[A-Za-z0-9_./-])?")
 
 
 def join_namespace(base: str, name: str) -> str:
@@ -64,6 +67,8 @@ def yaml_parameter(text: str) -> Any:
     """A ROS 2 parameter's text as launch_ros types it, in every format: read as YAML (``[2,
     5, 8]`` is a list, ``2.5`` a double, ``true`` a bool), the text itself where YAML gives
     no single value (a mapping, nothing, or no valid YAML)."""
+    if len(text) > 1024 and _PLAIN_TEXT.fullmatch(text):  # YAML reads it as this text; its
+        return text  # pure-Python scanner would take seconds for a megabyte
     try:
         value = load_yaml(text, "the parameter value")
     except (yaml.YAMLError, InputError):

@@ -466,3 +466,22 @@ def generate_launch_description():
     with pytest.raises(LaunchError) as raised:  # a misspelt keyword is the file's own error
         resolve(write(tmp_path, "t.launch.py", text), {}, Options())
     assert "cancel_on_shutdwn" in str(raised.value)
+
+
+def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
+    # A 125 KB file: a 1 MB argument, made by repetition, used by 3000 <param>s.
+    params = "".join(f'<param name="p{i}" value="$(var b)"/>\n' for i in range(3000))
+    path = write(
+        tmp_path,
+        "t.launch.xml",
+        f'<launch>\n<arg name="a" default="{"x" * 1000}"/>\n'
+        f'<arg name="b" default="{"$(var a)" * 1000}"/>\n'
+        f'<node pkg="ros_tutorials_topic" exec="talker">\n{params}</node>\n</launch>\n',
+    )
+    with pytest.raises(LaunchError) as raised:
+        resolve(path, {}, Options())
+    where, _, message = str(raised.value).partition(": ")
+    assert message == "this launch's substitutions expand to more than 64 MiB in all; refusing"
+    line = int(where.rsplit(":", 1)[1])
+    assert 5 < line < 3005
+    assert path.read_text().splitlines()[line - 1].startswith("<param name=")
