@@ -343,7 +343,7 @@ class ExecuteProcess(Action):
         on_exit: Any = None,
         respawn: bool | SomeSubstitutionsType = False,
         respawn_delay: float | None = None,
-        respawn_max_retries: int = -1,
+        respawn_max_retries: int | None = None,
         condition: Condition | None = None,
         **kw: Any,
     ) -> None:
@@ -388,8 +388,10 @@ class ExecuteProcess(Action):
         decl.respawn = flag(self.respawn, context)
         if self.respawn_delay is not None:
             decl.respawn_delay = seconds(self.respawn_delay, context, self.where, "respawn_delay")
-        retries = int(self.respawn_max_retries)
-        decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries < 0 else retries
+        # Not given: this launcher's default (it backs off and gives up); -1, as in ros2
+        # launch, respawns for ever.
+        retries = self.respawn_max_retries
+        decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries is None else int(retries)
         for attr in ("sigterm_timeout", "sigkill_timeout"):
             value = getattr(self, attr)
             if value is not None:

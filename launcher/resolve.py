@@ -1283,6 +1283,27 @@ class Resolver:
         node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
             scope.child(in_node=True))  # fmt: skip
         self.resolve_children(element, node_scope, element.tag)
+        if not ros1:  # launch_ros's Node or launch's ExecuteProcess, in the node's own scope
+            from launch.actions import ExecuteProcess, Shutdown
+            from launch_ros.actions import Node
+
+            process: dict[str, Any] = {
+                "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
+                "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
+                "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
+                "cwd": cwd, "on_exit": Shutdown() if required else None,
+            }  # fmt: skip
+            if cmd is not None:
+                action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
+            else:
+                action = Node(
+                    package=package, executable=executable, name=name,
+                    namespace=namespace if ns_attr in element.attrs else None,
+                    exec_name=self.text(element, "exec_name", scope, "") or None,
+                    arguments=args, ros_arguments=ros_args, **process,
+                )  # fmt: skip
+            self.run(action, element, node_scope)
+            return
         node = NodeDecl(
             element.where,
             package=package,

@@ -485,3 +485,18 @@ def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
     line = int(where.rsplit(":", 1)[1])
     assert 5 < line < 3005
     assert path.read_text().splitlines()[line - 1].startswith("<param name=")
+
+
+@pytest.mark.parametrize("fmt", ["xml", "py"])
+def test_respawn_max_retries_means_the_same_in_every_format(tmp_path, fmt):
+    # Not given: this launcher's default of 10 quick failures; -1, as in ros2 launch: for ever.
+    text = {
+        "xml": "<launch>\n<executable cmd='false' respawn='true'/>\n"
+        "<executable cmd='false' respawn='true' respawn_max_retries='-1'/>\n</launch>\n",
+        "py": "from launch import LaunchDescription\nfrom launch.actions import ExecuteProcess\n"
+        "def generate_launch_description():\n    return LaunchDescription([\n"
+        "        ExecuteProcess(cmd=['false'], respawn=True),\n"
+        "        ExecuteProcess(cmd=['false'], respawn=True, respawn_max_retries=-1)])\n",
+    }[fmt]
+    default, forever = resolve(write(tmp_path, f"t.launch.{fmt}", text), {}, Options()).nodes
+    assert (default.respawn_max_retries, forever.respawn_max_retries) == (10, -1)
