@@ -3,21 +3,25 @@ Condition, EventHandler, LaunchContext), written for this project's launcher.
 
 A Python launch file builds these objects; ``launcher/python_files.py`` calls its
 ``generate_launch_description()`` and executes the entities into the same plan the XML and
-YAML front-ends build (``launcher/resolve.py``): executing an action adds a process or a step
-to the plan instead of doing it at once. Each entity remembers the line of the launch file that
-created it, so an error names the user's file:line, never a line in here.
+YAML front-ends build (``launcher/resolve.py``, which also executes some of these actions for
+its tags): executing an action hands a process or a step to the context's sink
+(``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
+line of the launch file that created it, so an error names the user's file:line, never a line
+in here.
 """
 
 from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from launcher import LaunchError
-from launcher.declarations import Step, When
+from launcher.declarations import AT_START, NodeDecl, PlanSink, Step, When
+from launcher.parse import Element
 
 if TYPE_CHECKING:
     from launcher.resolve import Scope
@@ -43,6 +47,14 @@ def caller_where() -> str:
     return f"{frame.f_code.co_filename}:{frame.f_lineno}"
 
 
+def element_at(where: str) -> Element:
+    """A file:line as the front-ends' helpers take it (for their errors)."""
+    file, _, line = where.rpartition(":")
+    if not line.isdigit():
+        file, line = where, "0"
+    return Element("launch", {}, Path(file), int(line))
+
+
 class LaunchDescriptionEntity:
     """Anything a LaunchDescription holds."""
 
@@ -57,6 +69,18 @@ class LaunchDescriptionEntity:
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return []
+
+
+class FrontendEntity(LaunchDescriptionEntity):
+    """An element a front-end (launch XML or YAML) parsed, executed where the description
+    reaches it: ``handle`` reads the element in the context's scope (its tag's handler)."""
+
+    def __init__(self, handle: Callable[[LaunchContext], None], where: str) -> None:
+        super().__init__()
+        self.handle, self.where = handle, where
+
+    def execute(self, context: LaunchContext) -> None:
+        self.handle(context)
 
 
 class Condition:
@@ -80,7 +104,7 @@ class Action(LaunchDescriptionEntity):
         """Execute this action into the plan, with what it returns, if its condition holds."""
         if self.condition is not None and not self.condition.evaluate(context):
             return
-        context.resolver.executed[id(self)] = self
+        context.state.executed[id(self)] = self
         for entity in self.execute(context) or []:
             context.visit(entity)
 
@@ -143,32 +167,154 @@ class EventHandler:
         self.where = caller_where()
 
 
-class LaunchContext:
-    """What actions and substitutions see: a scope of the launcher's resolver (launch
-    configurations, namespace, remaps, parameters, environment) and, in an event handler, the
-    event (``locals``)."""
+@dataclass
+class _DetachedScope:
+    """The values of a LaunchContext made outside a launch (the fields of resolve.Scope that
+    LaunchContext reads)."""
 
-    def __init__(self, scope: Scope, locals_: dict[str, Any] | None = None) -> None:
-        self.scope = scope
+    args: dict[str, str] = field(default_factory=dict)
+    env: dict[str, str | None] = field(default_factory=dict)
+    namespace: str = "/"
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    params: list[tuple[str, Any]] = field(default_factory=list)
+    params_files: list[str] = field(default_factory=list)
+    declared: dict[str, int] = field(default_factory=dict)
+    file: Path = field(default_factory=lambda: Path("<launch>"))
+    when: When = AT_START
+    fmt: str = "ros2"
+
+    def child(self, **changes: Any) -> _DetachedScope:
+        copies = {"args": dict(self.args), "env": dict(self.env), "remaps": list(self.remaps),
+                  "params": list(self.params), "params_files": list(self.params_files)}  # fmt: skip
+        return replace(self, **{**copies, **changes})
+
+    def anon(self, name: str) -> str:
+        return f"{name}_{os.getpid()}_{id(self) % 10000}"
+
+
+class _NoPlan:
+    """The sink of a LaunchContext made outside a launch: nothing can be added to a plan."""
+
+    def add_node(self, node: NodeDecl) -> int:
+        raise LaunchError(f"{node.where}: this LaunchContext is not part of a launch")
+
+    def add_step(self, step: Step) -> None:
+        raise LaunchError(f"{step.where}: this LaunchContext is not part of a launch")
+
+    def warn(self, text: str) -> None:
+        print(f"[WARNING] [launch]: {text}", file=sys.stderr)
+
+    def include(self, path: Path, given: dict[str, str], scope: Any) -> None:
+        raise LaunchError(f"{path}: this LaunchContext is not part of a launch")
+
+
+class LaunchState:
+    """What one launch's executor keeps across files: the index of each process action (what
+    an event handler's target_action names), the handlers waiting for their target, the
+    launch configurations read (an argument read but not declared is not a typo), and the
+    actions executed (kept alive: their id() names them)."""
+
+    def __init__(self) -> None:
+        self.executed: dict[int, Any] = {}
+        self.process_index: dict[int, int] = {}
+        self.deferred_handlers: list[tuple[Any, LaunchContext]] = []
+        self.configurations_read: set[str] = set()
+
+
+class LaunchContext:
+    """What actions and substitutions see, as ros2/launch's LaunchContext: the launch
+    configurations, the environment, launch_ros's namespace, remaps and parameters for the
+    nodes that follow, and in an event handler the event (``locals``). Executing an entity
+    hands its result to ``sink`` (launcher.declarations.PlanSink), the one interface to the
+    launcher. ``scope`` holds the values (the front-ends' scope, launcher/resolve.py): only
+    this class reads it, through the properties below."""
+
+    def __init__(
+        self,
+        scope: Scope | None = None,
+        sink: PlanSink | None = None,
+        state: LaunchState | None = None,
+        locals_: dict[str, Any] | None = None,
+        **_ros2_launch_options: Any,  # argv, noninteractive: nothing to do with them here
+    ) -> None:
+        # Without a scope (``LaunchContext()`` in OpaqueFunction code or a test, as ros2/launch
+        # allows): launch configurations and the rest of its own, and no plan to add to.
+        self._scope: Any = scope if scope is not None else _DetachedScope()
+        self.sink: PlanSink = sink if sink is not None else _NoPlan()
+        self.state = state if state is not None else LaunchState()
         self.locals = dict(locals_ or {})
 
     @property
-    def resolver(self) -> Any:
-        return self.scope.resolver
-
-    @property
     def launch_configurations(self) -> dict[str, str]:
-        return self.scope.args
+        return self._scope.args
 
     @property
     def environment(self) -> dict[str, str]:
         env = dict(os.environ)
-        for name, value in self.scope.env.items():
+        for name, value in self._scope.env.items():
             if value is None:
                 env.pop(name, None)
             else:
                 env[name] = value
         return env
+
+    def set_env(self, name: str, value: str | None) -> None:
+        """Set (None: unset) a variable for the processes that follow in this scope."""
+        self._scope.env[name] = value
+
+    @property
+    def env_changes(self) -> dict[str, str | None]:
+        """The variables set (None: unset) for the processes that follow."""
+        return dict(self._scope.env)
+
+    @property
+    def ros_namespace(self) -> str:
+        return self._scope.namespace
+
+    @ros_namespace.setter
+    def ros_namespace(self, value: str) -> None:
+        self._scope.namespace = value
+
+    @property
+    def ros_remaps(self) -> list[tuple[str, str]]:
+        """launch_ros's global remaps (SetRemap), for the nodes that follow; add to it."""
+        return self._scope.remaps
+
+    @property
+    def ros_params(self) -> list[tuple[str, Any]]:
+        """launch_ros's global parameters (SetParameter), for the nodes that follow."""
+        return self._scope.params
+
+    @property
+    def ros_params_files(self) -> list[str]:
+        """launch_ros's global parameters files (SetParametersFromFile)."""
+        return self._scope.params_files
+
+    @property
+    def launch_file(self) -> Path:
+        """The launch file being executed (ThisLaunchFile)."""
+        return self._scope.file
+
+    @property
+    def when(self) -> When:
+        """When what executes here happens: at the start, after a timer, at an event."""
+        return self._scope.when
+
+    @property
+    def frontend_scope(self) -> Scope:
+        """The front-ends' substitution context ($(...) in a parameters file, allow_substs)."""
+        return self._scope
+
+    def declare(self, name: str) -> None:
+        """A launch argument is declared here (named in errors about undeclared ones)."""
+        self._scope.declared[name] = 0
+
+    def anon(self, name: str) -> str:
+        return self._scope.anon(name)
+
+    def include(self, path: Path, given: dict[str, str]) -> None:
+        """Read another launch file with ``given`` arguments (not scoped, as ros2 launch)."""
+        self.sink.include(path, given, self._scope)
 
     def perform_substitution(self, substitution: Substitution) -> str:
         return substitution.perform(self)
@@ -179,8 +325,14 @@ class LaunchContext:
     def get_locals_as_dict(self) -> dict[str, Any]:
         return dict(self.locals)
 
-    def child(self, **changes: Any) -> LaunchContext:
-        return LaunchContext(self.scope.child(**changes), self.locals)
+    def child(self, *, forwarding: bool = True, when: When | None = None) -> LaunchContext:
+        """A scope of its own (GroupAction, a timer, an event handler): what is set inside
+        does not leak out. Without ``forwarding`` it starts with no launch configurations;
+        ``when``: its actions happen then."""
+        changes: dict[str, Any] = {} if forwarding else {"args": {}}
+        if when is not None:
+            changes["when"] = when
+        return LaunchContext(self._scope.child(**changes), self.sink, self.state, self.locals)
 
     def visit(self, entity: Any) -> None:
         """Execute one entity of a description, or refuse what is not one."""

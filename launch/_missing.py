@@ -8,14 +8,6 @@ from typing import Any
 from launch._base import caller_where
 from launcher import LaunchError
 
-# Names whose absence has a reason worth saying, and what to do instead.
-EXPLAINED = {
-    name: "rclpy has no component container in ROS 2 Jazzy, so composable nodes cannot be "
-    "loaded here; start each component as a node of its own (launch_ros.actions.Node with the "
-    "package's executable)"
-    for name in ("ComposableNodeContainer", "LoadComposableNodes", "ComposableNode")
-}
-
 
 def module_getattr(module: str, names: Callable[[], list[str]]) -> Callable[[str], Any]:
     """A module ``__getattr__``: ``from launch.actions import Missing`` names what is missing."""
@@ -23,8 +15,6 @@ def module_getattr(module: str, names: Callable[[], list[str]]) -> Callable[[str
     def __getattr__(name: str) -> Any:
         if name.startswith("__"):
             raise AttributeError(name)
-        if name in EXPLAINED:
-            raise LaunchError(f"{caller_where()}: {module}.{name}: {EXPLAINED[name]}")
         have = ", ".join(sorted(n for n in names() if not n.startswith("_") and n[0].isupper()))
         raise LaunchError(
             f"{caller_where()}: {module}.{name} is not in this launcher's launch API "

@@ -7,6 +7,7 @@ following actions see (DeclareLaunchArgument, SetEnvironmentVariable, GroupActio
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import shlex
@@ -37,6 +38,9 @@ __all__ = [
     "RegisterEventHandler", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
     "TimerAction", "UnsetEnvironmentVariable", "UnsetLaunchConfiguration",
 ]  # fmt: skip
+
+
+DEFAULT_OUTPUT_FORMAT = "[{this.process_description.final_name}] {line}"
 
 
 def seconds(value: Any, context: LaunchContext, where: str, what: str) -> float:
@@ -77,7 +81,7 @@ class DeclareLaunchArgument(Action):
         self.choices = list(choices) if choices is not None else None
 
     def execute(self, context: LaunchContext) -> None:
-        context.scope.declared[self.name] = 0
+        context.declare(self.name)
         if self.name not in context.launch_configurations:
             if self.default_value is None:
                 raise self.error(f"argument {self.name!r} is required: pass {self.name}:=<value>")
@@ -111,7 +115,7 @@ class SetEnvironmentVariable(Action):
         self.name, self.value = name, value
 
     def execute(self, context: LaunchContext) -> None:
-        context.scope.env[perform(self.name, context)] = perform(self.value, context)
+        context.set_env(perform(self.name, context), perform(self.value, context))
 
 
 class UnsetEnvironmentVariable(Action):
@@ -120,7 +124,7 @@ class UnsetEnvironmentVariable(Action):
         self.name = name
 
     def execute(self, context: LaunchContext) -> None:
-        context.scope.env[perform(self.name, context)] = None
+        context.set_env(perform(self.name, context), None)
 
 
 class AppendEnvironmentVariable(Action):
@@ -143,7 +147,7 @@ class AppendEnvironmentVariable(Action):
             value = (
                 value + separator + old if flag(self.prepend, context) else old + separator + value
             )
-        context.scope.env[name] = value
+        context.set_env(name, value)
 
 
 class LogInfo(Action):
@@ -154,30 +158,43 @@ class LogInfo(Action):
         self.msg = msg
 
     def execute(self, context: LaunchContext) -> None:
-        from launch.substitutions import LocalSubstitution
-
-        local = any(isinstance(part, LocalSubstitution) for part in normalize(self.msg))
-        if local and context.locals.get("runtime"):  # the event's values, when it happens
-            runtime = context
-
-            def call(info: dict) -> list[Step]:
-                from launch.events import event_from
-
-                runtime.locals["event"] = event_from(info)
-                return [
-                    Step(runtime.scope.when, "log", perform(self.msg, runtime), where=self.where)
-                ]
-
-            context.resolver.add_step(Step(context.scope.when, "call", call=call, where=self.where))
+        parts = normalize(self.msg)
+        plain = all(isinstance(p, str) for p in parts)
+        if context.locals.get("runtime") and (not plain or "once" in context.locals):
+            # In an event handler: performed when the event happens, as ros2 launch does
+            # (the event's values, an environment variable that is set by then).
+            context.sink.add_step(lazy_step(self, context, lambda: perform(self.msg, context)))
             return
         text = perform(self.msg, context)
-        context.resolver.add_step(Step(context.scope.when, "log", text, where=self.where))
+        context.sink.add_step(Step(context.when, "log", text, where=self.where))
 
     def step_when_returned(self, when: When, context: LaunchContext) -> Step:
         text = "".join(
             part if isinstance(part, str) else part.perform(context) for part in normalize(self.msg)
         )
         return Step(when, "log", text)
+
+
+def lazy_step(
+    action: Action, context: LaunchContext, text: Callable[[], str], kind: str = "log"
+) -> Step:
+    """A step of an event handler whose text is performed when the event happens, with the
+    event in ``context.locals``; a substitution that fails then shuts the launch down with
+    its one line, as it would end ros2 launch."""
+
+    def call(info: dict) -> list[Step]:
+        from launch.event_handlers import first_event
+        from launch.events import event_from
+
+        if not first_event(context, info):
+            return []
+        context.locals["event"] = event_from(info)
+        try:
+            return [Step(context.when, kind, text(), where=action.where)]
+        except LaunchError as error:
+            return [Step(context.when, "shutdown", str(error), where=action.where)]
+
+    return Step(context.when, "call", kind, call=call, where=action.where)
 
 
 class EmitEvent(Action):
@@ -193,8 +210,13 @@ class EmitEvent(Action):
                 f"EmitEvent({type(self.event).__name__}) is not supported here; only "
                 "EmitEvent(event=Shutdown(...))"
             )
+        plain = isinstance(self.event.reason, str)
+        if context.locals.get("runtime") and (not plain or "once" in context.locals):
+            reason = lambda: perform(self.event.reason, context)  # noqa: E731
+            context.sink.add_step(lazy_step(self, context, reason, "shutdown"))
+            return
         reason = perform(self.event.reason, context)
-        context.resolver.add_step(Step(context.scope.when, "shutdown", reason, where=self.where))
+        context.sink.add_step(Step(context.when, "shutdown", reason, where=self.where))
 
     def step_when_returned(self, when: When, context: LaunchContext) -> Step:
         return Step(when, "shutdown", str(getattr(self.event, "reason", "")))
@@ -248,7 +270,7 @@ class GroupAction(Action):
     def execute(self, context: LaunchContext) -> None:
         inner = context
         if self.scoped:
-            inner = context.child() if self.forwarding else context.child(args={})
+            inner = context.child(forwarding=self.forwarding)
         for name, value in self.launch_configurations.items():
             inner.launch_configurations[perform(name, context)] = perform(value, context)
         for action in self.actions:
@@ -269,14 +291,19 @@ class TimerAction(Action):
         super().__init__(**kw)
         self.period = period
         self.actions = list(actions)
+        self.cancel_on_shutdown = cancel_on_shutdown
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
 
     def execute(self, context: LaunchContext) -> None:
         period = seconds(self.period, context, self.where, "TimerAction period")
-        later = LaunchContext(context.scope, context.locals)
-        later.scope = context.scope.child(when=context.scope.when.later(period))
+        if not flag(self.cancel_on_shutdown, context):
+            context.sink.warn(
+                f"{self.where}: TimerAction(cancel_on_shutdown=False): a shutdown cancels "
+                "every timer in this launcher, this one too"
+            )
+        later = context.child(when=context.when.later(period))
         for action in self.actions:
             later.visit(action)
 
@@ -311,16 +338,17 @@ class ExecuteProcess(Action):
         emulate_tty: bool = False,
         prefix: SomeSubstitutionsType | None = None,
         output: SomeSubstitutionsType = "log",
-        output_format: str = "[{this.process_description.final_name}] {line}",
+        output_format: str = DEFAULT_OUTPUT_FORMAT,
         log_cmd: bool = False,
         on_exit: Any = None,
         respawn: bool | SomeSubstitutionsType = False,
         respawn_delay: float | None = None,
-        respawn_max_retries: int = -1,
+        respawn_max_retries: int | None = None,
         condition: Condition | None = None,
         **kw: Any,
     ) -> None:
         super().__init__(condition=condition, **kw)
+        self.emulate_tty, self.log_cmd, self.output_format = emulate_tty, log_cmd, output_format
         self.cmd = list(cmd) if not isinstance(cmd, (str, Substitution)) else [cmd]
         self.name, self.cwd, self.env, self.additional_env = name, cwd, env, additional_env
         self.shell, self.prefix, self.output = shell, prefix, output
@@ -346,7 +374,7 @@ class ExecuteProcess(Action):
 
     def fill(self, decl: NodeDecl, context: LaunchContext) -> None:
         """What every process shares: environment, output, respawn, timeouts, prefix, cwd."""
-        env = dict(context.scope.env)
+        env = context.env_changes
         if self.env is not None:  # the whole environment: everything else unset
             given = {perform(k, context): perform(v, context) for k, v in self.env.items()}
             env = {name: None for name in os.environ if name not in given}
@@ -360,8 +388,10 @@ class ExecuteProcess(Action):
         decl.respawn = flag(self.respawn, context)
         if self.respawn_delay is not None:
             decl.respawn_delay = seconds(self.respawn_delay, context, self.where, "respawn_delay")
-        retries = int(self.respawn_max_retries)
-        decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries < 0 else retries
+        # Not given: this launcher's default (it backs off and gives up); -1, as in ros2
+        # launch, respawns for ever.
+        retries = self.respawn_max_retries
+        decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries is None else int(retries)
         for attr in ("sigterm_timeout", "sigkill_timeout"):
             value = getattr(self, attr)
             if value is not None:
@@ -370,19 +400,44 @@ class ExecuteProcess(Action):
             decl.launch_prefix = shlex.split(perform(self.prefix, context))
         if self.cwd is not None:
             decl.cwd = perform(self.cwd, context)
-        decl.when = context.scope.when
+        # emulate_tty (or the launch configuration of that name, as ros2 launch reads it):
+        # the child's output is a pipe here, unbuffered either way; what a terminal adds is
+        # rcutils' colours.
+        tty = context.launch_configurations.get("emulate_tty", self.emulate_tty)
+        if flag(tty, context) and "RCUTILS_COLORIZED_OUTPUT" not in context.environment:
+            env["RCUTILS_COLORIZED_OUTPUT"] = "1"
+        decl.when = context.when
         exit_actions = self.on_exit if isinstance(self.on_exit, list) else [self.on_exit]
         decl.required = any(isinstance(a, EmitEvent) and not callable(a) for a in exit_actions)
 
     def execute(self, context: LaunchContext) -> None:
+        if self.output_format != DEFAULT_OUTPUT_FORMAT:
+            context.sink.warn(
+                f"{self.where}: output_format is not used: this launcher prefixes each line "
+                "with [name] (ros2 launch's default format)"
+            )
         decl = self.process_decl(context)
         if decl.required and decl.respawn:
             raise self.error("a process cannot both respawn and shut the launch down on exit")
-        index = context.resolver.add_node(decl)
-        context.resolver.process_index[id(self)] = index
+        index = context.sink.add_node(decl)
+        context.state.process_index[id(self)] = index
+        if flag(self.log_cmd, context):  # ros2 launch's line, each time the process starts
+            custom = self.env is not None or bool(self.additional_env)
+            details = functools.partial(_process_details, custom)
+            context.sink.add_step(
+                Step(When("start", index), "call", call=details, where=self.where)
+            )
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
             OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def _process_details(custom_env: bool, info: dict[str, Any]) -> list[Step]:
+    """log_cmd's line, from what the supervisor reports when the process starts."""
+    text = "process details: cmd=[{}], cwd='{}', custom_env?={}".format(
+        ", ".join(info.get("cmd", [])), info.get("cwd"), custom_env
+    )
+    return [Step(When("start"), "log", text)]
 
 
 def normalize_actions(value: Any) -> list[Any]:
@@ -410,7 +465,7 @@ class IncludeLaunchDescription(Action):
         location = getattr(source, "location", source)
         path = Path(perform(location, context))
         if not path.is_absolute():
-            path = context.scope.file.parent / path
+            path = context.launch_file.parent / path
         if not path.is_file():
             raise self.error(f"included launch file {path} does not exist")
         # The included file sees the includer's launch configurations too, and what it sets
@@ -418,7 +473,7 @@ class IncludeLaunchDescription(Action):
         given = {perform(name, context): perform(value, context)
                  for name, value in self.launch_arguments}  # fmt: skip
         try:
-            context.resolver.resolve_file(path, given, context.scope, strict=False)
+            context.include(path, given)
         except RecursionError:
             raise self.error("launch files include each other too deeply") from None
 

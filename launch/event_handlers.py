@@ -23,35 +23,50 @@ class _OnEvent(EventHandler):
     event = ""
     takes_context = True  # a handler function is called (event, context); OnProcessIO (event)
 
-    def __init__(self, target_action: Any = None, actions: Any = None) -> None:
+    def __init__(
+        self, target_action: Any = None, actions: Any = None, handle_once: bool = False
+    ) -> None:
         super().__init__()
         self.target_action = target_action
         self.actions = actions
+        self.handle_once = handle_once  # only the first such event (a respawning process)
 
     def register(self, context: LaunchContext) -> None:
         index = None
         if self.target_action is not None:
-            index = context.resolver.process_index.get(id(self.target_action))
+            index = context.state.process_index.get(id(self.target_action))
             if index is None:  # its target is executed later: register it then
-                context.resolver.deferred_handlers.append((self, context))
+                context.state.deferred_handlers.append((self, context))
                 return
         self.register_at(context, When(self.event, index))
 
     def register_at(self, context: LaunchContext, when: When) -> None:
-        inner = LaunchContext(context.scope.child(when=when), {"runtime": True})
+        inner = context.child(when=when)
+        inner.locals = {"runtime": True}
+        if self.handle_once:  # the steps made below happen for the first event only
+            inner.locals["once"] = {}
         if self.actions is None:
             return
         if callable(self.actions) and not isinstance(self.actions, Action):
             function = self.actions
 
             def call(info: dict) -> list[Step]:
+                if not first_event(inner, info):
+                    return []
                 return run_handler_function(function, info, inner, self, when)
 
-            context.resolver.add_step(Step(when, "call", call=call, where=self.where))
+            context.sink.add_step(Step(when, "call", call=call, where=self.where))
             return
         actions = self.actions if isinstance(self.actions, (list, tuple)) else [self.actions]
         for action in actions:
             inner.visit(action)
+
+
+def first_event(context: LaunchContext, info: dict) -> bool:
+    """False for a handle_once handler's steps at any event after its first (the supervisor
+    hands every step of one event the same ``info``)."""
+    once = context.locals.get("once")
+    return once is None or once.setdefault("info", info) is info
 
 
 def run_handler_function(
@@ -97,15 +112,19 @@ def _frames(tb: Any) -> list[Any]:
 class OnProcessStart(_OnEvent):
     event = "start"
 
-    def __init__(self, *, target_action: Any = None, on_start: Any, **kw: Any) -> None:
-        super().__init__(target_action, on_start)
+    def __init__(
+        self, *, target_action: Any = None, on_start: Any, handle_once: bool = False
+    ) -> None:
+        super().__init__(target_action, on_start, handle_once)
 
 
 class OnProcessExit(_OnEvent):
     event = "exit"
 
-    def __init__(self, *, target_action: Any = None, on_exit: Any, **kw: Any) -> None:
-        super().__init__(target_action, on_exit)
+    def __init__(
+        self, *, target_action: Any = None, on_exit: Any, handle_once: bool = False
+    ) -> None:
+        super().__init__(target_action, on_exit, handle_once)
 
 
 class OnExecutionComplete(_OnEvent):
@@ -113,8 +132,10 @@ class OnExecutionComplete(_OnEvent):
 
     event = "exit"
 
-    def __init__(self, *, target_action: Any = None, on_completion: Any, **kw: Any) -> None:
-        super().__init__(target_action, on_completion)
+    def __init__(
+        self, *, target_action: Any = None, on_completion: Any, handle_once: bool = False
+    ) -> None:
+        super().__init__(target_action, on_completion, handle_once)
 
 
 class OnProcessIO(_OnEvent):
@@ -127,9 +148,9 @@ class OnProcessIO(_OnEvent):
         on_stdin: Any = None,
         on_stdout: Any = None,
         on_stderr: Any = None,
-        **kw: Any,
+        handle_once: bool = False,
     ) -> None:
-        super().__init__(target_action, None)
+        super().__init__(target_action, None, handle_once)
         self.on_stdout, self.on_stderr = on_stdout, on_stderr
 
     def register_at(self, context: LaunchContext, when: When) -> None:
@@ -142,8 +163,8 @@ class OnProcessIO(_OnEvent):
 class OnShutdown(_OnEvent):
     event = "shutdown"
 
-    def __init__(self, *, on_shutdown: Any, **kw: Any) -> None:
-        super().__init__(None, on_shutdown)
+    def __init__(self, *, on_shutdown: Any, handle_once: bool = False) -> None:
+        super().__init__(None, on_shutdown, handle_once)
 
 
 __getattr__ = module_getattr("launch.event_handlers", lambda: __all__)

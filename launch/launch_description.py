@@ -30,7 +30,7 @@ class LaunchDescription(LaunchDescriptionEntity):
 
     def execute(self, context: LaunchContext) -> list[Any]:
         if self.deprecated_reason:
-            context.resolver.warnings.append(f"{self.where}: deprecated: {self.deprecated_reason}")
+            context.sink.warn(f"{self.where}: deprecated: {self.deprecated_reason}")
         return self.entities
 
     def get_launch_arguments(self) -> list[Any]:

@@ -5,9 +5,7 @@ from __future__ import annotations
 
 import math
 import os
-import shlex
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 from typing import Any
@@ -21,7 +19,8 @@ from launch._base import (
     perform,
 )
 from launch._missing import module_getattr
-from launcher import LaunchError
+from launcher.parse import Element
+from launcher.substitutions import substitute, to_bool
 
 __all__ = [
     "AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution",
@@ -31,16 +30,17 @@ __all__ = [
     "ThisLaunchFileDir",
 ]  # fmt: skip
 
-TRUE_WORDS = ("true", "1")
-FALSE_WORDS = ("false", "0")
 
+class FrontendText(Substitution):
+    """An attribute's text as a front-end (launch XML or YAML) wrote it, its $(...) performed
+    when the action that holds it needs the value (launch's parse_substitution, lazily)."""
 
-def to_bool(text: str, where: str, what: str) -> bool:
-    """A condition's text as launch reads it: true/false/1/0, any case."""
-    word = text.strip().lower()
-    if word in TRUE_WORDS or word in FALSE_WORDS:
-        return word in TRUE_WORDS
-    raise LaunchError(f"{where}: {what} is {text!r}; expected true, false, 1 or 0")
+    def __init__(self, text: str, element: Element) -> None:
+        super().__init__()
+        self.text, self.element, self.where = text, element, element.where
+
+    def perform(self, context: LaunchContext) -> str:
+        return substitute(self.text, context.frontend_scope, self.element)
 
 
 class TextSubstitution(Substitution):
@@ -62,7 +62,7 @@ class LaunchConfiguration(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         name = perform(self.variable_name, context)
-        context.resolver.configurations_read.add(name)
+        context.state.configurations_read.add(name)
         if name in context.launch_configurations:
             return context.launch_configurations[name]
         if self.default is not None:
@@ -145,19 +145,13 @@ class Command(Substitution):
         self.on_stderr = on_stderr
 
     def perform(self, context: LaunchContext) -> str:
+        from launcher.substitutions import run_command
+
         words = [perform(part, context) for part in normalize(self.command)]
         text = " ".join(words) if len(words) > 1 else words[0]
-        try:
-            done = subprocess.run(
-                shlex.split(text), capture_output=True, timeout=60, env=context.environment
-            )
-        except (OSError, ValueError, subprocess.TimeoutExpired) as error:
-            raise self.error(f"Command {text!r} failed: {error}") from None
-        stderr = done.stderr.decode(errors="replace").strip()
-        if done.returncode != 0 or (stderr and self.on_stderr == "fail"):
-            reason = stderr.splitlines()[-1] if stderr else f"exit code {done.returncode}"
-            raise self.error(f"Command {text!r} failed: {reason}")
-        return done.stdout.decode(errors="replace")
+        return run_command(
+            text, self.error, f"Command {text!r}", context.environment, self.on_stderr
+        )
 
 
 class AnonName(Substitution):
@@ -166,17 +160,17 @@ class AnonName(Substitution):
         self.name = name
 
     def perform(self, context: LaunchContext) -> str:
-        return context.scope.anon(perform(self.name, context))
+        return context.anon(perform(self.name, context))
 
 
 class ThisLaunchFile(Substitution):
     def perform(self, context: LaunchContext) -> str:
-        return str(context.scope.file)
+        return str(context.launch_file)
 
 
 class ThisLaunchFileDir(Substitution):
     def perform(self, context: LaunchContext) -> str:
-        return str(context.scope.file.parent)
+        return str(context.launch_file.parent)
 
 
 class LocalSubstitution(Substitution):

@@ -5,57 +5,24 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from launch._base import Action, LaunchContext, Substitution, normalize, perform
+from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess
-from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
-from launcher.declarations import NodeDecl
-from launcher.resolve import join_namespace, remap_problem, valid_name
-from ros_tutorials_common.bounded import InputError, load_yaml, parameter_problem, read_params_file
+from launch_ros.utilities import (
+    node_parameters,
+    node_remaps,
+    parameter_value,
+    relative_namespace,
+)
+from launcher import LaunchError
+from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
+from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
+from ros_tutorials_common.bounded import InputError, read_params_file
 
 __all__ = [
-    "Node", "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetParametersFromFile",
-    "SetRemap",
+    "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
+    "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap",
 ]  # fmt: skip
-
-
-def _is_substitutions(value: Any) -> bool:
-    if isinstance(value, (str, Substitution)):
-        return True
-    return isinstance(value, (list, tuple)) and any(isinstance(v, Substitution) for v in value)
-
-
-def parameter_value(value: Any, context: LaunchContext, where: str) -> Any:
-    """A parameter's value as launch_ros gives it: substitutions and text read as YAML."""
-    if isinstance(value, ParameterValue):
-        text = perform(value.value, context)
-        return text if value.value_type is str else _yaml(text, where)
-    if isinstance(value, bool | int | float) or value is None:
-        return value
-    if _is_substitutions(value):
-        return _yaml(perform(value, context), where)
-    if isinstance(value, (list, tuple)):
-        return [parameter_value(item, context, where) for item in value]
-    return value
-
-
-def _yaml(text: str, where: str) -> Any:
-    try:
-        value = load_yaml(text, "the parameter value")
-    except (yaml.YAMLError, InputError):
-        return text
-    return text if value is None or isinstance(value, dict) else value
-
-
-def _flatten(prefix: str, value: Any) -> list[tuple[str, Any]]:
-    if not isinstance(value, dict):
-        return [(prefix, value)]
-    pairs = []
-    for key, item in value.items():
-        pairs += _flatten(f"{prefix}.{key}" if prefix else str(key), item)
-    return pairs
 
 
 class Node(ExecuteProcess):
@@ -87,40 +54,14 @@ class Node(ExecuteProcess):
     def process_decl(self, context: LaunchContext) -> NodeDecl:
         if self.package is None:
             raise self.error("Node needs a package= here (a program by path: ExecuteProcess)")
-        scope = context.scope
         name = perform(self.node_name, context) if self.node_name is not None else None
         if name is not None and not valid_name(name):
             raise self.error(f"invalid node name {name!r}")
-        namespace = scope.namespace
+        namespace = context.ros_namespace
         if self.node_namespace is not None:
-            namespace = join_namespace(scope.namespace, perform(self.node_namespace, context))
-            if namespace != "/" and not all(valid_name(p) for p in namespace[1:].split("/")):
-                raise self.error(f"invalid namespace {namespace!r}")
-        remaps = list(scope.remaps)
-        for pair in self.remappings:
-            source, target = (perform(part, context) for part in pair)
-            for name_, side in ((source, "from"), (target, "to")):
-                if remap_problem(name_, side):
-                    raise self.error(remap_problem(name_, side) or "")
-            remaps.append((source, target))
-        params, files = list(scope.params), list(scope.params_files)
-        for item in self.parameters:
-            if isinstance(item, dict):
-                values = {perform(k, context): v for k, v in item.items()}
-                for key, value in _flatten("", values):
-                    typed = parameter_value(value, context, self.where)
-                    problem = parameter_problem(key, typed)
-                    if problem:
-                        raise self.error(problem)
-                    params.append((key, typed))
-            else:
-                source = item.param_file if isinstance(item, ParameterFile) else item
-                path = Path(perform(source, context))
-                try:
-                    read_params_file(path)
-                except InputError as error:
-                    raise self.error(str(error)) from None
-                files.append(str(path))
+            namespace = relative_namespace(self, namespace, context)
+        remaps = node_remaps(self, self.remappings, context)
+        params, files = node_parameters(self, self.parameters, context)
         decl = NodeDecl(
             self.where,
             package=perform(self.package, context),
@@ -139,6 +80,66 @@ class Node(ExecuteProcess):
         return decl
 
 
+class ComposableNodeContainer(Node):
+    """A component container with its components: planned and shown (--print); not started,
+    as rclcpp_components is not on PyPI (the launch says so in one line)."""
+
+    def __init__(self, *, name: Any, namespace: Any, composable_node_descriptions: Any = None,
+                 **kwargs: Any) -> None:  # fmt: skip
+        kwargs.setdefault("package", "rclcpp_components")
+        kwargs.setdefault("executable", "component_container")
+        super().__init__(name=name, namespace=namespace, **kwargs)
+        self.composable_node_descriptions = list(composable_node_descriptions or [])
+
+    def execute(self, context: LaunchContext) -> None:
+        name = perform(self.node_name, context)
+        namespace = relative_namespace(self, context.ros_namespace, context)
+        container = ContainerDecl(
+            self.where,
+            join_namespace(namespace, name),
+            perform(self.package, context),
+            perform(self.executable, context),
+        )
+        # a component's namespace is relative to the pushed one, not to its container's
+        nodes = self.composable_node_descriptions
+        container.components = _components(nodes, context, context.ros_namespace)
+        context.sink.add_container(container)
+
+
+class LoadComposableNodes(Action):
+    """Components for a container (``target_container``: its action or its name)."""
+
+    def __init__(self, *, composable_node_descriptions: Any, target_container: Any,
+                 **kwargs: Any) -> None:  # fmt: skip
+        super().__init__(**kwargs)
+        self.composable_node_descriptions = list(composable_node_descriptions)
+        self.target_container = target_container
+
+    def execute(self, context: LaunchContext) -> None:
+        target = self.target_container
+        if isinstance(target, ComposableNodeContainer):
+            base = relative_namespace(target, context.ros_namespace, context)
+            name = join_namespace(base, perform(target.node_name, context))
+        else:
+            name = join_namespace(context.ros_namespace, perform(target, context))
+        container = ContainerDecl(self.where, name)
+        nodes = self.composable_node_descriptions
+        container.components = _components(nodes, context, context.ros_namespace)
+        context.sink.add_container(container)
+
+
+def _components(nodes: list[Any], context: LaunchContext, namespace: str) -> list[ComponentDecl]:
+    from launch_ros.descriptions import ComposableNode
+
+    found = []
+    for node in nodes:
+        if not isinstance(node, ComposableNode):
+            raise LaunchError(f"{caller_where()}: {type(node).__name__} is not a ComposableNode")
+        if node.condition is None or node.condition.evaluate(context):
+            found.append(node.component_decl(context, namespace))
+    return found
+
+
 class PushRosNamespace(Action):
     def __init__(self, namespace: Any, **kw: Any) -> None:
         super().__init__(**kw)
@@ -146,7 +147,10 @@ class PushRosNamespace(Action):
 
     def execute(self, context: LaunchContext) -> None:
         value = perform(self.namespace, context)
-        context.scope.namespace = join_namespace(context.scope.namespace, value)
+        full = namespace_under(context.ros_namespace, value)
+        if full is None:
+            raise self.error(f"invalid namespace {value!r}")
+        context.ros_namespace = full
 
 
 PushROSNamespace = PushRosNamespace
@@ -159,7 +163,7 @@ class SetParameter(Action):
 
     def execute(self, context: LaunchContext) -> None:
         value = parameter_value(self.value, context, self.where)
-        context.scope.params.append((perform(self.name, context), value))
+        context.ros_params.append((perform(self.name, context), value))
 
 
 class SetParametersFromFile(Action):
@@ -173,7 +177,7 @@ class SetParametersFromFile(Action):
             read_params_file(path)
         except InputError as error:
             raise self.error(str(error)) from None
-        context.scope.params_files.append(str(path))
+        context.ros_params_files.append(str(path))
 
 
 class SetRemap(Action):
@@ -186,7 +190,7 @@ class SetRemap(Action):
         for name, side in zip(pair, ("from", "to"), strict=True):
             if remap_problem(name, side):
                 raise self.error(remap_problem(name, side) or "")
-        context.scope.remaps.append(pair)
+        context.ros_remaps.append(pair)
 
 
 __getattr__ = module_getattr("launch_ros.actions", lambda: __all__)

@@ -17,8 +17,12 @@ class ParameterValue:
 
 
 class ParameterFile:
+    """A parameters file; with ``allow_substs`` its $(...) are substituted first (the
+    front-ends' syntax), into a file of its own."""
+
     def __init__(self, param_file: Any, *, allow_substs: Any = False) -> None:
         self.param_file = param_file
+        self.allow_substs = allow_substs
 
 
 __getattr__ = module_getattr("launch_ros.parameter_descriptions", lambda: __all__)

@@ -10,9 +10,10 @@ from pathlib import Path
 
 from launcher import CodeRefused, LaunchError, guardian
 from launcher.declarations import ArgInfo
+from launcher.naming import valid_name
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import Options, describe_args, resolve, valid_name
+from launcher.resolve import Options, describe_args, resolve
 from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
@@ -223,7 +224,7 @@ def main(
         for warning in launch.warnings:
             print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
-        return _print_and_end(format_plan(specs, launch.messages, launch.steps))
+        return _print_and_end(format_plan(specs, launch.messages, launch.steps, launch.containers))
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
     from launcher.supervise import Supervisor, make_log_dir
 

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Any
+from pathlib import Path
+from typing import Any, Protocol
 
 # How many times in a row a respawning process may fail quickly before we give up.
 DEFAULT_RESPAWN_MAX_RETRIES = 10
@@ -94,6 +95,34 @@ class NodeDecl:
 
 
 @dataclass
+class ComponentDecl:
+    """A composable node (launch_ros ComposableNode, <composable_node>): a plugin of a package,
+    loaded into a component container."""
+
+    where: str
+    package: str
+    plugin: str
+    name: str | None = None  # None: the component's default name
+    namespace: str = "/"
+    remaps: list[tuple[str, str]] = field(default_factory=list)
+    params: list[tuple[str, Any]] = field(default_factory=list)
+    extra_args: list[tuple[str, str]] = field(default_factory=list)
+
+
+@dataclass
+class ContainerDecl:
+    """A component container and the components it loads (<node_container>,
+    ComposableNodeContainer), or components loaded into one named by ``target``
+    (<load_composable_node>, LoadComposableNodes)."""
+
+    where: str
+    name: str  # the container's full node name (or the target's, as written)
+    package: str | None = None  # None: components for a container started elsewhere
+    executable: str | None = None
+    components: list[ComponentDecl] = field(default_factory=list)
+
+
+@dataclass
 class Launch:
     """A resolved launch file: the processes to run, the <log> messages to print at the start,
     and the steps that happen later (timers, event handlers)."""
@@ -102,6 +131,7 @@ class Launch:
     messages: list[str]
     warnings: list[str] = field(default_factory=list)  # file:line: what reaches no node
     steps: list[Step] = field(default_factory=list)
+    containers: list[ContainerDecl] = field(default_factory=list)  # planned, not started
 
 
 @dataclass
@@ -113,3 +143,29 @@ class ArgInfo:
     fixed: bool  # ROS 1 <arg value=...>: cannot be set from outside
     where: str
     fmt: str = "ros2"
+
+
+class PlanSink(Protocol):
+    """The one thing the launch model (``launch``, ``launch_ros``) knows of the launcher: where
+    executing an entity hands its result. The resolver (launcher/resolve.py) is one.
+
+    - ``add_node``: a process to run (ExecuteProcess, Node); returns its index, by which an
+      event handler's ``When`` names it.
+    - ``add_step``: a message, a shutdown, or a call of the launch file's code at an event
+      (lazy: its substitutions are performed when the supervisor reports the event).
+    - ``warn``: one line printed before the launch starts.
+    - ``include``: read another launch file (any format) with the ``given`` arguments, in
+      ``scope`` (the including context's, opaque to the model).
+    - ``add_container``: a component container or components to load (planned and shown;
+      not started: rclcpp_components is not on PyPI).
+    """
+
+    def add_node(self, node: NodeDecl) -> int: ...
+
+    def add_step(self, step: Step) -> None: ...
+
+    def warn(self, text: str) -> None: ...
+
+    def include(self, path: Path, given: dict[str, str], scope: Any) -> None: ...
+
+    def add_container(self, container: ContainerDecl) -> None: ...

@@ -19,7 +19,7 @@ from typing import Any
 import yaml
 
 from launcher import LaunchError
-from launcher.declarations import AT_START, Launch, NodeDecl, Step, When
+from launcher.declarations import AT_START, ContainerDecl, Launch, NodeDecl, Step, When
 from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import InputError, load_yaml
 
@@ -218,13 +218,18 @@ def make_plan(
 
 
 def format_plan(
-    specs: list[ProcessSpec], messages: list[str], steps: list[Step] | None = None
+    specs: list[ProcessSpec],
+    messages: list[str],
+    steps: list[Step] | None = None,
+    containers: list[ContainerDecl] | None = None,
 ) -> str:
-    """The plan as text, for --print."""
+    """The plan as text, for --print (component containers last: they are not started)."""
     lines = [f"log: {message}" for message in messages]
     labels = [spec.label for spec in specs]
     for step in steps or []:
         what = {"log": f"log: {step.text}", "shutdown": f"shutdown: {step.text}"}
+        if step.kind == "call" and step.text in what:  # a log or shutdown made at the event
+            what["call"] = f"{step.text}: (its text when the event happens)"
         lines.append(f"{what.get(step.kind, 'call: a function of the launch file')}  "
                      f"({step.when.describe(labels)})")  # fmt: skip
     for spec in specs:
@@ -252,4 +257,20 @@ def format_plan(
         if spec.cwd:
             options.append(f"cwd={spec.cwd}")
         lines.append(f"    options: {', '.join(options)}")
+    for container in containers or []:
+        if container.package is not None:
+            lines.append(f"[container {container.name}]  ({container.where})")
+            lines.append(f"    command: {container.package} {container.executable} (not started)")
+        else:
+            lines.append(f"[load into {container.name}]  ({container.where})")
+        for component in container.components:
+            name = f"{component.namespace.rstrip('/')}/{component.name or '<default name>'}"
+            lines.append(f"    component: {name} = {component.package} {component.plugin}"
+                         f"  ({component.where})")  # fmt: skip
+            for source, target in component.remaps:
+                lines.append(f"        remap:   {source} -> {target}")
+            for key, value in component.params:
+                lines.append(f"        param:   {key} = {value!r}")
+            for key, value in component.extra_args:
+                lines.append(f"        extra:   {key} = {value}")
     return "\n".join(lines)

@@ -85,33 +85,35 @@ def load_description(path: Path) -> Any:
 
 def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
     """Execute a Python launch file into the resolver of ``scope`` (launcher/resolve.py)."""
-    from launch import LaunchContext
+    from launch._base import LaunchContext
 
     description = load_description(path)
     resolver = scope.resolver
+    state = resolver.launch_state()  # one executor state for the whole launch
     scope.args.update(scope.given)  # launch configurations: the given values first
-    context = LaunchContext(scope)
-    deferred_before = len(resolver.deferred_handlers)
+    context = LaunchContext(scope, resolver, state)
+    deferred_before = len(state.deferred_handlers)
     _call(path, context.visit, description)
     # Handlers whose target process was executed after them.
-    waiting = resolver.deferred_handlers[deferred_before:]
-    del resolver.deferred_handlers[deferred_before:]
+    waiting = state.deferred_handlers[deferred_before:]
+    del state.deferred_handlers[deferred_before:]
     for handler, handler_context in waiting:
-        index = resolver.process_index.get(id(handler.target_action))
+        index = state.process_index.get(id(handler.target_action))
         if index is None:
-            resolver.warnings.append(
+            resolver.warn(
                 f"{handler.where}: {type(handler).__name__}'s target_action is never run, "
                 "so its actions never happen"
             )
             continue
         _call(path, handler.register_at, handler_context, When(handler.event, index))
-    if strict:
+    if strict:  # ros2 launch takes them all as configurations: only a typo is worth a line
         declared = {info.name for info in describe_python_args(path, description)}
-        unknown = sorted(set(scope.given) - declared - resolver.configurations_read)
+        unknown = sorted(set(scope.given) - declared - state.configurations_read)
         if unknown:
             names = ", ".join(sorted(declared)) or "none"
-            raise LaunchError(
-                f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
+            resolver.warn(
+                f"{path}: {path.name} declares no argument {', '.join(map(repr, unknown))} "
+                f"and does not read it (declared: {names})"
             )
 
 

@@ -15,6 +15,7 @@ launch leaks included arguments). An included file sees only the arguments passe
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -26,19 +27,35 @@ from typing import Any
 
 import yaml
 
-from launcher import LaunchError
+from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
     DEFAULT_RESPAWN_MAX_RETRIES,
     MAX_SECONDS,
     ArgInfo,
+    ComponentDecl,
+    ContainerDecl,
     Launch,
     NodeDecl,
     Step,
     When,
 )
+from launcher.naming import (
+    flatten,
+    join_namespace,
+    namespace_under,
+    remap_problem,
+    valid_name,
+    yaml_parameter,
+)
 from launcher.parse import YAML_SUFFIXES, Element, parse_file
-from launcher.substitutions import substitute, to_bool
+from launcher.substitutions import (
+    MAX_LAUNCH_SUBSTITUTED,
+    run_command,
+    substitute,
+    substituted_params_file,
+    to_bool,
+)
 from ros_tutorials_common.bounded import (
     InputError,
     load_yaml,
@@ -47,9 +64,6 @@ from ros_tutorials_common.bounded import (
     read_params_file,
     read_text,
 )
-from ros_tutorials_common.names import TOKEN, valid_remap_name
-
-_TOKEN = re.compile(TOKEN)
 
 # Groups and includes nested deeper than this are refused (a recursion, not a real file).
 MAX_DEPTH = 50
@@ -166,27 +180,8 @@ class Scope:
     def anon(self, name: str) -> str:
         return self.resolver.anon(name)
 
-
-def join_namespace(base: str, name: str) -> str:
-    """Namespace ``name`` relative to ``base`` (absolute if it starts with /)."""
-    full = name if name.startswith("/") else f"{base.rstrip('/')}/{name}"
-    return "/" + "/".join(part for part in full.split("/") if part)
-
-
-def remap_problem(name: str, side: str) -> str | None:
-    """Why rcl would refuse ``name`` as the ``side`` ("from" or "to") of a remap; else None."""
-    if valid_remap_name(name, side):
-        return None
-    return (
-        f"remap {side}={name!r} is not a valid ROS name (parts of letters, digits and _, "
-        "not starting with a digit, separated by one /; ~/ only at the start)"
-    )
-
-
-def valid_name(name: str) -> bool:
-    """One part of a ROS name: ASCII letters, digits and _, not starting with a digit (rcl
-    refuses 'pé' and 'nsü', which str.isalnum takes)."""
-    return _TOKEN.fullmatch(name) is not None
+    def charge(self, size: int, element: Element) -> None:
+        self.resolver.charge(size, element.where)
 
 
 # Substitutions only one format has: a sign of the file's format as good as a tag.
@@ -199,11 +194,12 @@ _SUBSTITUTION_SIGNS = {
 ROS1_UNSUPPORTED = {
     "machine": "remote machines are roslaunch's (ROS 2 nodes find each other by discovery: "
     "start the node on that machine)",
-    "test": "<test> belongs to rostest, which ROS 2 replaced with launch_testing",
 }
 # Where an element stands, as TAGS' ``under`` names it.
 _PLACE = {"launch": "launch", "group": "launch", "timer": "launch", "node": "node",
-          "executable": "executable"}  # fmt: skip
+          "executable": "executable", "node_container": "node_container",
+          "load_composable_node": "node_container",
+          "composable_node": "composable_node"}  # fmt: skip
 
 
 def _sign(fmt: str, element: Element, parent: str) -> str | None:
@@ -276,11 +272,6 @@ def _check(element: Element, allowed: set[str] | frozenset[str], note: str = "")
 def _check_tag(element: Element, allowed: dict, scope: Scope, parent: str) -> None:
     """``element`` is one of the ``allowed`` tags (tag -> attributes) under ``parent``."""
     fmt = scope.fmt
-    if fmt == "ros2" and element.tag in ("node_container", "load_composable_node"):
-        raise element.error(
-            f"<{element.tag}>: rclpy has no component container in ROS 2 Jazzy, so composable "
-            "nodes cannot be loaded here; start each component as a <node> of its own"
-        )
     if fmt == "ros1" and element.tag in ROS1_UNSUPPORTED:
         raise element.error(f"<{element.tag}> is not supported: {ROS1_UNSUPPORTED[element.tag]}")
     if element.tag not in allowed:
@@ -361,35 +352,25 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     return text
 
 
-def _ros2_value(text: str) -> Any:
-    """A ROS 2 <param value>, typed as launch_ros types it: read as YAML (``[2, 5, 8]`` is a
-    list, ``2.5`` a double, ``true`` a bool), text where YAML gives no single value."""
-    try:
-        value = load_yaml(text, "the parameter value")
-    except (yaml.YAMLError, InputError):
-        return text
-    return text if value is None or isinstance(value, dict) else value
-
-
 # launch's type names for a ROS 2 <param type=...>: the type, and whether it is a list of it.
 ROS2_TYPES: dict[str, tuple[type | None, bool]] = {
     "str": (str, False), "int": (int, False), "float": (float, False), "bool": (bool, False),
     "list_of_str": (str, True), "list_of_int": (int, True), "list_of_float": (float, True),
     "list_of_bool": (bool, True), "yaml": (None, False),
 }  # fmt: skip
-PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep"})
+PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep", "allow_substs"})
 
 
 def _ros2_scalar(text: str, kind: type | None, element: Element) -> Any:
     """One value of a ROS 2 parameter as launch's coerce_to_type reads it."""
     if kind is None:
-        return _ros2_value(text)
+        return yaml_parameter(text)
     if kind is str:
         return text
     if kind is bool and text in ("1", "0"):  # launch takes 1 and 0 for true and false
         text = {"1": "true", "0": "false"}[text]
     try:
-        value = kind(text) if kind in (int, float) else _ros2_value(text)
+        value = kind(text) if kind in (int, float) else yaml_parameter(text)
     except ValueError:
         value = None
     if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
@@ -410,7 +391,7 @@ def _ros2_typed(texts: str | list[str], type_name: str | None, element: Element)
         return [_ros2_scalar(text, kind, element) for text in texts]
     if not is_list:
         return _ros2_scalar(texts, kind, element)
-    items = _ros2_value(texts)
+    items = yaml_parameter(texts)
     if not isinstance(items, list) or not all(
         isinstance(item, kind) and not (kind is int and isinstance(item, bool)) for item in items
     ):
@@ -445,14 +426,20 @@ def _check_params_file(element: Element, path: Path) -> None:
         raise element.error(str(error)) from None
 
 
-def _flatten(prefix: str, value: Any) -> list[tuple[str, Any]]:
-    """A YAML mapping as (name, value) pairs with /-separated names."""
-    if not isinstance(value, dict):
-        return [(prefix, value)]
-    pairs = []
-    for key, item in value.items():
-        pairs += _flatten(f"{prefix.rstrip('/')}/{key}", item)
-    return pairs
+def describe_container(container: ContainerDecl) -> str:
+    """A container and its components in one phrase (the warning, --print)."""
+    what = f"{container.name}" if container.package else f"components for {container.name}"
+    names = ", ".join(
+        f"{c.namespace.rstrip('/')}/{c.name or '<default>'} ({c.package}::{c.plugin})"
+        if "::" not in c.plugin
+        else f"{c.namespace.rstrip('/')}/{c.name or '<default>'} ({c.plugin})"
+        for c in container.components
+    )
+    return f"{what} with {names}" if names else f"{what} (no components)"
+
+
+def _short(text: str, limit: int = 60) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 class Resolver:
@@ -464,13 +451,7 @@ class Resolver:
         self.messages: list[str] = []
         self.steps: list[Step] = []
         self.warnings: list[str] = []
-        # The Python front-end: actions executed, the index of each process action (what an
-        # event handler's target_action names), handlers waiting for their target, and the
-        # launch configurations read (an argument read but not declared is not a typo).
-        self.executed: dict[int, Any] = {}
-        self.process_index: dict[int, int] = {}
-        self.deferred_handlers: list[tuple[Any, Any]] = []
-        self.configurations_read: set[str] = set()
+        self.python_state: Any = None  # the launch model's own state (launch_state())
         self.anon_names: dict[str, str] = {}
         self.include_chain: list[Path] = []
         self.depth = 0  # nested groups and includes
@@ -484,6 +465,9 @@ class Resolver:
         # ROS 1: each ~param written outside a <node> (name, where) -> whether a node got it.
         self.private_given: dict[tuple[str, str], bool] = {}
         self.reads: dict[Path, set[str]] = {}  # the arguments each file reads
+        self.expanded = 0  # characters substitutions expanded to, in the whole launch
+        self.tests: list[str] = []  # ROS 1 <test>s, ignored as roslaunch ignores them
+        self.containers: list[ContainerDecl] = []
 
     def warn(self, text: str) -> None:
         """A warning printed before the launch starts (once, however often it is found)."""
@@ -504,6 +488,16 @@ class Resolver:
             self.warn(
                 f"{element.where}: {name!r} ({value!r}) was set by {scope.leaked[name]}; "
                 "ros2 launch lets it out (its includes are not scoped)"
+            )
+
+    def charge(self, size: int, where: str) -> None:
+        """Count what substitutions expanded to; refuse the launch past MAX_LAUNCH_SUBSTITUTED
+        (``where``: the file:line that crossed it)."""
+        self.expanded += size
+        if self.expanded > MAX_LAUNCH_SUBSTITUTED:
+            raise LaunchError(
+                f"{where}: this launch's substitutions expand to more than "
+                f"{MAX_LAUNCH_SUBSTITUTED // (1024 * 1024)} MiB in all; refusing"
             )
 
     def anon(self, name: str) -> str:
@@ -588,7 +582,7 @@ class Resolver:
         declared = {element.attrs.get("name") for element in _file_args(root)}
         unknown = sorted(set(scope.given) - declared)
         names = ", ".join(sorted(n for n in declared if n)) or "none"
-        if unknown and strict:
+        if unknown and strict and scope.fmt == "ros1":  # roslaunch: "unused args"
             if given_at and unknown[0] in given_at:  # an <include>'s <arg>: name its line
                 raise given_at[unknown[0]].error(
                     f"no argument named {', '.join(unknown)} is declared in {path.name} "
@@ -597,12 +591,17 @@ class Resolver:
             raise LaunchError(
                 f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
             )
+        if scope.fmt == "ros2":  # ros2 launch sets every given argument as a configuration
+            for name in unknown:
+                scope.args.setdefault(name, scope.given[name])
         self.resolve_scope(root, scope)
-        for name in unknown:  # ros2 launch sets them all the same; nothing here reads this one
-            if name not in self.reads.get(path, set()) and given_at and name in given_at:
+        for name in unknown:  # a typo is worth a line where nothing reads the value
+            named = given_at is not None and name in given_at  # by an <include>'s <arg>
+            if name not in self.reads.get(path, set()) and (named or (strict and not given_at)):
+                where = given_at[name].where if given_at and named else str(path)
                 self.warn(
-                    f"{given_at[name].where}: {path.name} declares no argument {name!r} and "
-                    f"does not read it (declared: {names})"
+                    f"{where}: {path.name} declares no argument {name!r} and does not read it "
+                    f"(declared: {names})"
                 )
 
     def resolve_scope(self, element: Element, scope: Scope) -> None:
@@ -612,6 +611,31 @@ class Resolver:
             if self.depth > MAX_DEPTH:
                 raise element.error(f"groups and includes nested more than {MAX_DEPTH} deep")
             self.resolve_children(element, scope, "launch")
+        finally:
+            self.depth -= 1
+
+    def entities(self, element: Element) -> list[Any]:
+        """The children of a <group> or <timer> as launch entities (launch._base
+        .FrontendEntity), for the action that holds them (GroupAction, TimerAction): each, when
+        reached, is checked and read by its tag's handler in the scope the action gives it."""
+        from launch._base import FrontendEntity
+
+        def handle(child: Element, context: Any) -> None:
+            scope = context.frontend_scope
+            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, element.tag)
+            if self.enabled(child, scope):
+                TAGS[scope.fmt][child.tag].handler(self, child, scope)
+
+        return [FrontendEntity(functools.partial(handle, child), child.where)
+                for child in element.children]  # fmt: skip
+
+    def run_nested(self, action: Any, element: Element, scope: Scope) -> None:
+        """run() for an action that holds entities: one level deeper (a recursion is refused)."""
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise element.error(f"groups and includes nested more than {MAX_DEPTH} deep")
+            self.run(action, element, scope)
         finally:
             self.depth -= 1
 
@@ -642,12 +666,32 @@ class Resolver:
             if not given:
                 why = "no <node> follows it in its scope"
                 _add_once(unreached.setdefault((where, why), []), "~" + name)
+        if self.containers:
+            self.warn(
+                "component containers need rclcpp_components, which is not on PyPI; not "
+                f"started: {'; '.join(describe_container(c) for c in self.containers)}"
+            )
+        if self.tests:
+            self.warn(
+                f"ignored {len(self.tests)} <test> (roslaunch leaves them to rostest; ROS 2 has "
+                f"launch_testing): {', '.join(self.tests)}"
+            )
         warnings = [
             f"{where}: param {', '.join(map(repr, names))} "
             f"{'is' if len(names) == 1 else 'are'} given to no node: {why}"
             for (where, why), names in unreached.items()
         ]
-        return Launch(self.nodes, self.messages, self.warnings + warnings, self.steps)
+        return Launch(
+            self.nodes, self.messages, self.warnings + warnings, self.steps, self.containers
+        )
+
+    def include(self, path: Path, given: dict[str, str], scope: Any) -> None:
+        """PlanSink.include: a file included by a Python file (IncludeLaunchDescription)."""
+        self.resolve_file(path, given, scope, strict=False)
+
+    def add_container(self, container: ContainerDecl) -> None:
+        """PlanSink.add_container: planned and shown, not started (see finish())."""
+        self.containers.append(container)
 
     def add_node(self, node: NodeDecl) -> int:
         """Add a process to the launch; its index is how event handlers name it."""
@@ -720,12 +764,26 @@ class Resolver:
 
     def namespace(self, element: Element, name: str, scope: Scope) -> str:
         value = self.text(element, name, scope)
-        full = join_namespace(scope.namespace, value)
-        parts = value.strip("/").split("/")  # "a//b" has an empty part: a typo, refused
-        bad_part = value.strip("/") and not all(valid_name(part) for part in parts)
-        if bad_part or (full != "/" and not all(valid_name(p) for p in full[1:].split("/"))):
+        full = namespace_under(scope.namespace, value)
+        if full is None:
             raise element.error(f"invalid namespace {value!r}")
         return full
+
+    def run(self, action: Any, element: Element, scope: Scope) -> None:
+        """Execute a launch action (launch/, launch_ros/) in ``scope``: what the tag does is
+        the action's one definition; its handler here only reads the attributes."""
+        from launch._base import LaunchContext
+
+        action.where = element.where
+        LaunchContext(scope, self, self.launch_state()).visit(action)
+
+    def launch_state(self) -> Any:
+        """The launch model's executor state, one for the whole launch (every format)."""
+        if self.python_state is None:
+            from launch._base import LaunchState
+
+            self.python_state = LaunchState()
+        return self.python_state
 
     # -- tags: arguments, scopes, includes ----------------------------------------------------
 
@@ -746,34 +804,54 @@ class Resolver:
         # (roslaunch's own tests load such files).
         if fixed and name in scope.given and not scope.pass_all:
             raise element.error(f"argument {name!r} has a fixed value and cannot be set")
+        if scope.fmt == "ros2":
+            self.declare(element, scope, name)
+            return
         if fixed:
             value = self.text(element, "value", scope)
         elif name in scope.given:
             value = scope.given[name]
-        elif scope.fmt == "ros2" and name in scope.args:  # ros2 launch keeps a value set before
-            value = scope.args[name]
-            if name in scope.inherited:  # said once, here, not again where it is read
-                scope.inherited.discard(name)
-                self.warn(
-                    f"{element.where}: argument {name!r} is {value!r}, the value of the file "
-                    "including this one (not passed to it), not its default; ros2 launch lets "
-                    "it in (its includes are not scoped)"
-                )
         elif "default" in element.attrs:
             value = self.text(element, "default", scope)
-        elif scope.fmt == "ros1":  # roslaunch fails only where such an argument is used
+        else:  # roslaunch fails only where such an argument is used
             scope.unset[name] = element.line
             return
-        else:
-            raise element.error(f"argument {name!r} is required: pass {name}:=<value>")
         choices = [self.text(child, "value", scope) for child in element.children]
         if choices and value not in choices:
             raise element.error(f"argument {name!r} is {value!r}; choose one of {choices}")
         scope.args[name] = value
 
+    def declare(self, element: Element, scope: Scope, name: str) -> None:
+        """A ROS 2 <arg>: DeclareLaunchArgument, its default performed only if no value was
+        given or set before (ros2 launch keeps a value set before, even one let in from the
+        including file, which is said once, here)."""
+        from launch.actions import DeclareLaunchArgument
+        from launch.substitutions import FrontendText
+
+        if name in scope.given:
+            scope.args[name] = scope.given[name]
+        elif name in scope.inherited and name in scope.args:
+            scope.inherited.discard(name)  # not again where it is read
+            self.warn(
+                f"{element.where}: argument {name!r} is {scope.args[name]!r}, the value of the "
+                "file including this one (not passed to it), not its default; ros2 launch lets "
+                "it in (its includes are not scoped)"
+            )
+        default = element.attrs.get("default")
+        choices = [self.text(child, "value", scope) for child in element.children]
+        action = DeclareLaunchArgument(
+            name,
+            default_value=None if default is None else FrontendText(default, element),
+            choices=choices or None,
+        )
+        self.run(action, element, scope)
+
     @tag("ros2", "let", {"name", "value"})
     def on_let(self, element: Element, scope: Scope) -> None:
-        scope.args[self.text(element, "name", scope)] = self.text(element, "value", scope)
+        from launch.actions import SetLaunchConfiguration
+
+        name, value = self.text(element, "name", scope), self.text(element, "value", scope)
+        self.run(SetLaunchConfiguration(name, value), element, scope)
 
     @tag("ros1", "group", {"ns", "clear_params"}, marks={"ns", "clear_params"})
     def on_ros1_group(self, element: Element, scope: Scope) -> None:
@@ -783,12 +861,16 @@ class Resolver:
 
     @tag("ros2", "group", {"scoped"}, marks={"scoped"})
     def on_ros2_group(self, element: Element, scope: Scope) -> None:
+        from launch.actions import GroupAction
+
         scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
-        self.resolve_scope(element, scope.child() if scoped else scope)
+        self.run_nested(GroupAction(self.entities(element), scoped=scoped), element, scope)
 
     @tag("ros2", "push_ros_namespace", {"namespace"})
     def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
-        scope.namespace = self.namespace(element, "namespace", scope)
+        from launch_ros.actions import PushRosNamespace
+
+        self.run(PushRosNamespace(self.text(element, "namespace", scope)), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
          marks={"ns", "pass_all_args", "clear_params"})  # fmt: skip
@@ -825,22 +907,26 @@ class Resolver:
 
     @tag("ros2", "log", {"message", "level"})
     def on_log(self, element: Element, scope: Scope) -> None:
-        text = self.text(element, "message", scope)
-        self.add_step(Step(scope.when, "log", text, where=element.where))
+        from launch.actions import LogInfo
+
+        self.run(LogInfo(msg=self.text(element, "message", scope)), element, scope)
 
     @tag("ros2", "timer", {"period"})
     def on_timer(self, element: Element, scope: Scope) -> None:
         """<timer period="S">: its children happen S seconds after the timer itself."""
+        from launch.actions import TimerAction
+
         period = self.number(element, "period", scope)
         if period is None:
             raise element.error("<timer> needs a 'period' in seconds")
-        self.resolve_scope(element, scope.child(when=scope.when.later(period)))
+        timer = TimerAction(period=period, actions=self.entities(element))
+        self.run_nested(timer, element, scope)
 
     # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 
     @tag("ros1", "remap", {"from", "to"}, under={"launch", "node"})
     @tag("ros2", "set_remap", {"from", "to"})
-    @tag("ros2", "remap", {"from", "to"}, under={"node"})
+    @tag("ros2", "remap", {"from", "to"}, under={"node", "composable_node"})
     def on_remap(self, element: Element, scope: Scope) -> None:
         names = []
         for side in ("from", "to"):
@@ -852,28 +938,34 @@ class Resolver:
             names.append(name)
         if scope.fmt == "ros1":  # roslaunch: a later remap of the same name replaces the earlier
             scope.remaps[:] = [remap for remap in scope.remaps if remap[0] != names[0]]
-        scope.remaps.append((names[0], names[1]))
+            scope.remaps.append((names[0], names[1]))
+            return
+        from launch_ros.actions import SetRemap  # ROS 2: the action's one definition
+
+        self.run(SetRemap(names[0], names[1]), element, scope)
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
     @tag("ros2", "set_env", {"name", "value"})
     @tag("ros2", "env", {"name", "value"}, under={"node", "executable"})
     def on_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = self.text(element, "value", scope)
+        from launch.actions import SetEnvironmentVariable
+
+        name, value = self.env_name(element, scope), self.text(element, "value", scope)
+        self.run(SetEnvironmentVariable(name, value), element, scope)
 
     @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
     def on_append_env(self, element: Element, scope: Scope) -> None:
         """Add to a variable of the environment the launch started with (or set before)."""
+        from launch.actions import AppendEnvironmentVariable
+
         name = self.env_name(element, scope)
         value = self.text(element, "value", scope)
         prepend = self.text(element, "prepend", scope, "false").strip().lower()
         if prepend not in ("true", "false", "1", "0", "yes", "no"):
             raise element.error(f"'prepend' must be true or false, not {prepend!r}")
         separator = self.text(element, "separator", scope, os.pathsep)
-        old = scope.env[name] if name in scope.env else os.environ.get(name)
-        if old:
-            first, last = (value, old) if prepend in ("true", "1", "yes") else (old, value)
-            value = first + separator + last
-        scope.env[name] = value
+        before = prepend in ("true", "1", "yes")  # launch_xml's own test writes "yes"
+        self.run(AppendEnvironmentVariable(name, value, before, separator), element, scope)
 
     @tag("ros2", "reset", set())
     def on_reset(self, element: Element, scope: Scope) -> None:
@@ -887,19 +979,25 @@ class Resolver:
 
     @tag("ros2", "unset_env", {"name"})
     def on_unset_env(self, element: Element, scope: Scope) -> None:
-        scope.env[self.env_name(element, scope)] = None
+        from launch.actions import UnsetEnvironmentVariable
+
+        self.run(UnsetEnvironmentVariable(self.env_name(element, scope)), element, scope)
 
     @tag("ros2", "set_parameter", {"name", "value"})
-    @tag("ros2", "param", PARAM_ATTRS, under={"node"}, marks={"value_sep"})
+    @tag("ros2", "param", PARAM_ATTRS, under={"node", "composable_node"}, marks={"value_sep"})
     def on_ros2_param(self, element: Element, scope: Scope, prefix: str = "") -> None:
         """A node's parameter (or <set_parameter>), typed as launch_ros types it: by YAML, or by
         its ``type``; ``value-sep`` makes a list; ``<param name="group">`` holds ``<param>``s."""
         if "from" in element.attrs:  # a params file, checked now: the child would fail on it later
             path = Path(self.text(element, "from", scope))
             path = path if path.is_absolute() else scope.file.parent / path
+            if self.flag(element, "allow_substs", scope):
+                path = substituted_params_file(path, scope, element)
             _check_params_file(element, path)
             scope.params_files.append(str(path))
             return
+        if "allow_substs" in element.attrs:
+            raise element.error("allow_substs is for a parameters file (<param from=...>)")
         name = prefix + self.text(element, "name", scope)
         if element.children:  # a group of parameters: their names start with its own
             if {"value", "type"} & element.attrs.keys():
@@ -925,10 +1023,14 @@ class Resolver:
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
 
-    @tag("ros1", "param", {"name", "value", "type", "textfile", "binfile"},
+    @tag("ros1", "param", {"name", "value", "type", "textfile", "binfile", "command"},
          under={"launch", "node"}, marks={"textfile", "binfile"})  # fmt: skip
     def on_ros1_param(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope)
+        sources = sorted({"value", "textfile", "binfile", "command"} & element.attrs.keys())
+        if len(sources) > 1:
+            raise element.error(f"<param> takes one of value, textfile, binfile, command, "
+                                f"not {' and '.join(sources)}")  # fmt: skip
         if "binfile" in element.attrs:
             raise element.error(
                 "binfile is not supported: a ROS 2 parameter given to a node at its start "
@@ -940,9 +1042,17 @@ class Resolver:
                 value: Any = read_text(path if path.is_absolute() else scope.file.parent / path)
             except InputError as error:
                 raise element.error(str(error)) from None
+        elif "command" in element.attrs:  # roslaunch: what the program prints, typed
+            command = self.text(element, "command", scope)
+            if not scope.allow_code:
+                raise CodeRefused(f"{element.where}: <param command={command!r}> runs a program")
+            shown = f"<param command={command!r}>"
+            text = run_command(command, element.error, shown)
+            value = _typed_value(text, element.attrs.get("type"), element)
         else:
             text = self.text(element, "value", scope)
             value = _typed_value(text, element.attrs.get("type"), element)
+        value = self.flat_lists(element, name, value)
         if name.startswith("~"):
             name = name[1:]  # private: inside <node> the namespace is already the node's
             _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
@@ -952,7 +1062,7 @@ class Resolver:
                 self.private_given.setdefault((name, element.where), False)
                 return
         _check_params(element, {name: value} if isinstance(value, dict) else None, name, value)
-        for key, item in _flatten(join_namespace(scope.namespace, name), value):
+        for key, item in flatten(value, "/", join_namespace(scope.namespace, name)):
             self.param_server[key] = item
             self.param_origin[key] = (name, element.where)
 
@@ -991,12 +1101,31 @@ class Resolver:
         value = _load_yaml(text, element)
         if value is None:  # an empty file or tag: nothing to load, as roslaunch
             return
+        value = self.flat_lists(element, element.attrs.get("param", ""), value)
         _check_params(element, value if isinstance(value, dict) else None, "", value)
         if "param" not in element.attrs and not isinstance(value, dict):
             raise element.error("<rosparam> without 'param' must hold a YAML mapping")
-        for key, item in _flatten(namespace, value):
+        for key, item in flatten(value, "/", namespace):
             self.param_server[key] = item
             self.param_origin[key] = (key, element.where)
+
+    def flat_lists(self, element: Element, name: str, value: Any) -> Any:
+        """ROS 1 takes a list of lists (a footprint); a ROS 2 parameter cannot: such a list
+        goes on as its YAML text, as ROS 2 navigation reads a footprint, with one warning."""
+        if isinstance(value, dict):
+            return {
+                key: self.flat_lists(element, f"{name}/{key}" if name else str(key), item)
+                for key, item in value.items()
+            }
+        if isinstance(value, list) and any(isinstance(item, list | dict) for item in value):
+            text = yaml.safe_dump(value, default_flow_style=True, width=math.inf).strip()
+            self.warn(
+                f"{element.where}: param {name.lstrip('/')!r} is a list of lists, which a ROS 2 "
+                f"parameter cannot hold: given as the string {_short(text)!r} (as ROS 2 "
+                "navigation reads a footprint)"
+            )
+            return text
+        return value
 
     def _ros1_params(self, node: NodeDecl, reached: set[str]) -> list[tuple[str, Any]]:
         """A ROS 1 node's parameters from the parameter server (see the module docstring);
@@ -1019,6 +1148,69 @@ class Resolver:
         return list(params.items())
 
     # -- tags: processes ----------------------------------------------------------------------
+
+    @tag("ros2", "node_container", {"pkg", "exec", "name", "namespace", "args", "output"},
+         marks={"exec", "namespace"})  # fmt: skip
+    @tag("ros2", "load_composable_node", {"target"})
+    def on_container(self, element: Element, scope: Scope) -> None:
+        """A component container with its components, or components for one (``target``)."""
+        if element.tag == "load_composable_node":
+            name = self.text(element, "target", scope)
+            package = executable = None
+        else:
+            package, executable = (
+                self.text(element, "pkg", scope),
+                self.text(element, "exec", scope),
+            )
+            namespace = scope.namespace
+            if "namespace" in element.attrs:
+                namespace = self.namespace(element, "namespace", scope)
+            name = join_namespace(namespace, self.text(element, "name", scope))
+        container = ContainerDecl(element.where, name, package, executable)
+        for child in element.children:
+            _check_tag(child, allowed_tags("ros2", "node_container"), scope, element.tag)
+            if self.enabled(child, scope):
+                container.components.append(self.composable_node(child, scope))
+        self.add_container(container)
+
+    @tag(
+        "ros2", "composable_node", {"pkg", "plugin", "name", "namespace"}, under={"node_container"}
+    )
+    def composable_node(self, element: Element, scope: Scope) -> ComponentDecl:
+        namespace = scope.namespace
+        if "namespace" in element.attrs:
+            namespace = self.namespace(element, "namespace", scope)
+        inner = scope.child(in_node=True)
+        extra = []
+        for child in element.children:
+            _check_tag(child, allowed_tags("ros2", "composable_node"), scope, element.tag)
+            if not self.enabled(child, scope):
+                continue
+            if child.tag == "extra_arg":
+                extra.append((self.text(child, "name", scope), self.text(child, "value", scope)))
+            else:
+                TAGS["ros2"][child.tag].handler(self, child, inner)
+        return ComponentDecl(
+            element.where,
+            self.text(element, "pkg", scope),
+            self.text(element, "plugin", scope),
+            self.text(element, "name", scope, "") or None,
+            namespace,
+            inner.remaps,
+            inner.params,
+            extra,
+        )
+
+    @tag("ros2", "extra_arg", {"name", "value"}, under={"composable_node"})
+    def on_extra_arg(self, element: Element, scope: Scope) -> None:
+        """Read by composable_node() itself."""
+
+    @tag("ros1", "test", {"pkg", "type", "name", "test_name", "args", "ns", "clear_params",
+                          "cwd", "launch_prefix", "retry", "time_limit"})  # fmt: skip
+    def on_test(self, element: Element, scope: Scope) -> None:
+        """roslaunch skips <test> (rostest runs it): said in one line at the end."""
+        name = element.attrs.get("test_name") or element.attrs.get("name") or "<test>"
+        self.tests.append(f"{name} ({element.where})")
 
     @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
                           "required", "launch_prefix", "clear_params"},
@@ -1084,13 +1276,34 @@ class Resolver:
         private = f"{namespace.rstrip('/')}/{name}"
         if ros1:  # the ~params written before it in its scope, then its own <param>s
             for key, value, where in scope.private:
-                for full, item in _flatten(f"{private}/{key}", value):
+                for full, item in flatten(value, "/", f"{private}/{key}"):
                     self.param_server[full] = item
                     self.param_origin[full] = ("~" + key, where)
                 self.private_given[(key, where)] = True
         node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
             scope.child(in_node=True))  # fmt: skip
         self.resolve_children(element, node_scope, element.tag)
+        if not ros1:  # launch_ros's Node or launch's ExecuteProcess, in the node's own scope
+            from launch.actions import ExecuteProcess, Shutdown
+            from launch_ros.actions import Node
+
+            process: dict[str, Any] = {
+                "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
+                "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
+                "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
+                "cwd": cwd, "on_exit": Shutdown() if required else None,
+            }  # fmt: skip
+            if cmd is not None:
+                action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
+            else:
+                action = Node(
+                    package=package, executable=executable, name=name,
+                    namespace=namespace if ns_attr in element.attrs else None,
+                    exec_name=self.text(element, "exec_name", scope, "") or None,
+                    arguments=args, ros_arguments=ros_args, **process,
+                )  # fmt: skip
+            self.run(action, element, node_scope)
+            return
         node = NodeDecl(
             element.where,
             package=package,

@@ -1,33 +1,43 @@
-"""Substitutions: the ``$(...)`` expressions in attribute values.
+r"""Substitutions: the ``$(...)`` expressions in attribute values.
 
 ROS 1: $(arg x) $(find pkg) $(env V) $(optenv V [default]) $(anon name) $(dirname) $(eval ...)
 ROS 2: $(var x) $(env V [default]) $(find-pkg-share pkg) $(find-pkg-prefix pkg) $(dirname)
        $(anon name) $(not x) $(and x y) $(or x y) $(equals x y) $(eval ...) $(command ...)
-Substitutions nest (``$(var $(var which))``). $(command) runs a program, so it is refused
+       $(file-content PATH)
+Substitutions nest (``$(var $(var which))``). In the ROS 2 format a backslash makes the next
+character plain text (``\$(`` is no substitution, ``\'`` no quote), as launch's grammar reads it;
+roslaunch has no escapes. $(command) runs a program, so it is refused
 unless the user passes --allow-code; so is an $(eval) that needs code to compute
 (launcher/expressions.py reads the rest without running any).
 """
 
 from __future__ import annotations
 
+import atexit
 import math
 import os
+import re
 import shlex
+import shutil
 import subprocess
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
 
-from launcher import CodeRefused
+from launcher import CodeRefused, LaunchError
 from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
 from launcher.parse import Element
 from ros_tutorials_common import packages
-from ros_tutorials_common.bounded import MAX_INPUT_BYTES
+from ros_tutorials_common.bounded import MAX_INPUT_BYTES, InputError, read_text
 
 TRUE_WORDS = ("true", "1")
+_ESCAPE = re.compile(r"\\(.)", re.DOTALL)
 MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 MAX_SUBSTITUTED = 1024 * 1024  # characters one attribute's substitutions may expand to
+# Characters all the substitutions of one launch may expand to: each attribute within its cap,
+# a large argument used in thousands of attributes would still fill the memory.
+MAX_LAUNCH_SUBSTITUTED = 64 * 1024 * 1024
 FALSE_WORDS = ("false", "0")
 
 
@@ -45,24 +55,33 @@ class Context(Protocol):
 
     def read_arg(self, name: str, element: Element) -> str: ...
 
+    def charge(self, size: int, element: Element) -> None:
+        """Count ``size`` characters toward the launch's MAX_LAUNCH_SUBSTITUTED."""
 
-def to_bool(value: str, element: Element, what: str) -> bool:
+
+def to_bool(value: str, where: Element | str, what: str) -> bool:
+    """A condition or flag's text as both formats and launch's Python API read it: true,
+    false, 1 or 0, any case; else an error at ``where`` (an element or a file:line)."""
     word = value.strip().lower()
     if word in TRUE_WORDS:
         return True
     if word in FALSE_WORDS:
         return False
-    raise element.error(f"{what} must be true, false, 1 or 0, not {value!r}")
+    message = f"{what} must be true, false, 1 or 0, not {value!r}"
+    raise where.error(message) if isinstance(where, Element) else LaunchError(f"{where}: {message}")
 
 
 def substitute(text: str, context: Context, element: Element) -> str:
     """Replace every $(...) in text; refuse a result longer than MAX_SUBSTITUTED characters
     (arguments whose defaults repeat the one before grow tenfold a level: ten levels of a
     1.2 KB file took the launcher to 10.8 GB)."""
+    escapes = context.fmt == "ros2"
+    if "$(" not in text and not (escapes and "\\" in text):
+        return text
     out, position, size = [], 0, 0
-    while (start := text.find("$(", position)) >= 0:
-        out.append(text[position:start])
-        end = _closing_paren(text, start, element)
+    while (start := _next_substitution(text, position, escapes)) >= 0:
+        out.append(_plain(text[position:start], escapes))
+        end = _closing_paren(text, start, element, escapes)
         value = _evaluate(text[start + 2 : end].strip(), context, element)
         size += start - position + len(value)
         if size > MAX_SUBSTITUTED:
@@ -71,30 +90,70 @@ def substitute(text: str, context: Context, element: Element) -> str:
             )
         out.append(value)
         position = end + 1
-    out.append(text[position:])
-    return "".join(out)
+    out.append(_plain(text[position:], escapes))
+    result = "".join(out)
+    context.charge(len(result), element)
+    return result
 
 
-def _closing_paren(text: str, start: int, element: Element) -> int:
-    depth = 0
-    for index in range(start + 1, len(text)):
-        if text[index] == "(":
+def _next_substitution(text: str, position: int, escapes: bool) -> int:
+    """Where the next ``$(`` not written as ``\\$(`` starts (ROS 2), or -1."""
+    while (start := text.find("$(", position)) >= 0:
+        if not escapes or not _escaped(text, start):
+            return start
+        position = start + 1
+    return -1
+
+
+def _escaped(text: str, index: int) -> bool:
+    """Whether an odd number of backslashes stands right before ``text[index]``."""
+    count = 0
+    while index - count - 1 >= 0 and text[index - count - 1] == "\\":
+        count += 1
+    return count % 2 == 1
+
+
+def _plain(text: str, escapes: bool) -> str:
+    """Plain text of a ROS 2 attribute: a backslash gives the character after it (launch's
+    replace_escaped_characters)."""
+    return _ESCAPE.sub(r"\1", text) if escapes and "\\" in text else text
+
+
+def _closing_paren(text: str, start: int, element: Element, escapes: bool = False) -> int:
+    depth, index = 0, start + 1
+    while index < len(text):
+        char = text[index]
+        if escapes and char == "\\":  # \( and \) are no parentheses (ROS 2)
+            index += 2
+            continue
+        if char == "(":
             depth += 1
             if depth > MAX_NESTING:
                 raise element.error(f"substitutions nested more than {MAX_NESTING} deep")
-        elif text[index] == ")":
+        elif char == ")":
             depth -= 1
             if depth == 0:
                 return index
+        index += 1
     raise element.error(f"unterminated substitution in {text!r}")
 
 
-def _split_words(text: str) -> list[str]:
-    """Split on spaces that are outside quotes and outside nested $(...); drop the quotes."""
+def _split_words(text: str, escapes: bool = False) -> list[str]:
+    """Split on spaces that are outside quotes and outside nested $(...); drop the quotes.
+    With ``escapes`` (ROS 2) a backslash and the character after it stay as written, for
+    substitute() to read: they neither quote, split nor nest."""
     words: list[str] = []
     current: list[str] = []  # characters, joined once (adding to a string was quadratic)
-    depth, quote, started = 0, "", False
+    depth, quote, started, escaped = 0, "", False, False
     for char in text:
+        if escaped:
+            current.append(char)
+            escaped = False
+            continue
+        if escapes and char == "\\":
+            current.append(char)
+            escaped = started = True
+            continue
         if quote:
             if char == quote and depth == 0:
                 quote = ""
@@ -125,7 +184,8 @@ def _evaluate(inner: str, context: Context, element: Element) -> str:
         raise CodeRefused(f"{element.where}: $(command) runs a program named in the launch file")
     if context.fmt == "ros1" and name == "eval":
         return _ros1_eval(rest, context, element)  # ROS 1 eval sees raw Python, not $(...)
-    words = [substitute(word, context, element) for word in _split_words(rest)]
+    split = _split_words(rest, escapes=context.fmt == "ros2")
+    words = [substitute(word, context, element) for word in split]
     function, counts = table[name]
     if len(words) not in counts:
         raise element.error(f"$({name}) takes {_plural(counts)}, got {len(words)}: $({inner})")
@@ -247,38 +307,85 @@ def _ros2_eval(words: list[str], context: Context, element: Element) -> str:
 
 
 def _command(words: list[str], _context: Context, element: Element) -> str:
-    try:
-        command = shlex.split(" ".join(words))
-    except ValueError as error:
-        raise element.error(f"$(command {' '.join(words)}): {error}") from None
     shown = f"$(command {' '.join(words)})"
+    return run_command(" ".join(words), element.error, shown)
+
+
+def run_command(
+    text: str,
+    error: Callable[[str], Exception],
+    shown: str,
+    env: dict[str, str] | None = None,
+    on_stderr: str = "ignore",
+) -> str:
+    """What the command line ``text`` prints: launch's Command, $(command) and roslaunch's
+    <param command>. ``error`` makes the exception for a message (with the file:line),
+    ``shown`` names the command in it. ``on_stderr`` "fail" (launch's Command) fails on
+    anything printed to stderr; "capture" adds it to the output."""
+    try:
+        command = shlex.split(text)
+    except ValueError as problem:
+        raise error(f"{shown}: {problem}") from None
+    if not command:
+        raise error(f"{shown}: no command")
     # Its output is read with the same limit as a file (1 MiB); stderr goes to a file, so
     # neither pipe can fill up and block it, nor fill the launcher's memory.
     with tempfile.TemporaryFile() as errors:
         try:
-            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=errors)
-        except OSError as error:
-            raise element.error(f"{shown} failed: {error}") from None
+            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=errors, env=env)
+        except OSError as problem:
+            raise error(f"{shown} failed: {problem}") from None
         with process:
             assert process.stdout is not None
             out = process.stdout.read(MAX_INPUT_BYTES + 1)
             if len(out) > MAX_INPUT_BYTES:
                 process.kill()
-                raise element.error(f"{shown} printed more than 1 MiB")
+                raise error(f"{shown} printed more than 1 MiB")
             try:
                 code = process.wait(timeout=60)
             except subprocess.TimeoutExpired:
                 process.kill()
-                raise element.error(f"{shown} failed: still running after 60 s") from None
+                raise error(f"{shown} failed: still running after 60 s") from None
         errors.seek(0)
         stderr = errors.read(64 * 1024).decode(errors="replace")
-    if code != 0:
+    if code != 0 or (stderr.strip() and on_stderr == "fail"):
         reason = stderr.strip().splitlines()[-1:] or [f"exit code {code}"]
-        raise element.error(f"{shown} failed: {reason[0]}")
+        raise error(f"{shown} failed: {reason[0]}")
     try:
-        return out.decode()
+        text = out.decode()
     except UnicodeDecodeError:
-        raise element.error(f"{shown} printed something that is not UTF-8 text") from None
+        raise error(f"{shown} printed something that is not UTF-8 text") from None
+    return text + stderr if on_stderr == "capture" else text
+
+
+def _file_content(words: list[str], _context: Context, element: Element) -> str:
+    """launch's FileContent: the text of a file (a relative path from the current directory,
+    as ros2 launch opens it), at most 1 MiB."""
+    try:
+        return read_text(Path(words[0]))
+    except InputError as error:
+        raise element.error(f"$(file-content): {error}") from None
+
+
+_SUBSTITUTED_DIR: list[Path] = []  # made once, removed when the launcher exits
+
+
+def substituted_params_file(path: Path, context: Context, element: Element) -> Path:
+    """launch_ros's ParameterFile(allow_substs=True): the file with its $(...) substituted,
+    written to a file of its own for the node to read."""
+    try:
+        text = read_text(path)
+    except InputError as error:
+        raise element.error(str(error)) from None
+    text = substitute(text, context, element)
+    if not _SUBSTITUTED_DIR:
+        folder = Path(tempfile.mkdtemp(prefix="launch_params_"))
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)
+        _SUBSTITUTED_DIR.append(folder)
+    handle, name = tempfile.mkstemp(prefix=f"{path.stem}_", suffix=".yaml", dir=_SUBSTITUTED_DIR[0])
+    with os.fdopen(handle, "w", encoding="utf-8") as out:
+        out.write(text)
+    return Path(name)
 
 
 ANY = range(1, 100)
@@ -304,4 +411,5 @@ ROS2 = {
     "equals": (_equals, range(2, 3)),
     "eval": (_ros2_eval, ANY),
     "command": (_command, ANY),
+    "file-content": (_file_content, range(1, 2)),
 }

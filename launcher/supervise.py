@@ -425,7 +425,8 @@ class Supervisor:
             self.say(f"started {spec.label} (pid {child.pid})")
         if self.debug:
             self.say(f"  command: {shlex.join(spec.command)}")
-        self.raise_event("start", self.children.index(child), {"pid": child.process.pid})
+        info = {"pid": child.process.pid, "cmd": spec.command, "cwd": spec.cwd}
+        self.raise_event("start", self.children.index(child), info)
 
     def _listened(self, child: Child, name: str) -> bool:
         index = self.children.index(child)

@@ -229,3 +229,27 @@ def test_type_checking_imports_and_parent_packages_are_not_edges(tmp_path):
     # A name of the package itself (not one of its modules) is an edge to its __init__.
     _write(tmp_path, {"pkg/a.py": "from pkg import B\n"})
     assert cycles(tmp_path) == ["pkg (pkg/__init__.py:1) -> pkg.a (pkg/a.py:1) -> pkg"]
+
+
+def test_the_launch_model_knows_the_launcher_only_through_its_interface():
+    # launch/ and launch_ros/ (the model: entities, substitutions, the executor's context)
+    # hand their results to launcher.declarations.PlanSink; they import neither the resolver
+    # nor the front-ends' parser of tags, and read no resolver attribute.
+    graph = import_graph(ROOT)
+    model = [name for name in graph if name.split(".")[0] in ("launch", "launch_ros")]
+    assert "launch_ros.actions" in model and "launch._base" in model
+    reaching = [
+        f"{name} -> {edge.target} ({edge.where})"
+        for name in model
+        for edge in graph[name]
+        if edge.target in ("launcher.resolve", "launcher.python_files", "launcher.__main__")
+    ]
+    assert not reaching, "the launch model imports the launcher's resolver:\n" + "\n".join(reaching)
+    pokes = [
+        f"{path.relative_to(ROOT)}:{number}"
+        for package in ("launch", "launch_ros")
+        for path in sorted((ROOT / package).rglob("*.py"))
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1)
+        if ".resolver" in line or "context.scope" in line
+    ]
+    assert not pokes, "the launch model reads the resolver's internals:\n" + "\n".join(pokes)

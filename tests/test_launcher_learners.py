@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from launcher.__main__ import main
-from launcher.resolve import remap_problem
+from launcher.naming import remap_problem
 
 NODE = '<node pkg="ros_tutorials_topic" type="topic_publisher" name="pub">{}</node>'
 

@@ -5,15 +5,20 @@ from __future__ import annotations
 from typing import Any
 
 from launch._missing import module_getattr
+from launch.event import Event
+from launch.events import process
+from launch.events.process import (
+    ProcessExited,
+    ProcessIO,
+    ProcessStarted,
+    ProcessStderr,
+    ProcessStdout,
+)
 
-__all__ = ["Event", "ProcessExited", "ProcessIO", "ProcessStarted", "Shutdown"]
-
-
-class Event:
-    """An event; its attributes are what the launcher reports with it."""
-
-    def __init__(self, **fields: Any) -> None:
-        self.__dict__.update(fields)
+__all__ = [
+    "Event", "ProcessExited", "ProcessIO", "ProcessStarted", "ProcessStderr", "ProcessStdout",
+    "Shutdown", "process",
+]  # fmt: skip
 
 
 class Shutdown(Event):
@@ -21,27 +26,6 @@ class Shutdown(Event):
         super().__init__(reason=reason, due_to_sigint=due_to_sigint)
 
 
-class ProcessStarted(Event):
-    pass
-
-
-class ProcessExited(Event):
-    pass
-
-
-class ProcessIO(Event):
-    pass
-
-
-class _Process:
-    """launch.events.process, as launch files import it."""
-
-    ProcessStarted = ProcessStarted
-    ProcessExited = ProcessExited
-    ProcessIO = ProcessIO
-
-
-process = _Process()
 __getattr__ = module_getattr("launch.events", lambda: __all__)
 
 
