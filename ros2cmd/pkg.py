@@ -62,37 +62,12 @@ def prefix(name: str, share: bool = False) -> None:
 
 
 def executables(name: str) -> dict[str, Path]:
-    """A package's executables: name -> the file that runs (a script or a module's source)."""
-    found = {}
-    lib = package_prefix(name) / "lib" / name
-    for folder, subfolders, files in os.walk(lib):  # an installed package's, as ros2pkg finds
-        subfolders[:] = sorted(sub for sub in subfolders if not sub.startswith("."))
-        for file in files:
-            path = Path(folder, file)
-            if os.access(path, os.X_OK):
-                found[file] = path
-    for project_package in packages.resolve_package(name):
-        found.update(_project_executables(project_package))
-    return dict(sorted(found.items()))
-
-
-def _project_executables(package: str) -> dict[str, Path]:
-    """This project's executables of one package, one name per module: its console
-    script's where it has one (`turtle_teleop_key`, not the module `teleop_key`)."""
-    directory = packages.package_dirs()[package]
-    scripts = {
-        name
-        for name, target in packages.console_scripts().items()
-        if target.startswith(f"{package}.")
-    }
-    by_module: dict[str, tuple[str, Path]] = {}
-    for name, command in packages.executables(package).items():
-        module = command[2] if command[1] == "-m" else name
-        if name in scripts:  # a console script: what a colcon install puts in lib/PKG/
-            by_module[module] = (name, Path(sys.executable).parent / name)
-        elif module not in by_module:
-            by_module[module] = (name, directory / f"{module.rpartition('.')[2]}.py")
-    return dict(by_module.values())
+    """A package's executables: name -> the file that runs (a script or a module's source);
+    the pairs `ros2 run` takes (ros_tutorials_common/packages.py), a seed's name's too."""
+    found = packages.executable_files(name)
+    if not found:
+        package_prefix(name)  # "Package 'NAME' not found" unless it is a package
+    return found
 
 
 def print_executables(name: str | None, full_path: bool) -> None:
