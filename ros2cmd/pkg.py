@@ -57,8 +57,15 @@ def list_packages() -> None:
 
 
 def prefix(name: str, share: bool = False) -> None:
-    path = package_prefix(name)
-    print(path / "share" / name if share else path)
+    if name in ament.packages():
+        path = package_prefix(name)
+        print(path / "share" / name if share else path)
+        return
+    try:  # a seed's name `ros2 run` takes (demo_nodes_cpp): the package it stands for
+        print(packages.share_directory(name) if share else packages.prefix(name))
+    except packages.UnknownPackage as error:
+        known = packages.resolve_package(name)
+        raise ToolError(str(error) if known else f"Package '{name}' not found") from None
 
 
 def executables(name: str) -> dict[str, Path]:

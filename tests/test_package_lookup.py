@@ -39,6 +39,11 @@ def test_ros2_pkg_lists_exactly_what_ros2_run_runs(name):
 def test_ros2_pkg_executables_of_the_seeds_names():
     # ros2 run demo_nodes_cpp talker works here, so `ros2 pkg` names it too.
     assert "demo_nodes_cpp talker\n" in ok("ros2", "pkg", "executables", "demo_nodes_cpp")
+    share = ok("ros2", "pkg", "prefix", "--share", "demo_nodes_cpp").strip()
+    assert share == str(packages.share_directory("ros_tutorials_demo_nodes"))
+    assert fails("ros2", "pkg", "prefix", "my_package").startswith(
+        "error: my_package (a seed's package) stands for ros_tutorials_topic, "
+    )
     # Seed 003's own names, for the lessons they run here.
     listed = ok("ros2", "pkg", "executables", "pub_sub").splitlines()
     assert {"pub_sub publisher", "pub_sub subscriber"} <= set(listed)
