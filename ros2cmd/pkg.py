@@ -7,9 +7,10 @@
     ros2 pkg create --build-type ament_python --license Apache-2.0 --node-name my_node my_package
 
 The packages are those of the ament index (ros_tutorials_common/ament.py: this environment,
-and what AMENT_PREFIX_PATH adds). A package's executables are what an installed package has in
-<prefix>/lib/<package>/, and for this project's packages what `ros2 run` starts
-(ros_tutorials_common/packages.py): `turtlesim` is the interface package, its nodes are
+and what AMENT_PREFIX_PATH adds). A package's executables are exactly what `ros2 run` starts,
+from the one table in ros_tutorials_common/packages.py: what an installed package has in
+<prefix>/lib/<package>/, and for this project's packages and the seeds' names for them
+(`demo_nodes_cpp`, `pub_sub`) the lessons: `turtlesim` is the interface package, its nodes are
 ros_tutorials_turtlesim's, listed under the name the tutorials type.
 
 `create` writes the files ros2pkg's templates write (package.xml, setup.py, setup.cfg,
