@@ -17,6 +17,7 @@ from launcher.resolve import Options, describe_args, resolve
 from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.dds import environment_problem
 
 EXAMPLES = """\
 examples:
@@ -103,10 +104,16 @@ def find_launch_file(names: list[str]) -> Path:
             known = ", ".join(packages.package_dirs())
             hint = packages.not_sourced_hint(package)
             raise LaunchError(hint or f"unknown package {package!r}; known packages: {known}")
-        for pkg in found:  # share/PKG/launch/NAME, as `ros2 launch PKG NAME` finds it
-            path = packages.share_directory(pkg) / "launch" / name
-            if path.is_file():
-                return path
+        # Anywhere in share/PKG, as `ros2 launch PKG NAME` finds it; once, or say where.
+        paths = [path for pkg in found for path in packages.share_files(pkg, name)]
+        if len(paths) == 1:
+            return paths[0]
+        if paths:
+            where = ", ".join(f"'{path}'" for path in paths)
+            raise LaunchError(
+                f"file {name!r} was found more than once in the share directory of package "
+                f"{package!r}: [{where}]"
+            )
         have = ", ".join(file.name for pkg in found for file in packages.launch_files(pkg))
         message = f"{package} has no launch file {name!r}"
         elsewhere = [pkg for pkg, files in _shipped().items() if name in (f.name for f in files)]
@@ -225,6 +232,10 @@ def main(
             print(f"warning: {warning}", file=sys.stderr, flush=True)
     if options.print:
         return _print_and_end(format_plan(specs, launch.messages, launch.steps, launch.containers))
+    problem = environment_problem()  # as `ros2 run`: one line before any node starts
+    if problem:
+        print(f"error: {problem}", file=sys.stderr)
+        return 1
     # Imported here so --print and --show-args stay fast (this pulls in the ROS plumbing).
     from launcher.supervise import Supervisor, make_log_dir
 

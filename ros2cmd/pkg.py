@@ -7,9 +7,10 @@
     ros2 pkg create --build-type ament_python --license Apache-2.0 --node-name my_node my_package
 
 The packages are those of the ament index (ros_tutorials_common/ament.py: this environment,
-and what AMENT_PREFIX_PATH adds). A package's executables are what an installed package has in
-<prefix>/lib/<package>/, and for this project's packages what `ros2 run` starts
-(ros_tutorials_common/packages.py): `turtlesim` is the interface package, its nodes are
+and what AMENT_PREFIX_PATH adds). A package's executables are exactly what `ros2 run` starts,
+from the one table in ros_tutorials_common/packages.py: what an installed package has in
+<prefix>/lib/<package>/, and for this project's packages and the seeds' names for them
+(`demo_nodes_cpp`, `pub_sub`) the lessons: `turtlesim` is the interface package, its nodes are
 ros_tutorials_turtlesim's, listed under the name the tutorials type.
 
 `create` writes the files ros2pkg's templates write (package.xml, setup.py, setup.cfg,
@@ -67,42 +68,24 @@ def list_packages() -> None:
 
 
 def prefix(name: str, share: bool = False) -> None:
-    path = package_prefix(name)
-    print(path / "share" / name if share else path)
+    if name in ament.packages():
+        path = package_prefix(name)
+        print(path / "share" / name if share else path)
+        return
+    try:  # a seed's name `ros2 run` takes (demo_nodes_cpp): the package it stands for
+        print(packages.share_directory(name) if share else packages.prefix(name))
+    except packages.UnknownPackage as error:
+        known = packages.resolve_package(name)
+        raise ToolError(str(error) if known else f"Package '{name}' not found") from None
 
 
 def executables(name: str) -> dict[str, Path]:
-    """A package's executables: name -> the file that runs (a script or a module's source)."""
-    found = {}
-    lib = package_prefix(name) / "lib" / name
-    for folder, subfolders, files in os.walk(lib):  # an installed package's, as ros2pkg finds
-        subfolders[:] = sorted(sub for sub in subfolders if not sub.startswith("."))
-        for file in files:
-            path = Path(folder, file)
-            if os.access(path, os.X_OK):
-                found[file] = path
-    for project_package in packages.resolve_package(name):
-        found.update(_project_executables(project_package))
-    return dict(sorted(found.items()))
-
-
-def _project_executables(package: str) -> dict[str, Path]:
-    """This project's executables of one package, one name per module: its console
-    script's where it has one (`turtle_teleop_key`, not the module `teleop_key`)."""
-    directory = packages.package_dirs()[package]
-    scripts = {
-        name
-        for name, target in packages.console_scripts().items()
-        if target.startswith(f"{package}.")
-    }
-    by_module: dict[str, tuple[str, Path]] = {}
-    for name, command in packages.executables(package).items():
-        module = command[2] if command[1] == "-m" else name
-        if name in scripts:  # a console script: what a colcon install puts in lib/PKG/
-            by_module[module] = (name, Path(sys.executable).parent / name)
-        elif module not in by_module:
-            by_module[module] = (name, directory / f"{module.rpartition('.')[2]}.py")
-    return dict(by_module.values())
+    """A package's executables: name -> the file that runs (a script or a module's source);
+    the pairs `ros2 run` takes (ros_tutorials_common/packages.py), a seed's name's too."""
+    found = packages.executable_files(name)
+    if not found:
+        package_prefix(name)  # "Package 'NAME' not found" unless it is a package
+    return found
 
 
 def print_executables(name: str | None, full_path: bool) -> None:

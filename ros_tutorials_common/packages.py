@@ -282,13 +282,51 @@ def _tools() -> dict[str, list[str]]:
 
 
 def executable_commands(package: str) -> dict[str, list[str]]:
-    """Executable name -> command line, for any package name `ros2 run` and rosrun take: the
-    installed package's lib/<package>/, then this project's packages the name stands for."""
+    """Executable name -> command line, for any package name `ros2 run`, rosrun, the launcher
+    and `ros2 pkg executables` take: the one table of which (package, executable) pairs exist.
+
+    An installed package's lib/<package>/ comes first; a package of a sourced workspace is only
+    that (it shadows a seed's name and its executables' names). For a package of this project,
+    or a seed's name, the executables of the packages it stands for, and a seed's own names for
+    them (EXECUTABLE_ALIASES: seed 003's `pub_sub publisher`)."""
     known = installed_executables(package)
-    for name in resolve_package(package):
+    targets = resolve_package(package)
+    for name in targets:
         for found, line in executables(name).items():
             known.setdefault(found, line)
-    return known
+    if targets and targets != (package,):  # a seed's name: its own names win over the lessons'
+        for (seed, name), target in EXECUTABLE_ALIASES.items():
+            if seed == package and target in known:
+                known[name] = known[target]
+    return dict(sorted(known.items()))
+
+
+def executable_files(package: str) -> dict[str, Path]:
+    """What `ros2 pkg executables` lists: the names of executable_commands(), one per program,
+    each with the file that runs (an installed file; a console script; a module's source).
+
+    A program with several names is listed under the seed's name, else its console script's
+    (what a colcon install puts in lib/PKG/: `turtle_teleop_key`, not the module `teleop_key`)."""
+    commands = executable_commands(package)
+    seed_names = {name for seed, name in EXECUTABLE_ALIASES if seed == package}
+    scripts = console_scripts()
+
+    def rank(name: str) -> int:
+        return 0 if name in seed_names else 1 if name in scripts else 2
+
+    chosen: dict[tuple[str, ...], str] = {}
+    for name in sorted(commands, key=rank):
+        chosen.setdefault(tuple(commands[name]), name)
+    files = {}
+    for line, name in chosen.items():
+        if line[1:2] != ("-m",) and line[1:2] != ("-c",):
+            files[name] = Path(line[0])  # an installed file
+        elif name in scripts:
+            files[name] = Path(sys.executable).parent / name
+        else:  # a module of this project's: its source
+            package_name, _, module = line[2].rpartition(".")
+            files[name] = package_dirs()[package_name] / f"{module}.py"
+    return dict(sorted(files.items()))
 
 
 def command(package: str, executable: str) -> list[str]:
@@ -314,11 +352,11 @@ def command(package: str, executable: str) -> list[str]:
         raise PackageNotFound(
             f"unknown package {package!r}; known packages: {known_package_names()}"
         )
-    # The book's ROS 1 files sometimes name scripts with their suffix (type="talker.py").
-    name = executable.removesuffix(".py")
-    name = EXECUTABLE_ALIASES.get((package, name), name)
+    # The name as given first (an installed `listener.py`); then without the suffix the book's
+    # ROS 1 files sometimes add to a script's name (type="talker.py").
+    name = executable if executable in known else executable.removesuffix(".py")
     if name not in known:
-        hint = not_sourced_hint(package)
+        hint = "" if overlay_package(package) else not_sourced_hint(package)
         if hint:  # a seed's name (my_package) that the learner's own package has too
             raise PackageNotFound(hint)
         have = ", ".join(sorted(known))
@@ -377,3 +415,22 @@ def launch_files(package: str) -> list[Path]:
         return []
     suffixes = (".launch", ".xml", ".py", ".yaml", ".yml")  # the three formats of ros2 launch
     return sorted(path for path in folder.iterdir() if path.name.endswith(suffixes))
+
+
+def share_files(package: str, file_name: str) -> list[Path]:
+    """Every file named FILE_NAME in share/PACKAGE and its folders, as `ros2 launch PKG FILE`
+    looks (ros2launch walks the whole share directory: a package may install its launch file
+    in share/PKG itself). The folders this environment links in (launch/, config/) are
+    followed, each real folder once."""
+    share = ament.share_directory(package)
+    found, seen = [], set()
+    for folder, subfolders, files in os.walk(share, followlinks=True):
+        real = os.path.realpath(folder)
+        if real in seen:  # a link back up the tree
+            subfolders[:] = []
+            continue
+        seen.add(real)
+        subfolders.sort()
+        if file_name in files:
+            found.append(Path(folder, file_name))
+    return found

@@ -1,5 +1,6 @@
 """An environment rclpy.init cannot work with: one line naming the variable, exit status 1,
-no traceback and no raw Fast DDS lines, from `ros2 run` (of a lesson, turtlesim) and the tools."""
+no traceback and no raw Fast DDS lines, from `ros2 run` (of a lesson, turtlesim), the tools
+and the launcher."""
 
 from __future__ import annotations
 
@@ -14,6 +15,10 @@ COMMANDS = {
     "ros2 topic list": ("ros2", "topic", "list", "--no-daemon"),
     "rostopic list": ("rostopic", "list"),
     "turtlesim": ("ros2", "run", "turtlesim", "turtlesim_node"),
+    # The launcher checks it once, before any of its nodes starts.
+    "roslaunch": ("roslaunch", "ros_tutorials_topic", "union.launch"),
+    "ros2 launch": ("ros2", "launch", "ros_tutorials_topic", "union.launch.xml"),
+    "python -m launcher": ("python", "-m", "launcher", "union.launch"),
 }
 PROBLEMS = {
     "domain id not a number": ({"ROS_DOMAIN_ID": "abc"}, "ROS_DOMAIN_ID='abc' is not a whole"),

@@ -180,7 +180,7 @@ def test_eval_without_code_is_bounded_and_code_needs_allow_code(tmp_path):
                      "</launch>")  # fmt: skip
 
     assert "failed: an integer of more than 4096 bits" in raised(node("9 ** 9 ** 9"))
-    assert "failed: a value longer than 1048576 items" in raised(node("'x' * 10 ** 7"))
+    assert "failed: a value longer than 1048576 characters" in raised(node("'x' * 10 ** 7"))
     assert "failed: name 'nothing' is not defined" in raised(node("nothing + 1"))
     assert "'__' is not allowed in $(eval)" in raised(node("().__class__"))  # as roslaunch
     with pytest.raises(CodeRefused):

@@ -13,12 +13,18 @@ their files); their share/PKG/package.xml is replaced by a link to the source to
 (ros_tutorials_common/packages.py package_folder()). Entries this script made for packages
 that no longer exist are removed.
 
+xacro comes from PyPI as a Python distribution only (its `xacro` command), with no index entry.
+It is registered as a ROS installation has it: the marker, share/xacro/package.xml, and the
+command as lib/xacro/xacro (`ros2 run xacro xacro`) and share/xacro/xacro (ROS 1's
+`$(find xacro)/xacro`), both links to the installed script.
+
     .venv/bin/python tools/register_packages.py [--prefix DIR]
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib.metadata
 import shutil
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -63,6 +69,38 @@ def register(prefix: Path, source: Path) -> None:
     (prefix / INDEX / source.name).touch()  # the marker's content is empty, as colcon's
 
 
+XACRO_MANIFEST = """<?xml version="1.0"?>
+<package format="3">
+  <name>xacro</name>
+  <version>{version}</version>
+  <description>Xacro (XML Macros): the xacro distribution from PyPI</description>
+  <maintainer email="rhaschke@techfak.uni-bielefeld.de">Robert Haschke</maintainer>
+  <license>BSD-3-Clause</license>
+  <export><build_type>ament_python</build_type></export>
+</package>
+"""
+
+
+def register_xacro(prefix: Path) -> bool:
+    """Put the PyPI xacro in the ament index; False if it is not installed here."""
+    script = prefix / "bin" / "xacro"
+    try:
+        version = importlib.metadata.version("xacro")
+    except importlib.metadata.PackageNotFoundError:
+        return False
+    if not script.is_file():
+        return False
+    share = prefix / "share" / "xacro"
+    share.mkdir(parents=True, exist_ok=True)
+    (share / "package.xml").write_text(XACRO_MANIFEST.format(version=version))
+    link(share / "xacro", script)
+    (prefix / "lib" / "xacro").mkdir(parents=True, exist_ok=True)
+    link(prefix / "lib" / "xacro" / "xacro", script)
+    (prefix / INDEX).mkdir(parents=True, exist_ok=True)
+    (prefix / INDEX / "xacro").touch()
+    return True
+
+
 def remove_stale(prefix: Path) -> None:
     """Unregister packages whose share/PKG/package.xml links into this project to nothing."""
     index = prefix / INDEX
@@ -93,6 +131,8 @@ def main(argv: list[str] | None = None) -> int:
         installed = prefix / "share" / manifest_name(manifest) / "package.xml"
         if installed.exists():  # built by tools/build_interfaces.py
             link(installed, manifest)
+    if register_xacro(prefix):
+        print(f"xacro registered in the ament index in {prefix}")
     return 0
 
 

@@ -1,0 +1,130 @@
+"""The package index's answers (ros_tutorials_common/packages.py): which (package, executable)
+pairs exist, for `ros2 run`, `rosrun`, the launcher and `ros2 pkg` alike; xacro, from PyPI, found
+as a ROS installation has it; and `$(eval)` refusing a value too big before it computes it."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+from helpers import fails, ok
+
+from launcher.expressions import BUILTINS, MATH, evaluate
+from ros2cmd import pkg
+from ros_tutorials_common import ament, packages
+
+
+def every_package_name() -> list[str]:
+    """The names `ros2 run` takes: the runnable packages, and the seeds' names for them."""
+    seeds = [name for name in packages.PACKAGE_ALIASES if packages.resolve_package(name)]
+    return sorted({*packages.runnable_packages(), *seeds})
+
+
+@pytest.mark.parametrize("name", every_package_name())
+def test_ros2_pkg_lists_exactly_what_ros2_run_runs(name):
+    listed = pkg.executables(name)
+    assert listed, f"`ros2 pkg executables {name}` lists nothing"
+    table = packages.executable_commands(name)
+    for executable, path in listed.items():
+        assert packages.command(name, executable) == table[executable]
+        assert path.is_file(), (name, executable, path)
+    # Every program `ros2 run` starts is listed, under one of its names.
+    assert {tuple(line) for line in table.values()} == {
+        tuple(table[executable]) for executable in listed
+    }
+
+
+def test_ros2_pkg_executables_of_the_seeds_names():
+    # ros2 run demo_nodes_cpp talker works here, so `ros2 pkg` names it too.
+    assert "demo_nodes_cpp talker\n" in ok("ros2", "pkg", "executables", "demo_nodes_cpp")
+    share = ok("ros2", "pkg", "prefix", "--share", "demo_nodes_cpp").strip()
+    assert share == str(packages.share_directory("ros_tutorials_demo_nodes"))
+    assert fails("ros2", "pkg", "prefix", "my_package").startswith(
+        "error: my_package (a seed's package) stands for ros_tutorials_topic, "
+    )
+    # Seed 003's own names, for the lessons they run here.
+    listed = ok("ros2", "pkg", "executables", "pub_sub").splitlines()
+    assert {"pub_sub publisher", "pub_sub subscriber"} <= set(listed)
+    assert packages.command("pub_sub", "publisher") == packages.command(
+        "ros_tutorials_topic", "num_publisher"
+    )
+
+
+def test_an_executable_named_with_its_suffix_is_looked_up_by_that_name_first():
+    table = packages.executable_commands("rospy_tutorials")
+    # ROS 1 launch files name scripts with their suffix; here they have none.
+    assert packages.command("rospy_tutorials", "listener.py") == table["listener"]
+    with pytest.raises(packages.UnknownExecutable, match=re.escape("no executable 'nothing.py'")):
+        packages.command("rospy_tutorials", "nothing.py")
+
+
+# -- xacro -------------------------------------------------------------------------------------
+
+ROBOT_XACRO = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="box_bot">
+  <xacro:property name="side" value="0.5"/>
+  <xacro:macro name="box_link" params="name">
+    <link name="${name}"><visual><geometry><box size="${side} ${side*2} 1"/></geometry></visual>
+    </link>
+  </xacro:macro>
+  <xacro:box_link name="base_link"/>
+</robot>
+"""
+
+
+def test_xacro_turns_a_xacro_file_into_urdf(tmp_path):
+    source = tmp_path / "box_bot.urdf.xacro"
+    source.write_text(ROBOT_XACRO)
+    urdf = ok("xacro", str(source))
+    assert '<robot name="box_bot">' in urdf
+    assert '<link name="base_link">' in urdf and '<box size="0.5 1.0 1"/>' in urdf
+    # As a ROS installation has it: `ros2 run xacro xacro` and ROS 1's `$(find xacro)/xacro`.
+    assert ok("ros2", "run", "xacro", "xacro", str(source)) == urdf
+    assert "xacro" in ament.packages()
+    found = Path(ok("rospack", "find", "xacro").strip())
+    assert found == ament.share_directory("xacro")
+    result = subprocess.run(
+        [str(found / "xacro"), str(source)], capture_output=True, text=True, timeout=60
+    )
+    assert result.returncode == 0 and result.stdout == urdf, result.stderr
+    assert ok("ros2", "pkg", "executables", "xacro") == "xacro xacro\n"
+
+
+# -- $(eval) ------------------------------------------------------------------------------------
+
+TOO_BIG = [
+    "[[1]*1000000]*1000000 == [[1]*1000000]*1000000",
+    "str([[1]*1000000]*1000000)",
+    "'%0999999999d' % 1",
+    "'%*d' % (999999999, 1)",
+    "str([10**1000]*100000)",
+    "round(10, -10**18)",
+]
+
+
+@pytest.mark.parametrize("expression", TOO_BIG)
+def test_eval_refuses_a_value_too_big_before_computing_it(expression):
+    with pytest.raises(OverflowError):
+        evaluate(expression, {**MATH, **BUILTINS})
+
+
+@pytest.mark.parametrize(
+    "expression,value",
+    [("'%05d' % 42", "00042"), ("'%s-%.2f' % ('a', 2)", "a-2.00"), ("len([0]*1000)", 1000),
+     ("round(1234, -2)", 1200), ("[1, 2] * 2 == [1, 2, 1, 2]", True)],
+)  # fmt: skip
+def test_eval_still_computes_what_is_small(expression, value):
+    assert evaluate(expression, {**MATH, **BUILTINS}) == value
+
+
+def test_a_launch_file_with_a_huge_eval_fails_in_one_line(tmp_path):
+    path = tmp_path / "big.launch"
+    path.write_text(
+        '<launch><arg name="x" value="$(eval [[1]*1000000]*1000000 == [[1]*1000000]*1000000)"/>'
+        '<node pkg="ros_tutorials_topic" type="talker" name="$(arg x)"/></launch>\n'
+    )
+    line = fails("roslaunch", str(path), "--print", timeout=120)
+    assert line.startswith(f"error: {path}:1: $(eval [[1]*1000000]*1000000 ==")
+    assert line.endswith("failed: a value longer than 1048576 characters")
