@@ -48,6 +48,7 @@ OTHER_COMMANDS = ("db", "resolve", "search", "what-needs", "where-defined", "fix
 # Test dependencies of every ament_cmake package `ros2 pkg create` makes, needed only with
 # BUILD_TESTING on, which this environment's toolchain file leaves off (they are not on PyPI).
 BUILD_TESTING_ONLY = ("ament_lint_auto", "ament_lint_common")
+HERE = "rosdep answers from this environment (its ament index and Python packages)"
 NOT_HERE = (
     "this rosdep answers from this environment (the ament index and the Python packages "
     "installed in it); it has no rosdep database"
@@ -199,10 +200,10 @@ def run(args: argparse.Namespace) -> int:
     if args.command is None:
         raise ToolError("Please enter a command (install, check, keys, init, update)")
     if args.command == "init":
-        print(f"rosdep init: nothing to set up: {NOT_HERE} (no sources list to write)")
+        print(f"rosdep init: nothing to set up here: {HERE}, without a sources list")
         return 0
     if args.command == "update":
-        print(f"rosdep update: nothing to download: {NOT_HERE} (no rosdistro index to fetch)")
+        print(f"rosdep update: nothing to download here: {HERE}, without a rosdistro index")
         return 0
     if args.command in OTHER_COMMANDS:
         raise ToolError(f"rosdep {args.command} is not available here: {NOT_HERE}")
