@@ -10,6 +10,8 @@ switch `console_stderr` off and this handler prints what failed, where, and the 
     stdout_stderr.log)
 
 (one line on the terminal). `colcon build --event-handlers console_stderr+` shows it all again.
+`colcon test`: failed tests are colcon's test failures (`colcon test-result` lists them);
+tests that could not even run (a test module that does not import) are one line too.
 The handler is registered in pyproject.toml (entry point group colcon_core.event_handler).
 """
 
@@ -17,20 +19,25 @@ from __future__ import annotations
 
 import re
 import sys
-from collections import defaultdict
+from collections import defaultdict, deque
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 from colcon_core.event.job import JobEnded
-from colcon_core.event.output import StderrLine
+from colcon_core.event.output import StderrLine, StdoutLine
 from colcon_core.event_handler import EventHandlerExtensionPoint
 from colcon_core.location import get_log_path
 from colcon_core.plugin_system import satisfies_version
 from colcon_core.subprocess import SIGINT_RESULT
+from colcon_core.verb.test import TestPackageArguments
+
+from ros_tutorials_common.pypi_packages import not_available_line
 
 MAX_REASON = 300  # characters: a reason longer than that is cut (the log has it all)
 INTERFACE_SUFFIXES = ("_Request", "_Response", "_Goal", "_Result", "_Feedback")
+# `colcon test`: pytest reports on standard output; its last lines say why it stopped.
+KEPT_STDOUT_LINES = 200
 
 
 class FailureLineEventHandler(EventHandlerExtensionPoint):
@@ -43,18 +50,70 @@ class FailureLineEventHandler(EventHandlerExtensionPoint):
         super().__init__()
         satisfies_version(EventHandlerExtensionPoint.EXTENSION_POINT_VERSION, "^1.0")
         self._stderr: defaultdict[Any, list[bytes]] = defaultdict(list)
+        self._stdout: defaultdict[Any, deque[bytes]] = defaultdict(
+            lambda: deque(maxlen=KEPT_STDOUT_LINES)
+        )
 
     def __call__(self, event: tuple[Any, Any]) -> None:
         data, job = event
         if isinstance(data, StderrLine):
             line = data.line
             self._stderr[job].append(line if isinstance(line, bytes) else line.encode())
+        elif isinstance(data, StdoutLine) and testing(job):
+            line = data.line
+            self._stdout[job].append(line if isinstance(line, bytes) else line.encode())
         elif isinstance(data, JobEnded):
             lines = self._stderr.pop(job, [])
+            stdout = self._stdout.pop(job, ())
             if data.rc and data.rc != SIGINT_RESULT:
                 text = b"".join(lines).decode(errors="replace")
                 source = Path(job.task_context.pkg.path)
-                print(failure_line(data.identifier, source, text, data.rc), file=sys.stderr)
+                if testing(job):
+                    output = b"".join(stdout).decode(errors="replace")
+                    line = tests_not_run_line(data.identifier, source, text, output, data.rc)
+                else:
+                    line = failure_line(data.identifier, source, text, data.rc)
+                print(line, file=sys.stderr)
+
+
+def testing(job: Any) -> bool:
+    """Whether JOB is a package's tests (`colcon test`), not its build."""
+    return isinstance(job.task_context.args, TestPackageArguments)
+
+
+def tests_not_run_line(
+    package: str, source: Path, stderr: str, stdout: str, returncode: int
+) -> str:
+    """The line for PACKAGE whose tests could not run (failed tests are not a failed job:
+    colcon counts them as test failures, and `colcon test-result` lists them)."""
+    reason = pytest_stop_reason(stdout, source) or exception_line(stderr)
+    reason = reason or first_error_line(stderr) or f"exit code {returncode}"
+    line = f"error: {package}: the tests did not run: " + " ".join(reason.split())
+    if len(line) > MAX_REASON + 40:
+        line = line[: MAX_REASON + 37] + "..."
+    log = get_log_path()
+    if log is not None:
+        line += f" (full log: {shown(log / package / 'stdout_stderr.log')})"
+    return line
+
+
+def pytest_stop_reason(stdout: str, source: Path) -> str:
+    """pytest's reason for stopping before the tests ran: the test module it could not
+    import (its `E   ...Error: ...` line), or its `ERROR: ...` usage line."""
+    match = re.search(r"^ImportError while importing test module '(.+?)'", stdout, re.M)
+    if match:
+        after = stdout[match.end() :]
+        error = re.search(r"^E\s+(\w+(?:Error|Exception)\b.*)$", after, re.M)
+        where = shown(Path(match.group(1)))
+        return f"{where}: {error.group(1)}" if error else where
+    match = re.search(r"^_+ ERROR collecting (\S+) _+$", stdout, re.M)
+    if match:
+        after = stdout[match.end() :]
+        error = re.search(r"^E\s+(\S.*)$", after, re.M)
+        where = shown(source / match.group(1))
+        return f"{where}: {error.group(1)}" if error else where
+    match = re.search(r"^ERROR: (.+)$", stdout, re.M)
+    return match.group(1) if match else ""
 
 
 def failure_line(package: str, source: Path, stderr: str, returncode: int) -> str:
@@ -154,6 +213,9 @@ def cmake_error(stderr: str, source: Path) -> tuple[str, str] | None:
     missing = re.search(r'configuration file provided by "(\w+)"', message)
     if command == "find_package" and missing:
         package = missing.group(1)
+        impossible = not_available_line(package)
+        if impossible:
+            return where, f"find_package({package}): {impossible}"
         return where, (
             f"find_package({package}): no package '{package}' here (is the name right? a "
             "package of this workspace: is it in src/? otherwise: is it installed?)"

@@ -163,6 +163,8 @@ CHECKS: dict[tuple[str, str], Check] = {
     ("docs/launch.md", "roslaunch union.launch --print"): Check(),
     ("docs/launch.md", "roslaunch ros_tutorials_parameter combine.launch --show-args"): Check(),
     ("docs/launch.md", "source .venv/bin/activate"): Check(lines=(0, 5, 6)),
+    # official-tutorials.md
+    ("docs/official-tutorials.md", "rosdep init"): Check(),
     # own-package.md
     (
         "docs/own-package.md",

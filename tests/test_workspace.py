@@ -530,3 +530,101 @@ def test_using_parameters_in_a_class_python(tmp_path):
         )
     finally:
         node.kill()
+
+
+def test_colcon_test_runs_the_template_linters_and_reports_failed_tests(tmp_path):
+    """Testing/CLI and Testing/Python: `colcon test` on a package `ros2 pkg create` made runs
+    its three template tests (copyright skipped as the template says, flake8 and pep257 run);
+    a failing test is a test failure in `colcon test-result`, not a failed build; a test
+    module that cannot be imported is one line saying the tests did not run."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace, "--build-type ament_python --license Apache-2.0 --node-name my_node my_package"
+    )
+    colcon_build(workspace)
+    tested = ok(activated("colcon test --ctest-args tests"), workspace, BUILD_TIMEOUT)
+    assert "Summary: 1 package finished" in tested and "failed" not in tested
+    assert ok(activated("colcon test-result --all"), workspace).splitlines() == [
+        "build/my_package/pytest.xml: 3 tests, 0 errors, 0 failures, 1 skipped",
+        "",
+        "Summary: 3 tests, 0 errors, 0 failures, 1 skipped",
+    ]
+    package = workspace / "src" / "my_package"
+    (package / "test" / "test_math.py").write_text("def test_math():\n    assert 2 + 2 == 5\n")
+    with (package / "my_package" / "my_node.py").open("a") as node:
+        node.write('greeting = "hello"\n')  # flake8-quotes: single quotes preferred
+    result = bash(activated("colcon test"), workspace, BUILD_TIMEOUT)
+    assert result.returncode == 0, result.stderr
+    assert "1 package had test failures: my_package" in result.stdout
+    assert "error:" not in result.stderr and "Traceback" not in result.stderr
+    shown = bash(activated("colcon test-result --all --verbose"), workspace)
+    assert shown.returncode == 1
+    assert "build/my_package/pytest.xml: 4 tests, 0 errors, 2 failures, 1 skipped" in shown.stdout
+    assert "Q000 Double quotes found but single quotes preferred" in shown.stdout
+    assert "assert (2 + 2) == 5" in shown.stdout
+    (package / "test" / "test_broken.py").write_text("import no_such_module\n")
+    [line] = failure_lines(bash(activated("colcon test"), workspace, BUILD_TIMEOUT))
+    assert line.startswith(
+        "error: my_package: the tests did not run: src/my_package/test/test_broken.py: "
+        "ModuleNotFoundError: No module named 'no_such_module' (full log: log/test_"
+    ), line
+
+
+def test_a_cpp_page_says_rclcpp_needs_a_ros_installation(tmp_path):
+    """Writing-A-Simple-Cpp-Publisher-And-Subscriber's package: rclcpp is not on PyPI, and the
+    build says so in one line that names the page listing the Python twins."""
+    workspace = new_workspace(tmp_path)
+    create(
+        workspace,
+        "--build-type ament_cmake --license Apache-2.0 cpp_pubsub --dependencies rclcpp std_msgs",
+    )
+    [line] = failure_lines(bash(activated("colcon build"), workspace, BUILD_TIMEOUT))
+    cmakelists = (workspace / "src" / "cpp_pubsub" / "CMakeLists.txt").read_text().splitlines()
+    number = cmakelists.index("find_package(rclcpp REQUIRED)") + 1
+    twins = Path(__file__).resolve().parent.parent / "docs" / "official-tutorials.md"
+    assert line.startswith(
+        f"error: cpp_pubsub: src/cpp_pubsub/CMakeLists.txt:{number}: find_package(rclcpp): "
+        "rclcpp, ROS 2's C++ client library, is not available without a ROS installation "
+        f"(it is not on PyPI): the C++ pages cannot build here; their Python twins are listed "
+        f"in {twins} (full log: "
+    ), line
+
+
+OVERLAY_NODE = """\
+def main():
+    print('Hello from the overlay: ros_tutorials_topic in ~/ros2_ws')
+"""
+
+
+def test_a_python_overlay_shadows_the_underlays_package(tmp_path):
+    """Creating-A-Workspace's overlay, in Python (docs/official-tutorials.md): a package of
+    the workspace named as one of the underlay (this environment's ros_tutorials_topic) wins
+    where the workspace is sourced, and the underlay's stays where it is not."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python --node-name talker ros_tutorials_topic")
+    package = workspace / "src" / "ros_tutorials_topic"
+    (package / "ros_tutorials_topic" / "talker.py").write_text(OVERLAY_NODE)
+    colcon_build(workspace)
+    overlay = "source install/local_setup.bash\n"
+    shown = ok(activated(overlay + "ros2 run ros_tutorials_topic talker"), workspace)
+    assert shown == "Hello from the overlay: ros_tutorials_topic in ~/ros2_ws\n"
+    prefix = ok(activated(overlay + "ros2 pkg prefix ros_tutorials_topic"), workspace)
+    assert prefix == f"{workspace / 'install' / 'ros_tutorials_topic'}\n"
+    assert ok(activated("ros2 pkg prefix ros_tutorials_topic"), workspace) == f"{sys.prefix}\n"
+
+
+def test_colcon_cd_with_this_environments_lines(tmp_path):
+    """Colcon-Tutorial's "Setup colcon_cd", with the lines docs/official-tutorials.md gives:
+    colcon_cd PKG goes to the package's folder in the workspace; colcon's tab completion
+    hook is there too."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python my_package")
+    share = Path(sys.prefix) / "share"
+    script = (
+        f"source {share}/colcon_cd/function/colcon_cd.sh\n"
+        f"export _colcon_cd_root={workspace}\n"
+        "colcon_cd my_package && pwd"
+    )
+    shown = ok(activated(script), tmp_path)
+    assert shown.splitlines()[-1] == str(workspace / "src" / "my_package")
+    assert (share / "colcon_argcomplete" / "hook" / "colcon-argcomplete.bash").is_file()
