@@ -641,3 +641,20 @@ def test_a_chunk_that_decompresses_to_another_size_is_damaged(ros_domain, tmp_pa
     path.write_bytes(whole)
     _patch_chunk_size(path, 2**40)
     assert f"a chunk declares {2**40} bytes uncompressed" in fails("rosbag", "play", str(path))
+
+
+def test_a_bag_name_too_long_for_its_file_is_refused_and_nothing_is_left(ros_domain, tmp_path):
+    """A bag's file adds `_0.mcap` to the folder's name: a name of 249 to 255 bytes makes a
+    folder that can be created and a file that cannot. One line before anything is made."""
+    name = "d" * 250
+    for command in (
+        ("ros2", "bag", "record", "-o", name, "/chatter"),
+        ("rosbag", "record", "-O", name, "/chatter"),
+    ):
+        result = run(*command, cwd=str(tmp_path))
+        assert result.returncode == 1, result.stderr
+        assert "Traceback" not in result.stderr
+        lines = result.stderr.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("error: cannot create "), lines
+        assert "(with '_0.mcap') would be 257 bytes, more than the 255" in lines[0]
+        assert list(tmp_path.iterdir()) == []
