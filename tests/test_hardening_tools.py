@@ -52,6 +52,33 @@ def test_a_number_into_a_string_field_is_refused():
     assert "data is a string" in line
 
 
+def test_text_that_is_not_unicode_is_refused_naming_the_field(context, executor):
+    """YAML's "\\ud800" is half of a UTF-16 surrogate pair, which no UTF-8 string can hold:
+    one line naming the field, from pub with a subscriber present and from a service call
+    (send_goal fills its goal with the same code; no action here has a text field)."""
+    from rclpy.node import Node
+    from std_msgs.msg import String
+    from turtlesim.srv import Spawn
+
+    node = Node("surrogate_check", context=context)
+    executor.add_node(node)
+    node.create_subscription(String, "/surrogates", lambda _message: None, 10)
+    called = []
+    node.create_service(Spawn, "/surrogate_spawn", lambda request, response: called.append(1))
+    expected = "is not valid Unicode text: '\\ud800' at position 1 is half of a UTF-16 surrogate"
+    line = fails(
+        "ros2", "topic", "pub", "--once", "/surrogates", "std_msgs/msg/String", '{data: "a\\ud800"}'
+    )
+    assert line == f"error: data {expected} pair"
+    line = fails("rostopic", "pub", "-1", "/surrogates", "std_msgs/String", '{data: "a\\ud800"}')
+    assert line == f"error: data {expected} pair"
+    line = fails(
+        "ros2", "service", "call", "/surrogate_spawn", "turtlesim/srv/Spawn", '{name: "a\\ud800"}'
+    )
+    assert line == f"error: name {expected} pair"
+    assert called == []
+
+
 def test_a_yaml_alias_bomb_on_the_command_line_is_refused():
     # Anchors inside the value: without the limit the error message alone (repr of 9**9
     # strings) would fill the memory.
