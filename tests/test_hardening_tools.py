@@ -101,6 +101,17 @@ def test_rosparam_load_dev_zero_is_refused_within_the_size_limit():
     assert "larger than 1 MiB" in line
 
 
+def test_ros2_param_set_sends_an_unquoted_date_as_its_text():
+    """As upstream's ros2 param set (rclpy's get_parameter_value): what is not a bool, a number
+    or a list of one of those is the text typed (a params file's date is refused, below)."""
+    from rcl_interfaces.msg import ParameterType
+
+    from ros2cmd.param import typed_value
+
+    value = typed_value("when", "2024-01-01")
+    assert (value.type, value.string_value) == (ParameterType.PARAMETER_STRING, "2024-01-01")
+
+
 @pytest.mark.parametrize(
     ("content", "expected"),
     [
