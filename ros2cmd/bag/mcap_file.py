@@ -4,7 +4,9 @@
 The container itself (records, chunks, indexes, summary, CRCs) is the ``mcap`` package's,
 the reference implementation of MCAP. Reading takes the summary at the end of the file (no
 scan of the messages) and falls back to scanning a file without one (a recording that was
-killed), up to its last complete record.
+killed), up to its last complete record. Chunks are decompressed here, one at a time and
+within a limit (chunk_records): the package's own reader allocates whatever size a chunk, or
+the compressed frame inside it, declares.
 """
 
 from __future__ import annotations
@@ -82,7 +84,8 @@ class _BoundedFile(io.BufferedReader):
 
 
 def _decompressed(chunk: Chunk, source: Path) -> bytes:
-    """A chunk's records, decompressed within its declared size (no more than MAX_CHUNK_BYTES)."""
+    """A chunk's records section, decompressed to no more than its declared size, itself at
+    most MAX_CHUNK_BYTES."""
     declared = chunk.uncompressed_size
     if declared > MAX_CHUNK_BYTES:
         raise ChunkTooLarge(
