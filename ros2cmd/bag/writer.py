@@ -71,14 +71,14 @@ def _check_name_fits(folder: Path) -> None:
     cannot hold (the file adds ``_0.mcap`` to the folder's name)."""
     name = bag_file_name(folder)
     parent = folder.parent
-    while not parent.is_dir() and parent != parent.parent:  # -o a/b/c: a may not exist yet
+    while not os.path.isdir(parent) and parent != parent.parent:  # -o a/b/c: a may be new
         parent = parent.parent
     try:
         most = os.pathconf(parent, "PC_NAME_MAX")
     except (OSError, ValueError):
         most = 255  # Linux's NAME_MAX
     size = len(os.fsencode(name))
-    if size > most:
+    if len(os.fsencode(folder.name)) <= most < size:  # a longer folder name: mkdir says so
         suffix = name[len(folder.name) :]
         raise BagError(
             f"cannot create {shown(folder)}: the name of its file (with '{suffix}') would be "
