@@ -281,19 +281,29 @@ class McapFile:
             key=lambda index: (index.message_start_time, index.chunk_start_offset),
         )
         waiting: list[tuple[int, int, int, Message]] = []  # (log time, chunk, place, message)
-        for index in chunks:
+        for position, index in enumerate(chunks):
             while waiting and waiting[0][0] < index.message_start_time:
                 yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
             self.stream.seek(index.chunk_start_offset + 1 + 8)
             chunk = Chunk.read(ReadDataStream(self.stream))
-            for place, record in enumerate(chunk_records(chunk, self.path)):
-                if (
-                    isinstance(record, Message)
-                    and record.channel_id in wanted
-                    and record.log_time >= start
-                ):
-                    entry = (record.log_time, index.chunk_start_offset, place, record)
-                    heapq.heappush(waiting, entry)
+            found = [
+                record
+                for record in chunk_records(chunk, self.path)
+                if isinstance(record, Message)
+                and record.channel_id in wanted
+                and record.log_time >= start
+            ]
+            found.sort(key=lambda message: message.log_time)  # stable: ties keep their order
+            later = chunks[position + 1].message_start_time if position + 1 < len(chunks) else None
+            if not waiting and (not found or later is None or later > found[-1].log_time):
+                # No other chunk can hold an earlier message (what a recorder writes).
+                for message in found:
+                    yield self._bag_message(summary.channels, message)
+                continue
+            for place, message in enumerate(found):
+                heapq.heappush(
+                    waiting, (message.log_time, index.chunk_start_offset, place, message)
+                )
         while waiting:
             yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
 
