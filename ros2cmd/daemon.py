@@ -3,9 +3,10 @@
 A list that starts its own node waits for discovery every time (graph.Graph.settle). The
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
-`service list`, `action list` and `topic|service find` over a Unix socket that only this user
-can reach. A list starts it when none runs (and answers itself that time); ``--no-daemon``
-bypasses it; it ends after IDLE_TIMEOUT without a question (ros2cli's 2 hours).
+`service list`, `action list` and `topic|service find` over a Unix socket (only this user's
+processes are answered, see below). A list starts it when none runs (and answers itself that
+time); ``--no-daemon`` bypasses it; it ends after IDLE_TIMEOUT without a question (ros2cli's
+2 hours).
 
 ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
 started or list one that is gone (ros2cli#672). This one answers only once its graph is
@@ -17,28 +18,29 @@ DDS's graph until its lease runs out, 20 s). Otherwise it says why not, and the 
 discovers for itself. So it serves only where the count works: the default
 ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST with Fast DDS.
 
-One daemon per DDS setting (domain id, discovery range, peers, RMW, profile) and per
-installation: its socket's name is made from them, under a folder of this user's
-(``$XDG_RUNTIME_DIR`` or the temporary folder). A lock file lets only one daemon bind it.
+One daemon per user, DDS setting (domain id, discovery range, peers, RMW, profile) and
+installation: its socket's name is made from them. The socket is an abstract one (Linux): no
+file that can be removed while the daemon lives on, a name that goes when the daemon's process
+does, and one that only one process can bind, so that binding it is the lock that lets only one
+daemon serve. An abstract socket has no file permissions: each side checks the other's user
+(SO_PEERCRED), so the daemon answers only its own user and a list asks only its user's daemon.
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
-import fcntl
 import hashlib
 import json
 import os
 import selectors
 import signal
 import socket
+import struct
 import subprocess
 import sys
-import tempfile
 import time
 from collections import Counter
-from pathlib import Path
 from typing import Any
 
 from ros2cmd.errors import ToolError
@@ -69,21 +71,24 @@ SETTINGS = (
 NO_DAEMON_VARIABLE = "ROS_TUTORIALS_NO_DAEMON"
 
 
-def _folder() -> Path:
-    base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
-    folder = Path(base) / f"ros_tutorials_daemon_{os.getuid()}"
-    folder.mkdir(mode=0o700, exist_ok=True)
-    if folder.stat().st_uid != os.getuid() or folder.stat().st_mode & 0o077:
-        raise OSError(f"{folder} is not this user's own")
-    return folder
-
-
-def socket_path() -> Path:
-    """The socket of the daemon for this environment's DDS settings and this installation."""
+def socket_address() -> str:
+    """The abstract socket of the daemon for this user, this environment's DDS settings and
+    this installation."""
     env = apply_dds_defaults(dict(os.environ))
     key = json.dumps([sys.prefix, *(env.get(name, "") for name in SETTINGS)])
     digest = hashlib.sha256(key.encode()).hexdigest()[:16]
-    return _folder() / f"domain{env.get('ROS_DOMAIN_ID', '0')}-{digest}.sock"
+    domain = env.get("ROS_DOMAIN_ID", "0")
+    return f"\0ros_tutorials_daemon_{os.getuid()}_domain{domain}-{digest}"
+
+
+def _peer_is_this_user(connection: socket.socket) -> bool:
+    """Whether the process at the other end of a Unix socket runs as this user."""
+    credentials = connection.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, _CREDENTIALS.size)
+    _pid, uid, _gid = _CREDENTIALS.unpack(credentials)
+    return uid == os.getuid()
+
+
+_CREDENTIALS = struct.Struct("3i")  # struct ucred: pid, uid, gid
 
 
 def use_daemon(no_daemon: bool) -> bool:
@@ -98,7 +103,9 @@ def _request(question: dict[str, Any], timeout: float) -> dict[str, Any] | None:
     try:
         with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
             connection.settimeout(timeout)
-            connection.connect(str(socket_path()))
+            connection.connect(socket_address())
+            if not _peer_is_this_user(connection):  # another user's process took the name
+                return None
             connection.sendall(json.dumps(question).encode() + b"\n")
             connection.shutdown(socket.SHUT_WR)
             data = b""
@@ -286,6 +293,8 @@ class Daemon:
                 with contextlib.suppress(BlockingIOError):
                     connection, _ = self.listener.accept()
                     with connection:
+                        if not _peer_is_this_user(connection):
+                            continue
                         if not self._answer(connection):
                             return
 
@@ -368,16 +377,11 @@ class Daemon:
 def main() -> int:
     """The daemon's process (`python -m ros2cmd.daemon`, started by spawn())."""
     apply_dds_defaults()
-    path = socket_path()
-    with open(path.with_suffix(".lock"), "w") as lock:
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as listener:
         try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            listener.bind(socket_address())
         except OSError:
-            return 0  # another daemon holds it: that one answers
-        with contextlib.suppress(FileNotFoundError):
-            path.unlink()  # left by a daemon that was killed
-        listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-        listener.bind(str(path))
+            return 0  # another daemon holds the name: that one answers
         listener.listen(16)
         listener.setblocking(False)
         # SIGINT too ends it quietly (rclpy shuts down on SIGTERM; see Graph).
@@ -387,9 +391,6 @@ def main() -> int:
             daemon = Daemon(listener)
             daemon.serve()
         finally:
-            with contextlib.suppress(FileNotFoundError):
-                path.unlink()
-            listener.close()
             if daemon is not None:
                 daemon.close()
     return 0

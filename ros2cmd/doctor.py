@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import importlib.metadata
-import ipaddress
 import os
 import platform
 import pwd
@@ -40,7 +39,7 @@ from ros2cmd.discovery import participant_of
 from ros2cmd.graph import Graph
 from ros2cmd.local_participants import EPROSIMA, domain_processes, heard_from_all, process_of
 from ros2cmd.wait import spin_until
-from ros_tutorials_common.dds import DDS_DEFAULTS, PRIVATE_DOMAIN_IDS
+from ros_tutorials_common.dds import DDS_DEFAULTS, PRIVATE_DOMAIN_IDS, peer_name_ok
 
 DISTRIBUTION = "jazzy"  # the ROS 2 of the pinned wheels (ros-jazzy-*)
 PROJECT = "ros-tutorials"
@@ -437,7 +436,7 @@ class Doctor:
             result.warning += 1
         peers = [p.strip() for p in (settings.static_peers or "").split(";") if p.strip()]
         for peer in peers:
-            if not _peer_name_ok(peer):
+            if not peer_name_ok(peer):
                 doctor_warn(f"ROS_STATIC_PEERS: {peer!r} is not an IP address or a host name")
                 result.warning += 1
         if settings.discovery_range == "OFF" and not peers:
@@ -753,15 +752,6 @@ class Doctor:
 
 
 # This environment: its packages and wheels.
-
-
-def _peer_name_ok(peer: str) -> bool:
-    """An IP address or a host name (checked by its form only: no name is looked up)."""
-    try:
-        ipaddress.ip_address(peer)
-        return True
-    except ValueError:
-        return bool(re.fullmatch(r"[A-Za-z0-9]([A-Za-z0-9.-]{0,252})", peer))
 
 
 def local_packages() -> dict[str, str]:

@@ -179,6 +179,13 @@ def _convert(
                 f"quote it to send text: '{{{path.rsplit('.', 1)[-1]}: \"{value}\"}}'"
             )
         text = value
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError as error:  # a lone surrogate: "\ud800" in YAML
+            raise ToolError(
+                f"{path} is not valid Unicode text: {text[error.start]!r} at position "
+                f"{error.start} is half of a UTF-16 surrogate pair"
+            ) from None
         maximum = getattr(slot_type, "maximum_size", None)
         if maximum is not None and len(text) > maximum:
             raise ToolError(f"{path} takes at most {maximum} characters, got {len(text)}")

@@ -11,8 +11,11 @@ rclpy.init(), which is when rcl and Fast DDS read them; the launcher passes them
 from __future__ import annotations
 
 import fcntl
+import ipaddress
 import os
 import random
+import re
+import socket
 import tempfile
 from collections.abc import Mapping, MutableMapping
 from pathlib import Path
@@ -81,10 +84,48 @@ def log_dir_problem(env: Mapping[str, str] | None = None) -> str | None:
     )
 
 
+def peer_name_ok(peer: str) -> bool:
+    """An IP address or a host name, by its form only (``999.1.1.1`` is neither: a name
+    cannot be all digits and dots)."""
+    try:
+        ipaddress.ip_address(peer)
+        return True
+    except ValueError:
+        if re.fullmatch(r"[0-9.]+", peer):
+            return False
+        return bool(re.fullmatch(r"[A-Za-z0-9]([A-Za-z0-9.-]{0,252})", peer))
+
+
+def static_peers_problem(env: Mapping[str, str] | None = None) -> str | None:
+    """What in ROS_STATIC_PEERS would make creating a node fail (rmw_fastrtps turns each peer
+    into the first IPv4 address it resolves to), as one line; None if nothing would."""
+    text = (os.environ if env is None else env).get("ROS_STATIC_PEERS", "")
+    for peer in (p.strip() for p in text.split(";")):
+        if not peer:
+            continue
+        if not peer_name_ok(peer):
+            return f"ROS_STATIC_PEERS: {peer!r} is not an IP address or a host name"
+        try:
+            if ipaddress.ip_address(peer).version == 4:
+                continue
+        except ValueError:  # a host name
+            pass
+        else:
+            return f"ROS_STATIC_PEERS: {peer!r} is an IPv6 address; Fast DDS takes IPv4 peers"
+        try:
+            socket.getaddrinfo(peer, None, socket.AF_INET)  # what Fast DDS does with it next
+        except (OSError, UnicodeError):
+            return (
+                f"ROS_STATIC_PEERS: {peer!r} does not resolve to an IPv4 address, "
+                "which Fast DDS needs for each peer"
+            )
+    return None
+
+
 def environment_problem(env: Mapping[str, str] | None = None) -> str | None:
-    """The first thing in the environment that would make rclpy.init fail (or Fast DDS print
-    its own lines), as one line; None if there is nothing."""
-    return domain_id_problem(env) or log_dir_problem(env)
+    """The first thing in the environment that would make rclpy.init or the first node fail
+    (or Fast DDS print its own lines), as one line; None if there is nothing."""
+    return domain_id_problem(env) or log_dir_problem(env) or static_peers_problem(env)
 
 
 def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMapping[str, str]:

@@ -1,5 +1,6 @@
 """The lessons' console scripts (``topic_publisher``, ``service_client 2 3``, ...): this
-project's DDS defaults, then the lesson's own ``main()``.
+project's DDS defaults (after the environment check `ros2 run` makes), then the lesson's own
+``main()``.
 
 A lesson file is plain rclpy and sets no defaults: the environment it starts in does
 (``source .venv/bin/activate``, ``ros2 run``, rosrun and the launcher apply ``dds.py``'s).
@@ -15,7 +16,7 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 
-from ros_tutorials_common.dds import apply_dds_defaults
+from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 # Console script -> the lesson module whose main() it runs.
 LESSONS = {
@@ -51,6 +52,9 @@ def __getattr__(name: str) -> Callable[[], int | None]:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
     def run_lesson() -> int | None:
+        problem = environment_problem()  # as `ros2 run` checks: rclpy.init would fail
+        if problem:
+            raise SystemExit(f"error: {problem}")
         apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
         return importlib.import_module(LESSONS[name]).main()
 

@@ -9,6 +9,7 @@ stops it at its end, and conftest stops any left at the session's end.
 from __future__ import annotations
 
 import os
+import shutil
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -89,6 +90,32 @@ def test_start_status_stop_say_what_ros2cli_says(ros_domain):
         assert ros2("daemon", "stop") == "The daemon has been stopped\n"
         assert not Path(f"/proc/{pid}").exists() or "Z" in Path(f"/proc/{pid}/stat").read_text()
         assert ros2("daemon", "status") == "The daemon is not running\n"
+    finally:
+        daemon.stop_quietly()
+
+
+def test_the_daemon_is_found_with_its_runtime_folder_removed(ros_domain, tmp_path):
+    """A daemon is found by its socket's name, not by a file: with the runtime folder gone
+    (its socket file was there), status and start still see it and stop ends its process."""
+    runtime = tmp_path / "run"
+    runtime.mkdir(mode=0o700)
+    env = {**_env(), "XDG_RUNTIME_DIR": str(runtime), "TMPDIR": str(runtime)}
+
+    def ros2_here(*args: str) -> str:
+        result = run("ros2", *args, env=env)
+        assert result.returncode == 0 and "Traceback" not in result.stderr, result.stderr
+        return result.stdout
+
+    assert ros2_here("daemon", "start") == "The daemon has been started\n"
+    try:
+        pid = daemon.running_pid()
+        assert pid is not None
+        shutil.rmtree(runtime)
+        assert ros2_here("daemon", "status") == "The daemon is running\n"
+        assert ros2_here("daemon", "start") == "The daemon is already running\n"
+        assert ros2_here("daemon", "stop") == "The daemon has been stopped\n"
+        assert not Path(f"/proc/{pid}").exists() or "Z" in Path(f"/proc/{pid}/stat").read_text()
+        assert ros2_here("daemon", "status") == "The daemon is not running\n"
     finally:
         daemon.stop_quietly()
 

@@ -1,6 +1,6 @@
 """An environment rclpy.init cannot work with: one line naming the variable, exit status 1,
-no traceback and no raw Fast DDS lines, from `ros2 run` (of a lesson, turtlesim), the tools
-and the launcher."""
+no traceback and no raw Fast DDS lines, from `ros2 run` (of a lesson, turtlesim), the tools,
+the console scripts and the launcher."""
 
 from __future__ import annotations
 
@@ -19,6 +19,9 @@ COMMANDS = {
     "roslaunch": ("roslaunch", "ros_tutorials_topic", "union.launch"),
     "ros2 launch": ("ros2", "launch", "ros_tutorials_topic", "union.launch.xml"),
     "python -m launcher": ("python", "-m", "launcher", "union.launch"),
+    # The console scripts: a lesson's (its wrapper checks as `ros2 run` does), turtlesim's.
+    "talker": ("talker",),
+    "turtlesim_node": ("turtlesim_node",),
 }
 PROBLEMS = {
     "domain id not a number": ({"ROS_DOMAIN_ID": "abc"}, "ROS_DOMAIN_ID='abc' is not a whole"),
@@ -26,6 +29,15 @@ PROBLEMS = {
     "log dir a file": (
         {"ROS_LOG_DIR": "/etc/passwd"},
         "cannot write ROS log files to '/etc/passwd' (ROS_LOG_DIR): not a directory",
+    ),
+    # rmw_fastrtps turns each peer into an IPv4 address when the first node is made.
+    "static peer not an address": (
+        {"ROS_STATIC_PEERS": "127.0.0.1;999.1.1.1"},
+        "ROS_STATIC_PEERS: '999.1.1.1' is not an IP address or a host name",
+    ),
+    "static peer IPv6": (
+        {"ROS_STATIC_PEERS": "::1"},
+        "ROS_STATIC_PEERS: '::1' is an IPv6 address; Fast DDS takes IPv4 peers",
     ),
     "ROS_HOME where nothing can be made": (
         {"ROS_HOME": "/proc/no_such_process/ros"},

@@ -52,6 +52,33 @@ def test_a_number_into_a_string_field_is_refused():
     assert "data is a string" in line
 
 
+def test_text_that_is_not_unicode_is_refused_naming_the_field(context, executor):
+    """YAML's "\\ud800" is half of a UTF-16 surrogate pair, which no UTF-8 string can hold:
+    one line naming the field, from pub with a subscriber present and from a service call
+    (send_goal fills its goal with the same code; no action here has a text field)."""
+    from rclpy.node import Node
+    from std_msgs.msg import String
+    from turtlesim.srv import Spawn
+
+    node = Node("surrogate_check", context=context)
+    executor.add_node(node)
+    node.create_subscription(String, "/surrogates", lambda _message: None, 10)
+    called = []
+    node.create_service(Spawn, "/surrogate_spawn", lambda request, response: called.append(1))
+    expected = "is not valid Unicode text: '\\ud800' at position 1 is half of a UTF-16 surrogate"
+    line = fails(
+        "ros2", "topic", "pub", "--once", "/surrogates", "std_msgs/msg/String", '{data: "a\\ud800"}'
+    )
+    assert line == f"error: data {expected} pair"
+    line = fails("rostopic", "pub", "-1", "/surrogates", "std_msgs/String", '{data: "a\\ud800"}')
+    assert line == f"error: data {expected} pair"
+    line = fails(
+        "ros2", "service", "call", "/surrogate_spawn", "turtlesim/srv/Spawn", '{name: "a\\ud800"}'
+    )
+    assert line == f"error: name {expected} pair"
+    assert called == []
+
+
 def test_a_yaml_alias_bomb_on_the_command_line_is_refused():
     # Anchors inside the value: without the limit the error message alone (repr of 9**9
     # strings) would fill the memory.
@@ -72,6 +99,17 @@ def test_rosparam_load_dev_zero_is_refused_within_the_size_limit():
     assert line == "error: /dev/zero is larger than 1 MiB; refusing to read it"
     line = fails("ros2", "param", "load", "/service_server", "/dev/zero")
     assert "larger than 1 MiB" in line
+
+
+def test_ros2_param_set_sends_an_unquoted_date_as_its_text():
+    """As upstream's ros2 param set (rclpy's get_parameter_value): what is not a bool, a number
+    or a list of one of those is the text typed (a params file's date is refused, below)."""
+    from rcl_interfaces.msg import ParameterType
+
+    from ros2cmd.param import typed_value
+
+    value = typed_value("when", "2024-01-01")
+    assert (value.type, value.string_value) == (ParameterType.PARAMETER_STRING, "2024-01-01")
 
 
 @pytest.mark.parametrize(

@@ -496,7 +496,7 @@ def test_a_batch_of_messages_is_written_as_one_at_a_time(tmp_path) -> None:
 
 def test_overlapping_chunks_are_read_in_log_time_order_from_the_start(tmp_path) -> None:
     """A file whose chunks overlap in time (not what this recorder writes; another writer's)
-    is read through the mcap reader's merge, from the start offset on, with no warning."""
+    is read merged in log-time order, from the start offset on, with no warning."""
     from mcap.writer import Writer
 
     from ros2cmd.bag.mcap_file import McapFile
@@ -519,3 +519,142 @@ def test_overlapping_chunks_are_read_in_log_time_order_from_the_start(tmp_path) 
     finally:
         bag.close()
     assert times == [20, 30, 40]
+
+
+# Crafted files: a chunk's declared size is checked before it is decompressed
+
+MCAP_MAGIC = b"\x89MCAP0\r\n"
+
+
+def _zstd_zeros(mib: int) -> bytes:
+    """`mib` MiB of zeros as one zstd frame that does not declare its size (about 32 bytes per
+    MiB: what makes a decompression bomb of a small file)."""
+    import zstandard
+
+    compressor = zstandard.ZstdCompressor(level=1).compressobj()
+    zeros = bytes(1 << 20)
+    return b"".join([compressor.compress(zeros) for _ in range(mib)] + [compressor.flush()])
+
+
+def _one_chunk_mcap(path: Path, compression: str, data: bytes, declared: int) -> None:
+    """An MCAP file without a summary (as a killed recording leaves): a /chatter channel and
+    one chunk holding `data`, which says it decompresses to `declared` bytes."""
+    from mcap.data_stream import RecordBuilder
+    from mcap.records import Channel, Chunk, DataEnd, Footer, Header, Schema
+
+    builder = RecordBuilder()
+    Header(profile="ros2", library="test").write(builder)
+    Schema(id=1, name="std_msgs/msg/String", encoding="ros2msg", data=b"string data").write(builder)
+    Channel(id=1, schema_id=1, topic="/chatter", message_encoding="cdr", metadata={}).write(builder)
+    Chunk(
+        compression=compression,
+        data=data,
+        message_start_time=0,
+        message_end_time=1,
+        uncompressed_crc=0,
+        uncompressed_size=declared,
+    ).write(builder)
+    DataEnd(data_section_crc=0).write(builder)
+    Footer(summary_start=0, summary_offset_start=0, summary_crc=0).write(builder)
+    path.write_bytes(MCAP_MAGIC + builder.end() + MCAP_MAGIC)
+
+
+def _under_memory_cap(*args: str, cap: int = 1 << 30) -> subprocess.CompletedProcess:
+    """A console script run with at most `cap` bytes of address space (started cold: the
+    limit must hold from its start)."""
+    import resource
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+
+    return subprocess.run(
+        [str(BIN / args[0]), *args[1:]],
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+        preexec_fn=limit,
+    )
+
+
+def test_a_decompression_bomb_is_refused_under_a_memory_cap(ros_domain, tmp_path, small_bag):
+    """2 GiB of zeros in a 64 KB chunk: its declared size is refused before anything is
+    decompressed, by info, play and reindex alike, within 1 GiB of address space (mcap's own
+    reader allocated the declared size: a MemoryError under the cap, gigabytes without)."""
+    from ros2cmd.bag.mcap_file import MAX_CHUNK_BYTES
+
+    declared = 2048 << 20
+    assert declared > MAX_CHUNK_BYTES
+    folder = tmp_path / "bomb"
+    shutil.copytree(small_bag, folder)
+    mcap_file = folder / "small_0.mcap"
+    _one_chunk_mcap(mcap_file, "zstd", _zstd_zeros(2048), declared)
+    assert mcap_file.stat().st_size < 100_000
+    expected = (
+        f"error: {mcap_file}: a chunk declares {declared} bytes uncompressed, more than the "
+        f"{MAX_CHUNK_BYTES >> 20} MiB a chunk may have here; refusing it\n"
+    )
+    for command in (
+        ("ros2", "bag", "info", str(folder)),
+        ("ros2", "bag", "play", str(folder)),
+        ("ros2", "bag", "reindex", str(folder)),
+        ("rosbag", "info", str(mcap_file)),
+    ):
+        result = _under_memory_cap(*command)
+        assert (result.returncode, result.stderr) == (1, expected), command
+    assert mcap_file.stat().st_size < 100_000  # reindex left it as it was
+
+
+def _patch_chunk_size(path: Path, size: int) -> None:
+    """Make the first chunk of a complete file declare `size` bytes uncompressed."""
+    import struct
+
+    with open(path, "rb") as stream:
+        summary = make_reader(stream).get_summary()
+    assert summary is not None
+    offset = summary.chunk_indexes[0].chunk_start_offset + 1 + 8 + 16  # opcode, length, times
+    data = bytearray(path.read_bytes())
+    data[offset : offset + 8] = struct.pack("<Q", size)
+    path.write_bytes(bytes(data))
+
+
+def test_a_chunk_that_decompresses_to_another_size_is_damaged(ros_domain, tmp_path):
+    """A chunk whose data decompresses to more (or less) than it declares is read no further
+    than the declared size: one line naming the file; and one declaring too much is refused
+    when played from a complete file too."""
+    from mcap.writer import CompressionType, Writer
+
+    path = tmp_path / "lz4.mcap"
+    with open(path, "wb") as stream:
+        writer = Writer(stream, compression=CompressionType.LZ4)
+        writer.start(profile="ros2", library="test")
+        schema = writer.register_schema("std_msgs/msg/String", "ros2msg", b"string data")
+        channel = writer.register_channel("/chatter", "cdr", schema)
+        writer.add_message(channel, 1, serialize_message(String(data="x" * 100_000)), 1)
+        writer.finish()
+    whole = path.read_bytes()
+    for declared, what in ((100, "more"), (10**6, "bytes")):
+        path.write_bytes(whole)
+        _patch_chunk_size(path, declared)
+        error = fails("rosbag", "play", str(path))
+        assert error.startswith(f"error: {path} is damaged: a chunk decompresses to ")
+        assert f"{what}, not the {declared} bytes it declares" in error
+    path.write_bytes(whole)
+    _patch_chunk_size(path, 2**40)
+    assert f"a chunk declares {2**40} bytes uncompressed" in fails("rosbag", "play", str(path))
+
+
+def test_a_bag_name_too_long_for_its_file_is_refused_and_nothing_is_left(ros_domain, tmp_path):
+    """A bag's file adds `_0.mcap` to the folder's name: a name of 249 to 255 bytes makes a
+    folder that can be created and a file that cannot. One line before anything is made."""
+    name = "d" * 250
+    for command in (
+        ("ros2", "bag", "record", "-o", name, "/chatter"),
+        ("rosbag", "record", "-O", name, "/chatter"),
+    ):
+        result = run(*command, cwd=str(tmp_path))
+        assert result.returncode == 1, result.stderr
+        assert "Traceback" not in result.stderr
+        lines = result.stderr.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("error: cannot create "), lines
+        assert "(with '_0.mcap') would be 257 bytes, more than the 255" in lines[0]
+        assert list(tmp_path.iterdir()) == []

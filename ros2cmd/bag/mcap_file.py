@@ -4,19 +4,25 @@
 The container itself (records, chunks, indexes, summary, CRCs) is the ``mcap`` package's,
 the reference implementation of MCAP. Reading takes the summary at the end of the file (no
 scan of the messages) and falls back to scanning a file without one (a recording that was
-killed), up to its last complete record.
+killed), up to its last complete record. Chunks are decompressed here, one at a time and
+within a limit (chunk_records): the package's own reader allocates whatever size a chunk, or
+the compressed frame inside it, declares.
 """
 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
+import heapq
 import io
-import itertools
+import os
 import struct
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
+import lz4.frame
+import zstandard
 from mcap.data_stream import ReadDataStream
 from mcap.exceptions import EndOfFile, McapError
 from mcap.opcode import Opcode
@@ -25,6 +31,7 @@ from mcap.records import (
     Channel,
     Chunk,
     Footer,
+    McapRecord,
     Message,
     Metadata,
     MetadataIndex,
@@ -34,11 +41,13 @@ from mcap.records import (
 )
 from mcap.stream_reader import MAGIC_SIZE, StreamReader, breakup_chunk
 
-from ros2cmd.bag.errors import BagError, short
+from ros2cmd.bag.errors import BagError, short, shown
 
 PROFILE = "ros2"
 LIBRARY = "ros-tutorials ros2 bag (python mcap)"
 CHUNK_SIZE = 768 * 1024  # the C++ mcap writer's default, which rosbag2 keeps
+# A chunk is decompressed whole; a recorder's chunk is CHUNK_SIZE, or one larger message.
+MAX_CHUNK_BYTES = 512 * 1024 * 1024
 
 
 @dataclass
@@ -52,6 +61,60 @@ class BagMessage:
 
 
 READ_ERRORS = (McapError, struct.error, ValueError, EOFError, OSError, KeyError)
+
+
+class ChunkTooLarge(BagError):
+    """A chunk that would decompress to more than MAX_CHUNK_BYTES: refused, not skipped."""
+
+
+class _BoundedFile(io.BufferedReader):
+    """The file, whose reads never ask for more than is left in it: a length field of a
+    damaged or crafted file (up to 2**64) allocates nothing larger than the file."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(io.FileIO(path, "rb"))
+        self.size = os.fstat(self.fileno()).st_size
+
+    def read(self, size: int | None = -1, /) -> bytes:
+        if size is not None and size > 0:
+            size = min(size, max(self.size - self.tell(), 0))
+            if size == 0:
+                return b""
+        return super().read(size)
+
+
+def _decompressed(chunk: Chunk, source: Path) -> bytes:
+    """A chunk's records section, decompressed to no more than its declared size, itself at
+    most MAX_CHUNK_BYTES."""
+    declared = chunk.uncompressed_size
+    if declared > MAX_CHUNK_BYTES:
+        raise ChunkTooLarge(
+            f"{shown(source)}: a chunk declares {declared} bytes uncompressed, more than the "
+            f"{MAX_CHUNK_BYTES // (1024 * 1024)} MiB a chunk may have here; refusing it"
+        )
+    if chunk.compression == "":
+        data = chunk.data
+    elif chunk.compression == "zstd":
+        # Not zstandard.decompress: it allocates the size the frame's header declares.
+        with zstandard.ZstdDecompressor().stream_reader(chunk.data) as stream:
+            data = stream.read(declared + 1)  # up to that many bytes, or to the frame's end
+    elif chunk.compression == "lz4":
+        data = lz4.frame.LZ4FrameDecompressor().decompress(chunk.data, max_length=declared + 1)
+    else:
+        raise McapError(f"unsupported chunk compression '{chunk.compression}'")
+    if len(data) != declared:
+        what = "more" if len(data) > declared else f"{len(data)} bytes"
+        raise McapError(f"a chunk decompresses to {what}, not the {declared} bytes it declares")
+    return data
+
+
+def chunk_records(chunk: Chunk, source: Path) -> list[McapRecord]:
+    """The records of a chunk, decompressed within bounds (mcap's own breakup_chunk would
+    allocate whatever size the chunk or its compressed frame declares)."""
+    plain = dataclasses.replace(chunk, compression="", data=_decompressed(chunk, source))
+    return breakup_chunk(plain, validate_crc=True)
+
+
 _SUMMARY_GROUPS = (Opcode.SCHEMA, Opcode.CHANNEL, Opcode.STATISTICS, Opcode.METADATA_INDEX)
 
 
@@ -60,8 +123,10 @@ class McapFile:
 
     def __init__(self, path: Path) -> None:
         self.path = path
+        if path.exists() and not path.is_file():  # a named pipe would block open() for good
+            raise BagError(f"{shown(path)} is not a file")
         try:
-            self.stream = open(path, "rb")  # noqa: SIM115 (closed by close())
+            self.stream = _BoundedFile(path)
         except OSError as error:
             raise BagError(f"cannot open {path}: {error.strerror}") from None
         self.schemas: dict[int, Schema] = {}
@@ -89,8 +154,12 @@ class McapFile:
             self.chunk_count = statistics.chunk_count
         else:
             self.complete = False
-            for _ in self.scan():  # counts, times, schemas and channels of the complete part
-                pass
+            try:
+                for _ in self.scan():  # counts, times, schemas and channels of the complete part
+                    pass
+            except BagError:
+                self.stream.close()
+                raise
 
     def _read_summary(self) -> Statistics | None:
         """Schemas, channels, statistics and metadata offsets, and nothing else.
@@ -151,9 +220,8 @@ class McapFile:
         self.stream.seek(0)
         counts: dict[int, int] = {}
         start = end = count = 0
-        records = StreamReader(self.stream, validate_crcs=True).records
         with contextlib.suppress(*READ_ERRORS):
-            for record in records:
+            for record in self._records():
                 if isinstance(record, Schema):
                     self.schemas[record.id] = record
                 elif isinstance(record, Channel):
@@ -166,6 +234,14 @@ class McapFile:
                     yield self.channels[record.channel_id], record
         if not self.complete:
             self.counts, self.start, self.end, self.message_count = counts, start, end, count
+
+    def _records(self) -> Iterator[McapRecord]:
+        """The file's records in order, each chunk's broken up within bounds."""
+        for record in StreamReader(self.stream, emit_chunks=True, validate_crcs=True).records:
+            if isinstance(record, Chunk):
+                yield from chunk_records(record, self.path)
+            else:
+                yield record
 
     def messages(self, topics: set[str] | None, start: int = 0) -> Iterator[BagMessage]:
         """The messages from `start` (ns) on, in log-time order (a killed recording's: in
@@ -183,6 +259,9 @@ class McapFile:
             raise BagError(f"{self.path} is damaged: {short(error)}") from None
 
     def _indexed_messages(self, topics: set[str] | None, start: int) -> Iterator[BagMessage]:
+        """Chunk by chunk in order of their start times; a message is given once no chunk
+        still unread can hold an earlier one (chunks one after the other in time, as a
+        recorder writes them, are each read only when the previous one is given)."""
         summary = self.reader.get_summary()
         assert summary is not None
         wanted = {
@@ -190,39 +269,48 @@ class McapFile:
             for channel_id, channel in summary.channels.items()
             if topics is None or channel.topic in topics
         }
-        chunks = sorted(summary.chunk_indexes, key=lambda index: index.chunk_start_offset)
-        in_order = all(
-            b.message_start_time >= a.message_end_time for a, b in itertools.pairwise(chunks)
-        )
-        if not in_order:  # overlapping chunks: the mcap reader merges them (slower)
-            for _schema, channel, message in self.reader.iter_messages(
-                topics=sorted(topics) if topics is not None else None,
-                log_time_order=True,
-                starting_at=start,  # mcap >= 1.6: start_time is its deprecated alias
-            ):
-                yield BagMessage(
-                    channel.topic, message.data, message.log_time, message.publish_time
+        chunks = sorted(
+            (
+                index
+                for index in summary.chunk_indexes
+                if index.message_end_time >= start  # --start-offset: not even read
+                and not (
+                    wanted.isdisjoint(index.message_index_offsets) and index.message_index_offsets
                 )
-            return
-        # Chunks one after the other in time (what a recorder writes): sort within each.
-        for index in chunks:
-            if index.message_end_time < start:  # --start-offset: not even read
-                continue
-            if wanted.isdisjoint(index.message_index_offsets) and index.message_index_offsets:
-                continue
+            ),
+            key=lambda index: (index.message_start_time, index.chunk_start_offset),
+        )
+        waiting: list[tuple[int, int, int, Message]] = []  # (log time, chunk, place, message)
+        for position, index in enumerate(chunks):
+            while waiting and waiting[0][0] < index.message_start_time:
+                yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
             self.stream.seek(index.chunk_start_offset + 1 + 8)
             chunk = Chunk.read(ReadDataStream(self.stream))
             found = [
                 record
-                for record in breakup_chunk(chunk, validate_crc=True)
+                for record in chunk_records(chunk, self.path)
                 if isinstance(record, Message)
                 and record.channel_id in wanted
                 and record.log_time >= start
             ]
-            found.sort(key=lambda message: message.log_time)
-            for message in found:
-                topic = summary.channels[message.channel_id].topic
-                yield BagMessage(topic, message.data, message.log_time, message.publish_time)
+            found.sort(key=lambda message: message.log_time)  # stable: ties keep their order
+            later = chunks[position + 1].message_start_time if position + 1 < len(chunks) else None
+            if not waiting and (not found or later is None or later > found[-1].log_time):
+                # No other chunk can hold an earlier message (what a recorder writes).
+                for message in found:
+                    yield self._bag_message(summary.channels, message)
+                continue
+            for place, message in enumerate(found):
+                heapq.heappush(
+                    waiting, (message.log_time, index.chunk_start_offset, place, message)
+                )
+        while waiting:
+            yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
+
+    @staticmethod
+    def _bag_message(channels: dict[int, Channel], message: Message) -> BagMessage:
+        topic = channels[message.channel_id].topic
+        return BagMessage(topic, message.data, message.log_time, message.publish_time)
 
     def close(self) -> None:
         self.stream.close()

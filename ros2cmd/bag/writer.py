@@ -66,6 +66,26 @@ def bag_file_name(folder: Path, index: int = 0) -> str:
     return f"{folder.name}_{index}.mcap"
 
 
+def _check_name_fits(folder: Path) -> None:
+    """Refuse, before anything is created, a folder whose .mcap file's name the file system
+    cannot hold (the file adds ``_0.mcap`` to the folder's name)."""
+    name = bag_file_name(folder)
+    parent = folder.parent
+    while not os.path.isdir(parent) and parent != parent.parent:  # -o a/b/c: a may be new
+        parent = parent.parent
+    try:
+        most = os.pathconf(parent, "PC_NAME_MAX")
+    except (OSError, ValueError):
+        most = 255  # Linux's NAME_MAX
+    size = len(os.fsencode(name))
+    if len(os.fsencode(folder.name)) <= most < size:  # a longer folder name: mkdir says so
+        suffix = name[len(folder.name) :]
+        raise BagError(
+            f"cannot create {shown(folder)}: the name of its file (with '{suffix}') would be "
+            f"{size} bytes, more than the {most} a file name can have here; choose a shorter name"
+        )
+
+
 def default_bag_name() -> str:
     """rosbag2's default: rosbag2_YYYY_MM_DD-HH_MM_SS (local time)."""
     return datetime.datetime.now().strftime("rosbag2_%Y_%m_%d-%H_%M_%S")
@@ -89,6 +109,7 @@ class BagWriter:
     ) -> None:
         self.folder = Path(folder)
         self.custom_data = custom_data
+        _check_name_fits(self.folder)
         try:
             self.folder.mkdir(parents=True)
         except FileExistsError:
