@@ -14,7 +14,6 @@ import sys
 import time
 from collections import deque
 from collections.abc import Callable
-from itertools import pairwise
 from typing import Any
 
 import yaml
@@ -310,58 +309,48 @@ def _publish(
         next_time += 1.0 / rate
 
 
-class _RateMeter:
-    """Arrival times in a sliding window, and the statistics `hz` prints."""
+class _SizeMeter:
+    """Arrival times and sizes in a sliding window: what `rostopic bw` prints."""
 
     def __init__(self, window: int) -> None:
-        self.times: deque[float] = deque(maxlen=window + 1)
+        self.times: deque[float] = deque(maxlen=window)
         self.sizes: deque[int] = deque(maxlen=window)
 
     def add(self, raw: bytes) -> None:
         self.times.append(time.monotonic())
         self.sizes.append(len(raw))
 
-    def periods(self) -> list[float]:
-
-        return [b - a for a, b in pairwise(self.times)]
-
 
 def hz(graph: Graph, topic: str, window: int = 10000, bandwidth: bool = False) -> None:
-    """Print the publishing rate (or bandwidth) of a topic once a second until Ctrl-C."""
+    """`rostopic hz` (or `bw`): the publishing rate (or bandwidth) of a topic, each second,
+    until Ctrl-C."""
     with until_stopped():
-        _hz(graph, absolute_name(topic), window, bandwidth)
+        topic = absolute_name(topic)
+        msg_type = _message_type(graph, topic, None)
+        meter: _HzMeter | _SizeMeter = _SizeMeter(window) if bandwidth else _HzMeter(window - 1)
+        # raw=True: count serialized messages without the cost of deserializing them.
+        subscription = AdaptiveSubscription(graph, msg_type, topic, meter.add, raw=True)
+        print(f"subscribed to [{topic}]", flush=True)
+        next_report = time.monotonic() + 1.0
+        while True:
+            graph.spin_once(min(0.1, max(0.0, next_report - time.monotonic())))
+            subscription.update()
+            if time.monotonic() < next_report:
+                continue
+            next_report = time.monotonic() + 1.0  # rostopic sleeps a second between reports
+            report = meter.report_ros1() if isinstance(meter, _HzMeter) else _size_report(meter)
+            if report:
+                print(report, flush=True)
 
 
-def _hz(graph: Graph, topic: str, window: int, bandwidth: bool) -> None:
-    msg_type = _message_type(graph, topic, None)
-    meter = _RateMeter(window)
-    # raw=True: count serialized messages without the cost of deserializing them.
-    subscription = AdaptiveSubscription(graph, msg_type, topic, meter.add, raw=True)
-    print(f"subscribed to [{topic}]", flush=True)
-    last_report = time.monotonic()
-    while True:
-        graph.spin_once(0.1)
-        subscription.update()
-        if time.monotonic() - last_report < 1.0:
-            continue
-        last_report = time.monotonic()
-        periods = meter.periods()
-        if not periods:
-            print("no new messages", flush=True)
-            continue
-        mean = statistics.fmean(periods)
-        if bandwidth:
-            rate = sum(meter.sizes) / (meter.times[-1] - meter.times[0] or 1.0)
-            print(f"{rate:.2f} B/s from {len(meter.sizes)} messages", flush=True)
-            print(f"\tMessage size mean: {statistics.fmean(meter.sizes):.0f} B", flush=True)
-            continue
-        print(f"average rate: {1.0 / mean:.3f}", flush=True)
-        std = statistics.pstdev(periods)
-        print(
-            f"\tmin: {min(periods):.3f}s max: {max(periods):.3f}s "
-            f"std dev: {std:.5f}s window: {len(periods) + 1}",
-            flush=True,
-        )
+def _size_report(meter: _SizeMeter) -> str | None:
+    if len(meter.times) < 2:
+        return None
+    rate = sum(meter.sizes) / (meter.times[-1] - meter.times[0] or 1.0)
+    return (
+        f"{rate:.2f} B/s from {len(meter.sizes)} messages\n"
+        f"\tMessage size mean: {statistics.fmean(meter.sizes):.0f} B"
+    )
 
 
 # `ros2 topic`: ros2topic's sub-verbs, options and output (ROS 2 Jazzy).
@@ -760,6 +749,8 @@ class _HzMeter:
         self.last = now
 
     def report(self) -> str | None:
+        """ros2topic hz's rule: once a second of new messages has arrived since the last
+        report, the statistics; otherwise nothing (after the publisher stops, nothing new)."""
         if not self.intervals:
             return None
         if self.last_printed == 0:
@@ -768,13 +759,27 @@ class _HzMeter:
         if self.last < self.last_printed + 1_000_000_000:
             return None
         self.last_printed = self.last
+        return self._statistics(len(self.intervals))
+
+    def report_ros1(self) -> str | None:
+        """ROS 1 rostopic hz's rule, asked once a second: nothing before the second message,
+        then the statistics, or `no new messages` when none came since the last report."""
+        if not self.intervals:
+            return None
+        if self.last == self.last_printed:
+            return "no new messages"
+        self.last_printed = self.last
+        return self._statistics(len(self.intervals) + 1)  # rostopic counts the messages
+
+    def _statistics(self, window: int) -> str:
         n = len(self.intervals)
         mean = sum(self.intervals) / n
         rate = 1.0 / mean if mean > 0 else 0.0
         std_dev = math.sqrt(sum((x - mean) ** 2 for x in self.intervals) / n)
         return (
             f"average rate: {rate * 1e9:.3f}\n\tmin: {min(self.intervals) * 1e-9:.3f}s "
-            f"max: {max(self.intervals) * 1e-9:.3f}s std dev: {std_dev * 1e-9:.5f}s window: {n}"
+            f"max: {max(self.intervals) * 1e-9:.3f}s std dev: {std_dev * 1e-9:.5f}s "
+            f"window: {window}"
         )
 
 
