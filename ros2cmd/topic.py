@@ -267,15 +267,39 @@ def _why_no_subscriber(graph: Graph, topic: str, msg_type: type) -> str:
     return f"no subscriber on {topic}; publishing anyway"
 
 
+# A volatile subscription gets the latched message sent again once it has lasted this long
+# (s): the tools' own subscriptions start volatile and become transient-local within
+# ros2cmd/qos.py's CHECK_PERIOD once they see the publisher, and those need no second copy.
+VOLATILE_SETTLE = 0.6
+LATCH_MATCH_WAIT = 1.0  # s: then how long its match is waited for
+
+
 def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
-    served = 0
+    """ROS 1 latching: every subscriber gets the message once, however late it joins. A
+    transient-local subscription gets it from the publisher's history; a volatile one would
+    miss it, so it is sent again for a volatile one that has joined and matched. (Every other
+    subscriber gets that copy too: sending it on every join made one latched message look
+    like a stream to `rostopic hz`.)"""
+    _publish_one(graph, publisher, msg)
+    first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
+    served: set[bytes] = set()  # those it was sent again for
     while True:
-        # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
-        # subscription would miss one sent before it matched, so send it again on each join.
-        subscribers = publisher.get_subscription_count()
-        if subscribers > served:
-            _publish_one(graph, publisher, msg)
-        served = subscribers
+        now = time.monotonic()
+        subscriptions = graph.node.get_subscriptions_info_by_topic(publisher.topic_name)
+        volatile = {
+            bytes(s.endpoint_gid)
+            for s in subscriptions
+            if s.qos_profile.durability == DurabilityPolicy.VOLATILE
+        }
+        first_seen = {gid: first_seen.get(gid, now) for gid in volatile}
+        served &= volatile  # forget those that left
+        due = {gid for gid, seen in first_seen.items() if now - seen >= VOLATILE_SETTLE}
+        if due - served:
+            matched = publisher.get_subscription_count() >= len(subscriptions)
+            oldest = min(first_seen[gid] for gid in due - served)
+            if matched or now - oldest > VOLATILE_SETTLE + LATCH_MATCH_WAIT:
+                _publish_one(graph, publisher, msg)
+                served |= due
         graph.spin_once(0.1)
 
 
