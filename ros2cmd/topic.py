@@ -277,9 +277,8 @@ LATCH_MATCH_WAIT = 1.0  # s: then how long its match is waited for
 def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
     """ROS 1 latching: every subscriber gets the message once, however late it joins. A
     transient-local subscription gets it from the publisher's history; a volatile one would
-    miss it, so it is sent again for a volatile one that has joined and matched. (Every other
-    subscriber gets that copy too: sending it on every join made one latched message look
-    like a stream to `rostopic hz`.)"""
+    miss it, so it is sent again for a volatile one that has joined and matched; only then,
+    as every other subscriber gets that copy too (`rostopic hz` would count it)."""
     _publish_one(graph, publisher, msg)
     first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
     served: set[bytes] = set()  # those it was sent again for
