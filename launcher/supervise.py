@@ -492,7 +492,7 @@ class Supervisor:
         file. Any other traceback is shown whole."""
         label = child.name
         if any(line.startswith("KeyboardInterrupt") for line in held):
-            self.show(f"[{label}] stopped (its KeyboardInterrupt traceback is in the log)", screen)
+            self.show(f"[{label}] stopped (its traceback is in the log)", screen)
         else:
             for line in held:
                 self.show(f"[{label}] {line}", screen)
