@@ -13,7 +13,7 @@ INTERFACES := $(VENV)/.interfaces
 PACKAGES := $(VENV)/.packages
 # A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
 PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config \
-	ament_copyright/package.xml)
+	ament_copyright/package.xml rosbag2_py/package.xml)
 HOLD_REMOVED := $(VENV)/.ctrl_c_hold_removed
 ENVIRONMENT := $(VENV)/.ros_environment
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \
@@ -55,8 +55,10 @@ $(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.p
 # "Your own message" (README): a new or changed file in interfaces/*/ rebuilds what changed.
 interfaces: $(INTERFACES)
 
+# Ctrl-C is how the demo ends (roslaunch's status 130): not an error for make to report. The
+# shell traps SIGINT only so that it waits for that status; roslaunch gets the default handler.
 run: setup
-	$(VENV)/bin/roslaunch union.launch
+	trap : INT; $(VENV)/bin/roslaunch union.launch || test $$? -eq 130
 
 lint: setup
 	$(VENV)/bin/ruff check .

@@ -486,13 +486,14 @@ class Supervisor:
         self.show(f"[{child.name}] {line}", screen)
 
     def _flush_held(self, child: Child, screen: IO[str], held: list[str]) -> None:
-        """A child that gets the launcher's SIGINT while Python is still starting or importing
-        (Ctrl-C in the first moments of a launch) has no handler for it yet, so Python prints a
-        KeyboardInterrupt traceback. That is the expected end of a stop, not an error: one line
-        on the screen, the traceback in the log file. Any other traceback is shown whole."""
+        """A child that gets the launcher's SIGINT without a handler for it (still starting or
+        importing, or a running node whose `main` does not catch KeyboardInterrupt, as the
+        official Jazzy tutorials' nodes) prints a KeyboardInterrupt traceback. That is the
+        expected end of a stop, not an error: one line on the screen, the traceback in the log
+        file. Any other traceback is shown whole."""
         label = child.name
         if any(line.startswith("KeyboardInterrupt") for line in held):
-            self.show(f"[{label}] stopped while starting (its traceback is in the log)", screen)
+            self.show(f"[{label}] stopped (its traceback is in the log)", screen)
         else:
             for line in held:
                 self.show(f"[{label}] {line}", screen)

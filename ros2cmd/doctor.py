@@ -36,7 +36,7 @@ from pathlib import Path
 
 from ros2cmd import netcheck
 from ros2cmd.discovery import participant_of
-from ros2cmd.graph import Graph
+from ros2cmd.graph import Graph, is_hidden
 from ros2cmd.local_participants import EPROSIMA, domain_processes, heard_from_all, process_of
 from ros2cmd.wait import spin_until
 from ros_tutorials_common.dds import DDS_DEFAULTS, PRIVATE_DOMAIN_IDS, peer_name_ok
@@ -282,6 +282,8 @@ class Doctor:
             nodes.remove(f"/{own}")
         topics = {}
         for name, types in node.get_topic_names_and_types():
+            if is_hidden(name):  # ros2doctor reads ros2topic's names without hidden ones
+                continue
             publishers = [e for e in node.get_publishers_info_by_topic(name) if e.node_name != own]
             subscribers = [
                 e for e in node.get_subscriptions_info_by_topic(name) if e.node_name != own
@@ -416,12 +418,6 @@ class Doctor:
         if problem:
             doctor_error(f"{problem}; the running system was not checked")
             result.error += 1
-        elif self.domain_id > PORTABLE_DOMAIN_IDS:
-            doctor_warn(
-                f"ROS_DOMAIN_ID={self.domain_id} is above {PORTABLE_DOMAIN_IDS}: its ports may "
-                "meet the ports the operating system hands out; use 0 to 101"
-            )
-            result.warning += 1
         if settings.range_text and settings.range_text not in RANGES:
             doctor_warn(
                 f"ROS_AUTOMATIC_DISCOVERY_RANGE={settings.range_text} is not one of "
@@ -673,7 +669,7 @@ class Doctor:
     def participant_report(self) -> Report:
         report = Report("DOMAIN PARTICIPANTS")
         settings = self.settings
-        report.add("domain id", self.domain_id if self.domain_id is not None else "invalid")
+        report.add("domain id", self._domain_id_text())
         report.add("discovery range", settings.describe_range())
         report.add("static peers", settings.static_peers or "none")
         if settings.localhost_only is not None:
@@ -688,6 +684,16 @@ class Doctor:
         free = self.free_domain
         report.add("free domain id", free if free is not None else "none found")
         return report
+
+    def _domain_id_text(self) -> str:
+        if self.domain_id is None:
+            return "invalid"
+        if self.domain_id > PORTABLE_DOMAIN_IDS:  # allowed, so not a check's warning
+            return (
+                f"{self.domain_id} (above {PORTABLE_DOMAIN_IDS}: its ports may meet the ports "
+                f"the operating system hands out; 0 to {PORTABLE_DOMAIN_IDS} are safe)"
+            )
+        return str(self.domain_id)
 
     def platform_report(self) -> Report:
         report = Report("PLATFORM INFORMATION")

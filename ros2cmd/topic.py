@@ -14,7 +14,6 @@ import sys
 import time
 from collections import deque
 from collections.abc import Callable
-from itertools import pairwise
 from typing import Any
 
 import yaml
@@ -268,15 +267,38 @@ def _why_no_subscriber(graph: Graph, topic: str, msg_type: type) -> str:
     return f"no subscriber on {topic}; publishing anyway"
 
 
+# A volatile subscription gets the latched message sent again once it has lasted this long
+# (s): the tools' own subscriptions start volatile and become transient-local within
+# ros2cmd/qos.py's CHECK_PERIOD once they see the publisher, and those need no second copy.
+VOLATILE_SETTLE = 0.6
+LATCH_MATCH_WAIT = 1.0  # s: then how long its match is waited for
+
+
 def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
-    served = 0
+    """ROS 1 latching: every subscriber gets the message once, however late it joins. A
+    transient-local subscription gets it from the publisher's history; a volatile one would
+    miss it, so it is sent again for a volatile one that has joined and matched; only then,
+    as every other subscriber gets that copy too (`rostopic hz` would count it)."""
+    _publish_one(graph, publisher, msg)
+    first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
+    served: set[bytes] = set()  # those it was sent again for
     while True:
-        # ROS 1 latching: every subscriber that joins gets the message. A ROS 2 volatile
-        # subscription would miss one sent before it matched, so send it again on each join.
-        subscribers = publisher.get_subscription_count()
-        if subscribers > served:
-            _publish_one(graph, publisher, msg)
-        served = subscribers
+        now = time.monotonic()
+        subscriptions = graph.node.get_subscriptions_info_by_topic(publisher.topic_name)
+        volatile = {
+            bytes(s.endpoint_gid)
+            for s in subscriptions
+            if s.qos_profile.durability == DurabilityPolicy.VOLATILE
+        }
+        first_seen = {gid: first_seen.get(gid, now) for gid in volatile}
+        served &= volatile  # forget those that left
+        due = {gid for gid, seen in first_seen.items() if now - seen >= VOLATILE_SETTLE}
+        if due - served:
+            matched = publisher.get_subscription_count() >= len(subscriptions)
+            oldest = min(first_seen[gid] for gid in due - served)
+            if matched or now - oldest > VOLATILE_SETTLE + LATCH_MATCH_WAIT:
+                _publish_one(graph, publisher, msg)
+                served |= due
         graph.spin_once(0.1)
 
 
@@ -310,58 +332,48 @@ def _publish(
         next_time += 1.0 / rate
 
 
-class _RateMeter:
-    """Arrival times in a sliding window, and the statistics `hz` prints."""
+class _SizeMeter:
+    """Arrival times and sizes in a sliding window: what `rostopic bw` prints."""
 
     def __init__(self, window: int) -> None:
-        self.times: deque[float] = deque(maxlen=window + 1)
+        self.times: deque[float] = deque(maxlen=window)
         self.sizes: deque[int] = deque(maxlen=window)
 
     def add(self, raw: bytes) -> None:
         self.times.append(time.monotonic())
         self.sizes.append(len(raw))
 
-    def periods(self) -> list[float]:
-
-        return [b - a for a, b in pairwise(self.times)]
-
 
 def hz(graph: Graph, topic: str, window: int = 10000, bandwidth: bool = False) -> None:
-    """Print the publishing rate (or bandwidth) of a topic once a second until Ctrl-C."""
+    """`rostopic hz` (or `bw`): the publishing rate (or bandwidth) of a topic, each second,
+    until Ctrl-C."""
     with until_stopped():
-        _hz(graph, absolute_name(topic), window, bandwidth)
+        topic = absolute_name(topic)
+        msg_type = _message_type(graph, topic, None)
+        meter: _HzMeter | _SizeMeter = _SizeMeter(window) if bandwidth else _HzMeter(window - 1)
+        # raw=True: count serialized messages without the cost of deserializing them.
+        subscription = AdaptiveSubscription(graph, msg_type, topic, meter.add, raw=True)
+        print(f"subscribed to [{topic}]", flush=True)
+        next_report = time.monotonic() + 1.0
+        while True:
+            graph.spin_once(min(0.1, max(0.0, next_report - time.monotonic())))
+            subscription.update()
+            if time.monotonic() < next_report:
+                continue
+            next_report = time.monotonic() + 1.0  # rostopic sleeps a second between reports
+            report = meter.report_ros1() if isinstance(meter, _HzMeter) else _size_report(meter)
+            if report:
+                print(report, flush=True)
 
 
-def _hz(graph: Graph, topic: str, window: int, bandwidth: bool) -> None:
-    msg_type = _message_type(graph, topic, None)
-    meter = _RateMeter(window)
-    # raw=True: count serialized messages without the cost of deserializing them.
-    subscription = AdaptiveSubscription(graph, msg_type, topic, meter.add, raw=True)
-    print(f"subscribed to [{topic}]", flush=True)
-    last_report = time.monotonic()
-    while True:
-        graph.spin_once(0.1)
-        subscription.update()
-        if time.monotonic() - last_report < 1.0:
-            continue
-        last_report = time.monotonic()
-        periods = meter.periods()
-        if not periods:
-            print("no new messages", flush=True)
-            continue
-        mean = statistics.fmean(periods)
-        if bandwidth:
-            rate = sum(meter.sizes) / (meter.times[-1] - meter.times[0] or 1.0)
-            print(f"{rate:.2f} B/s from {len(meter.sizes)} messages", flush=True)
-            print(f"\tMessage size mean: {statistics.fmean(meter.sizes):.0f} B", flush=True)
-            continue
-        print(f"average rate: {1.0 / mean:.3f}", flush=True)
-        std = statistics.pstdev(periods)
-        print(
-            f"\tmin: {min(periods):.3f}s max: {max(periods):.3f}s "
-            f"std dev: {std:.5f}s window: {len(periods) + 1}",
-            flush=True,
-        )
+def _size_report(meter: _SizeMeter) -> str | None:
+    if len(meter.times) < 2:
+        return None
+    rate = sum(meter.sizes) / (meter.times[-1] - meter.times[0] or 1.0)
+    return (
+        f"{rate:.2f} B/s from {len(meter.sizes)} messages\n"
+        f"\tMessage size mean: {statistics.fmean(meter.sizes):.0f} B"
+    )
 
 
 # `ros2 topic`: ros2topic's sub-verbs, options and output (ROS 2 Jazzy).
@@ -760,6 +772,8 @@ class _HzMeter:
         self.last = now
 
     def report(self) -> str | None:
+        """ros2topic hz's rule: once a second of new messages has arrived since the last
+        report, the statistics; otherwise nothing (after the publisher stops, nothing new)."""
         if not self.intervals:
             return None
         if self.last_printed == 0:
@@ -768,13 +782,27 @@ class _HzMeter:
         if self.last < self.last_printed + 1_000_000_000:
             return None
         self.last_printed = self.last
+        return self._statistics(len(self.intervals))
+
+    def report_ros1(self) -> str | None:
+        """ROS 1 rostopic hz's rule, asked once a second: nothing before the second message,
+        then the statistics, or `no new messages` when none came since the last report."""
+        if not self.intervals:
+            return None
+        if self.last == self.last_printed:
+            return "no new messages"
+        self.last_printed = self.last
+        return self._statistics(len(self.intervals) + 1)  # rostopic counts the messages
+
+    def _statistics(self, window: int) -> str:
         n = len(self.intervals)
         mean = sum(self.intervals) / n
         rate = 1.0 / mean if mean > 0 else 0.0
         std_dev = math.sqrt(sum((x - mean) ** 2 for x in self.intervals) / n)
         return (
             f"average rate: {rate * 1e9:.3f}\n\tmin: {min(self.intervals) * 1e-9:.3f}s "
-            f"max: {max(self.intervals) * 1e-9:.3f}s std dev: {std_dev * 1e-9:.5f}s window: {n}"
+            f"max: {max(self.intervals) * 1e-9:.3f}s std dev: {std_dev * 1e-9:.5f}s "
+            f"window: {window}"
         )
 
 

@@ -167,6 +167,32 @@ def test_nodes_of_one_name_are_a_warning(own_domain, node_process):
     assert stdout == f"\n{failed}/{CHECKS} check(s) failed\n\nFailed modules: {modules}\n"
 
 
+def test_hidden_topics_are_not_checked_or_reported(own_domain, node_process):
+    """ros2doctor reads ros2topic's topic names without the hidden ones (a part starting with
+    `_`, as turtlesim's canvas image and every action's topics)."""
+    plain_node(node_process, "canvas_owner", "/turtlesim/_canvas/compressed")
+    stdout, warnings = doctor()
+    assert warnings == network_warnings()
+    assert stdout == f"\nAll {CHECKS} checks passed\n\n"
+    report = sections(doctor("--report")[0])
+    assert report["TOPIC LIST"][0] == ("topic", "none")
+    assert dict(report["NODE LIST"])["node"] == "/canvas_owner"
+
+
+def test_a_domain_id_above_101_is_said_in_the_report_not_warned():
+    """ros2doctor does not check ROS_DOMAIN_ID; 102 to 232 work, so the report says what
+    to know about them and the checks stay quiet."""
+    env = {**os.environ, "ROS_DOMAIN_ID": "150"}
+    stdout, warnings = doctor(env=env)
+    assert not [w for w in warnings if "ROS_DOMAIN_ID" in w], warnings
+    assert stdout == f"\nAll {CHECKS} checks passed\n\n"
+    report = sections(doctor("--report", env=env)[0])
+    assert dict(report["DOMAIN PARTICIPANTS"])["domain id"] == (
+        "150 (above 101: its ports may meet the ports the operating system hands out; "
+        "0 to 101 are safe)"
+    )
+
+
 @pytest.mark.parametrize(
     ("value", "problem"),
     [

@@ -309,6 +309,17 @@ def test_rosrun_refuses_malformed_ros_arguments_in_one_line_before_the_node_star
         ),
         (("catkin_init_workspace",), "mkdir -p ~/ros2_ws/src"),
         (("roscp", "ros_tutorials_topic", "talker.py", "."), "type: cp "),
+        # A .srv the package does not hold: the interface package's, where it is.
+        (
+            ("roscp", "rospy_tutorials", "AddTwoInts.srv", "srv/AddTwoInts.srv"),
+            f"type: cp {ROOT / 'interfaces/ros_tutorials_interfaces/srv/AddTwoInts.srv'} "
+            "srv/AddTwoInts.srv",
+        ),
+        (
+            ("roscp", "ros_tutorials_service", "AddTwoInts.srv", "srv/"),
+            f"type: cp {ROOT / 'interfaces/ros_tutorials_interfaces/srv/AddTwoInts.srv'} srv/",
+        ),
+        (("roscp", "ros_tutorials_topic", "Nope.srv", "."), "ros_tutorials_topic has no file"),
         (("roscp", "nope", "a", "b"), "unknown package 'nope'"),
         (("rqt",), "call services with `ros2 service call` (`rosservice call`)"),
         (("rviz",), "`ros2 run ros_tutorials_web viewer`"),

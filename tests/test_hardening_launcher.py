@@ -351,3 +351,31 @@ def test_a_log_file_that_cannot_be_written_is_said_once_and_output_goes_on():
             sink.write(b"hello world\n" * 1000)
         sink.close()
     assert len(said) == 1 and "No space left on device" in said[0] and "ns1/talker" in said[0]
+
+
+# The official Jazzy tutorial's `main`: no try around spin, so Ctrl-C ends it in a traceback.
+SPINNING_NODE = """
+import rclpy
+from rclpy.node import Node
+rclpy.init()
+node = Node("plain_spinner")
+print("spinning", flush=True)
+rclpy.spin(node)
+"""
+
+
+def test_ctrl_c_of_a_running_node_without_a_handler_is_one_line(node_process, tmp_path):
+    program = tmp_path / "spinner.py"
+    program.write_text(SPINNING_NODE)
+    path = launch_file(
+        tmp_path,
+        f'<launch><executable cmd="{PYTHON} {program}" name="spinner" output="screen"/></launch>',
+    )
+    launcher = node_process("-m", "launcher", path)
+    pids = list(wait_started(launcher, 1).values())
+    launcher.wait_for_text("[spinner] spinning")
+    assert launcher.interrupt() == 130, launcher.output
+    assert_all_gone(pids)
+    assert "[spinner] stopped (its traceback is in the log)" in launcher.output
+    assert "Traceback" not in launcher.output, launcher.output
+    assert "KeyboardInterrupt" not in launcher.output

@@ -3,9 +3,9 @@
 colcon installs a ROS 2 Python package as: the ament index marker
 share/ament_index/resource_index/packages/PKG, and share/PKG/ with its package.xml and data
 (launch/, config/). This does the same for every folder ros_tutorials_*/ that has a package.xml
-(and for ament_copyright/), the way `colcon build --symlink-install` does: share/PKG/package.xml,
-share/PKG/launch and share/PKG/config are links to the source, so an edited or new launch file is
-used at once.
+(and for the stand-ins ament_copyright/ and rosbag2_py/), the way `colcon build --symlink-install`
+does: share/PKG/package.xml, share/PKG/launch and share/PKG/config are links to the source, so an
+edited or new launch file is used at once.
 The Python code itself is installed by pip (editable), not copied to share/.
 
 The interface packages in interfaces/ are installed by tools/build_interfaces.py (colcon copies
@@ -33,10 +33,11 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 INTERFACES = ROOT / "interfaces"
-# This project's own ament_copyright (not on PyPI), for the template tests of ros2 pkg create.
-OWN_LINTERS = [ROOT / "ament_copyright" / "package.xml"]
 DATA_FOLDERS = ("launch", "config")  # what the lessons' setup.py would list in data_files
 INDEX = Path("share", "ament_index", "resource_index", "packages")
+# ROS 2 Python packages PyPI lacks, which this project provides: ament_copyright (the template
+# tests of ros2 pkg create) and rosbag2_py's API.
+STAND_INS = [ROOT / "ament_copyright" / "package.xml", ROOT / "rosbag2_py" / "package.xml"]
 
 
 def manifest_name(manifest: Path) -> str:
@@ -126,7 +127,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--prefix", type=Path, default=Path(sys.prefix), help="default: the venv")
     prefix = parser.parse_args(argv).prefix.absolute()
     remove_stale(prefix)
-    for manifest in [*sorted(ROOT.glob("ros_tutorials_*/package.xml")), *OWN_LINTERS]:
+    for manifest in sorted([*ROOT.glob("ros_tutorials_*/package.xml"), *STAND_INS]):
         name = manifest_name(manifest)
         register(prefix, manifest.parent)
         print(f"{name} registered in the ament index in {prefix}")

@@ -40,8 +40,10 @@ from ros2cmd.bag.record import message_class
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import load_type
+from ros2cmd.wait import spin_until
 
 ADVERTISE_WAIT = 0.2  # ROS 1's "Waiting 0.2 seconds after advertising topics"
+MATCH_TIMEOUT = 5.0  # seconds: the longest play waits to meet the subscribers already running
 PUBLISHER_DEPTH = 100
 ACK_TIMEOUT = 5.0  # at the end: how long reliable subscribers get to take the last messages
 MIN_LOOP_PERIOD = 0.1  # seconds: --loop plays a bag at most this often
@@ -239,6 +241,32 @@ class Player:
                 f"no subscriber on {publisher.topic_name} (for {name})",
             )
 
+    def wait_for_matches(self) -> None:
+        """Where subscribers of the played topics run already, wait until each publisher is
+        matched with them (at most MATCH_TIMEOUT), so that the first messages reach them."""
+        self.graph.settle()  # the subscribers that run now are in the graph
+        wanted = {
+            publisher: self.node.count_subscribers(publisher.topic_name)
+            for publisher in self.publishers.values()
+        }
+        if not any(wanted.values()):
+            return
+
+        def missing() -> list[str]:
+            return [
+                publisher.topic_name
+                for publisher, count in wanted.items()
+                if publisher.get_subscription_count() < count
+            ]
+
+        if spin_until(self.graph.executor, lambda: not missing(), MATCH_TIMEOUT):
+            return
+        text = (
+            f"not yet matched with every subscriber of {', '.join(missing())} after "
+            f"{MATCH_TIMEOUT:g} s (an incompatible QoS?); playing: they may miss messages"
+        )
+        self.warn(text, text)
+
     def messages(self) -> Iterator[BagMessage]:
         topics = [*self.publishers, *self.clients]
         yield from self.reader.messages(topics, self.start)
@@ -396,9 +424,10 @@ def _play(graph: Graph, reader: BagReader, options: PlayOptions, node: Node) -> 
         player.wait_for_subscribers()
     if options.ros1:
         print(f"Waiting {ADVERTISE_WAIT} seconds after advertising topics...", end="", flush=True)
-    # A moment for discovery to join the new publishers to their subscribers (rosbag2 starts
-    # at once and loses the first messages to it).
-    time.sleep(ADVERTISE_WAIT)
+        time.sleep(ADVERTISE_WAIT)
+    # Discovery must join the new publishers to the subscribers already waiting, or the first
+    # messages go to no one (a fixed wait is too short on a busy machine).
+    player.wait_for_matches()
     if options.ros1:
         print(" done.", flush=True)
     else:

@@ -15,11 +15,13 @@ ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See 
 
 from __future__ import annotations
 
+import contextlib
 import shlex
 import sys
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
-from ros_tutorials_common import packages
+from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 
 
@@ -75,14 +77,53 @@ def rosed(argv: Sequence[str] | None = None) -> int:
     )
 
 
+INTERFACE_KINDS = ("msg", "srv", "action")
+OWN_INTERFACES = "ros_tutorials_interfaces"  # the seeds' .msg and .srv files are here
+
+
 @quiet_on_closed_pipe
 def roscp(argv: Sequence[str] | None = None) -> int:
-    return _pointed(
-        argv,
-        3,
-        "usage: roscp PKG FILE DEST; here: cp $(rospack find PKG)/FILE DEST",
-        "roscp is ROS 1's; type: cp {folder}/{args[1]} {args[2]}",
-    )
+    """The `cp` of the file, as ROS 1's roscp found it by name in the package; a .msg, .srv
+    or .action the package does not hold here is the interface package's that has it."""
+    args = _args(argv)
+    if len(args) != 3:
+        return _say("usage: roscp PKG FILE DEST; here: cp $(rospack find PKG)/FILE DEST")
+    package, name, destination = args
+    try:
+        folders = [packages.package_folder(package)]
+    except LookupError as error:
+        # A seed's name for several packages (rospy_tutorials): the file of any of them.
+        folders = [packages.package_folder(p) for p in packages.resolve_package(package)]
+        if not folders:
+            return _say(str(error))
+    found = [_file_in(folder, name) for folder in folders]
+    source = next((f for f in found if f is not None), None) or _interface_file(name)
+    if source is None:
+        where = ", ".join(str(folder) for folder in folders)
+        return _say(f"{package} has no file {name} here ({where})")
+    return _say(f"roscp is ROS 1's; type: cp {shlex.quote(str(source))} {shlex.quote(destination)}")
+
+
+def _file_in(folder: Path, name: str) -> Path | None:
+    if (folder / name).is_file():
+        return folder / name
+    found = sorted(p for p in folder.rglob(Path(name).name) if p.is_file())
+    return found[0] if found else None
+
+
+def _interface_file(name: str) -> Path | None:
+    """NAME (AddTwoInts.srv) in an installed interface package: this project's first (its
+    source folder, where a learner edits it), then the others by name."""
+    kind = Path(name).suffix.lstrip(".")
+    if kind not in INTERFACE_KINDS:
+        return None
+    owners = sorted(ament.resources("rosidl_interfaces"), key=lambda p: p != OWN_INTERFACES)
+    for owner in owners:
+        with contextlib.suppress(LookupError):
+            folder = packages.package_folder(owner)
+            if (folder / kind / Path(name).name).is_file():
+                return folder / kind / Path(name).name
+    return None
 
 
 @quiet_on_closed_pipe
