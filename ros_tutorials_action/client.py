@@ -47,7 +47,10 @@ def main(args: list[str] | None = None) -> int:
             lambda msg: log.info(f"Received feedback: {list(msg.feedback.sequence)}"),
         )
         rclpy.spin_until_future_complete(node, sent, timeout_sec=options.timeout)
-        if not (sent.done() and sent.result().accepted):
+        if not sent.done():
+            log.error(f"No answer from action server {ACTION_NAME} to the goal")
+            return 1
+        if not sent.result().accepted:
             log.error(f"Goal of order {options.order} rejected (the server's log says why)")
             return 1
         result = sent.result().get_result_async()  # ask for the result, wait for it (30 s)
