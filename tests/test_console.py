@@ -93,9 +93,7 @@ def test_logger_level_change_takes_effect_in_the_nodes_output(node_process, talk
     # The topic lesson's publisher: the lesson node that serves the logger services.
     _, publisher = talkers
     node = "/topic_publisher"
-    assert finished(tool(node_process, "rqt_logger_level", node))[-1].startswith(
-        f"{node}: UNSET"
-    )
+    assert finished(tool(node_process, "rqt_logger_level", node))[-1].startswith(f"{node}: UNSET")
     lines = finished(tool(node_process, "rqt_logger_level", node, "warn"))
     assert lines[-1] == f"{node}: WARN"
     quiet_from = time.time()

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 from helpers import spin_until
 
+from ros_tutorials_common import lesson_scripts
 from ros_tutorials_topic.publisher import TopicPublisher
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -148,3 +149,21 @@ def test_the_docs_list_each_lesson_files_length_and_keep_the_target():
         longer = max(official, 0 if book == "-" else int(book))
         assert ratio == f"{lines / longer:.2f}", path
         assert lines <= TARGET * longer, f"{path}: {lines} lines, over {TARGET} x {longer}"
+
+
+def test_the_console_scripts_take_rclpys_shutdown_race_for_the_stop(monkeypatch, tmp_path):
+    """The race the lessons no longer carry: a timer's publish after rclpy's Ctrl-C handler
+    shut ROS down is the stop (status 0) where the console scripts start the lessons; any other
+    RuntimeError stays an error."""
+    (tmp_path / "racing_lesson.py").write_text("def main():\n    raise RuntimeError(MESSAGE)\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setitem(lesson_scripts.LESSONS, "racing", "racing_lesson")
+    import racing_lesson
+
+    monkeypatch.setattr(
+        racing_lesson, "MESSAGE", "Failed to publish: publisher's context is invalid", raising=False
+    )
+    assert lesson_scripts.racing() == 0
+    monkeypatch.setattr(racing_lesson, "MESSAGE", "another error")
+    with pytest.raises(RuntimeError, match="another error"):
+        lesson_scripts.racing()
