@@ -7,36 +7,23 @@ int32 are rejected.    action_server --ros-args -p step_period:=0.2"""
 import time
 
 import rclpy
-from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.action import ActionServer, CancelResponse, GoalResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
-from rclpy.parameter import Parameter
 from rclpy.qos import QoSProfile
 from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.action import Fibonacci
 
 ACTION_NAME = "ros_tutorial_action"
-INT32_MAX = 2**31 - 1
-MAX_ORDER = 45  # the sequence of order 45 ends at F(46) = 1836311903; F(47) > INT32_MAX
+MAX_ORDER = 45  # the sequence of order 45 ends at F(46) = 1836311903; F(47) > int32's maximum
 REQUESTS = QoSProfile(depth=1000)  # the goal, cancel, result services' queues (10 lost some)
-
-
-def step_period_error(value: object) -> str | None:  # why value is no usable step_period
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value <= 86400:
-        return f"step_period must be greater than 0 seconds and at most 86400, not {value!r}"
-    return None  # a number of seconds (an integer will do), up to a day: a thread can wait that
 
 
 class FibonacciActionServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("action_server", enable_logger_service=True, **node_kwargs)
-        descriptor = ParameterDescriptor(description="seconds per term", dynamic_typing=True)
-        self.declare_parameter("step_period", 1.0, descriptor)  # checked now and at each change
-        if error := step_period_error(self.step_period):
-            raise SystemExit(f"error: {error}")
-        self.add_on_set_parameters_callback(self.check_step_period)
+        super().__init__("action_server", **node_kwargs)
+        self.declare_parameter("step_period", 1.0)  # seconds per term
         self.current_goal = None  # the goal accepted last: any other running goal stops
         self.running = []  # the goals whose execute callback runs
         self.action_server = ActionServer(  # reentrant: requests are answered while a goal runs
@@ -46,16 +33,6 @@ class FibonacciActionServer(Node):
             callback_group=ReentrantCallbackGroup(), goal_service_qos_profile=REQUESTS,
             cancel_service_qos_profile=REQUESTS, result_service_qos_profile=REQUESTS,
         )  # fmt: skip
-
-    @property
-    def step_period(self) -> float:
-        return self.get_parameter("step_period").value
-
-    def check_step_period(self, parameters: list[Parameter]) -> SetParametersResult:
-        for parameter in parameters:
-            if parameter.name == "step_period" and (error := step_period_error(parameter.value)):
-                return SetParametersResult(successful=False, reason=error)
-        return SetParametersResult(successful=True)
 
     def on_goal(self, goal: Fibonacci.Goal) -> GoalResponse:
         if 0 <= goal.order <= MAX_ORDER:
@@ -86,7 +63,8 @@ class FibonacciActionServer(Node):
                 break
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
-            end = time.monotonic() + self.step_period  # the book's r.sleep(), or should stop
+            # The book's r.sleep(), in short sleeps: a cancel, a new goal or Ctrl-C ends it at once.
+            end = time.monotonic() + self.get_parameter("step_period").value
             while time.monotonic() < end and not self.should_stop(goal_handle):
                 time.sleep(0.05)
         if goal_handle.is_cancel_requested:  # the final state (a stopped goal: partial result)

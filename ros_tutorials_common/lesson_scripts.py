@@ -9,6 +9,8 @@ gets them here: pyproject.toml's [project.scripts] points each lesson's script a
 module's attribute of the same name, ``ros_tutorials_common.lesson_scripts:topic_publisher``,
 which applies the defaults and calls ``ros_tutorials_topic.publisher.main()``. The package
 index (ros_tutorials_common/packages.py) runs the lesson module itself.
+
+Here too, not in the lessons: rclpy's shutdown race on Ctrl-C (docs/lesson-files.md).
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ import importlib
 from collections.abc import Callable
 
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
+
+SHUT_DOWN_WHILE_PUBLISHING = "publisher's context is invalid"
 
 # Console script -> the lesson module whose main() it runs.
 LESSONS = {
@@ -56,6 +60,13 @@ def __getattr__(name: str) -> Callable[[], int | None]:
         if problem:
             raise SystemExit(f"error: {problem}")
         apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
-        return importlib.import_module(LESSONS[name]).main()
+        try:
+            return importlib.import_module(LESSONS[name]).main()
+        except RuntimeError as error:
+            # rclpy's race: its Ctrl-C/SIGTERM handler shut ROS down in its own thread while a
+            # timer published (RCLError "publisher's context is invalid"). That is the stop.
+            if SHUT_DOWN_WHILE_PUBLISHING not in str(error):
+                raise
+            return 0
 
     return run_lesson

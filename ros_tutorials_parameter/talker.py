@@ -1,17 +1,10 @@
-"""Dynamics talker (seed 004's dynamics_talker): a talker whose text is a parameter.
+"""Dynamics talker (seed 004's dynamics_talker): publishes on ``chatter`` ten times a second
+the parameter ``talker_str`` (default "hello world"), read each time, so a change shows at once.
 
-Publishes std_msgs/String on ``chatter`` ten times a second; the text is the parameter
-``talker_str`` (default "hello world"), read each time, so a change shows on the next message.
-
-    python -m ros_tutorials_parameter.talker     (or: dynamics_talker)
-    dynamics_talker --ros-args -p talker_str:=Goodbye
+    dynamics_talker --ros-args -p talker_str:=Goodbye   (python -m ros_tutorials_parameter.talker)
 """
 
-import sys
-
 import rclpy
-from rcl_interfaces.msg import ParameterDescriptor
-from rclpy.exceptions import ParameterException
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from std_msgs.msg import String
@@ -19,10 +12,8 @@ from std_msgs.msg import String
 
 class DynamicsTalker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("dynamics_talker", enable_logger_service=True, **node_kwargs)
-        self.declare_parameter(
-            "talker_str", "hello world", ParameterDescriptor(description="the text to publish")
-        )
+        super().__init__("dynamics_talker", **node_kwargs)
+        self.declare_parameter("talker_str", "hello world")  # its name and default
         self.publisher = self.create_publisher(String, "chatter", 10)  # queue_size=10
         self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
 
@@ -34,18 +25,11 @@ class DynamicsTalker(Node):
 
 def main(args: list[str] | None = None) -> None:
     rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args -p ...)
-    try:
-        node = DynamicsTalker()  # create the node: it declares talker_str
-    except ParameterException as error:  # e.g. -p talker_str:=42 (not a string)
-        rclpy.try_shutdown()
-        sys.exit(f"error: {error}")
+    node = DynamicsTalker()  # create the node: it declares talker_str
     try:
         rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

@@ -1,31 +1,22 @@
-"""AddTwoInts server (the classic rospy/roscpp tutorial of seeds 001-004).
-
-Serves ros_tutorials_interfaces/AddTwoInts on ``add_two_ints``: ``sum = a + b``.
-
-    add_two_ints_server    (or: python -m ros_tutorials_service.add_two_ints_server)
-"""
+"""AddTwoInts server (the classic tutorial of seeds 001-004): serves ``add_two_ints``, a + b."""
 
 import rclpy
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import AddTwoInts
 
-INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1  # what the response's int64 field can hold
-
 
 class AddTwoIntsServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("add_two_ints_server", enable_logger_service=True, **node_kwargs)
+        super().__init__("add_two_ints_server", **node_kwargs)
         self.service = self.create_service(AddTwoInts, "add_two_ints", self.add)
         self.get_logger().info("Ready to add two ints.")
 
-    def add(
-        self, request: AddTwoInts.Request, response: AddTwoInts.Response
-    ) -> AddTwoInts.Response:
+    def add(self, request, response: AddTwoInts.Response) -> AddTwoInts.Response:
         a, b = request.a, request.b
-        # a + b; two large int64 operands can add up to more than int64 holds: then 0, and why.
-        response.sum = a + b if INT64_MIN <= a + b <= INT64_MAX else 0
-        if response.sum != a + b:
+        if -(2**63) <= a + b < 2**63:  # else 0: the response's int64 cannot hold the sum
+            response.sum = a + b
+        else:
             self.get_logger().warning(f"{a} + {b} = {a + b} does not fit in int64; sending back 0")
         self.get_logger().info(f"request: x={a}, y={b}")
         self.get_logger().info(f"sending back response: [{response.sum}]")

@@ -1,7 +1,5 @@
-"""Service server (book: ros_tutorials_service/service_server).
-
-Serves ros_tutorials_interfaces/SrvTutorial on ``ros_tutorial_srv``: answers each request
-with ``result = a + b`` and logs the request and the response.
+"""Service server (book: ros_tutorials_service/service_server): serves SrvTutorial on
+``ros_tutorial_srv``, answers each request with ``result = a + b`` and logs both.
 
     service_server         (or: python -m ros_tutorials_service.server)
 """
@@ -11,12 +9,10 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.srv import SrvTutorial
 
-INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1  # what the response's int64 field can hold
-
 
 class ServiceServer(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("service_server", enable_logger_service=True, **node_kwargs)
+        super().__init__("service_server", **node_kwargs)
         # The service server: service type, service name, the callback for each request.
         self.service = self.create_service(SrvTutorial, "ros_tutorial_srv", self.calculation)
         self.get_logger().info("ready srv server!")
@@ -25,9 +21,9 @@ class ServiceServer(Node):
         self, request: SrvTutorial.Request, response: SrvTutorial.Response
     ) -> SrvTutorial.Response:
         a, b = request.a, request.b
-        # a + b; two large int64 operands can add up to more than int64 holds: then 0, and why.
-        response.result = a + b if INT64_MIN <= a + b <= INT64_MAX else 0
-        if response.result != a + b:
+        if -(2**63) <= a + b < 2**63:  # else 0: the response's int64 cannot hold the sum
+            response.result = a + b
+        else:
             self.get_logger().warning(f"{a} + {b} = {a + b} does not fit in int64; sending back 0")
         self.get_logger().info(f"request: x={a}, y={b}")
         self.get_logger().info(f"sending back response: {response.result}")

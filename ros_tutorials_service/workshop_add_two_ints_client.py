@@ -1,8 +1,7 @@
 """AddTwoInts client of seed 004 (the "ROS Overview" workshop's add_two_ints_client.py).
 
 Sends x and y to ``add_two_ints`` once; prints "Requesting x+y" and "x + y = sum" as the seed
-does. Where the seed waits for ever, this gives up after 30 seconds.
-
+does. Where the seed waits for ever, this gives up after 30 seconds:
     rosrun my_package add_two_ints_client.py 1 2    (ros2 run: workshop_add_two_ints_client)
 """
 
@@ -27,15 +26,12 @@ def add_two_ints_client(node, x, y):
 
 def main(args=None):
     argv = remove_ros_args(sys.argv if args is None else args)
-    try:
-        x, y = (int(word) for word in argv[1:])  # exactly two integers
-    except ValueError:
-        x = y = 2**63  # not an int64: the usage below
-    if not all(-(2**63) <= n < 2**63 for n in (x, y)):
+    if len(argv) != 3 or not all(w.lstrip("-").isdigit() and abs(int(w)) < 2**63 for w in argv[1:]):
         print(f"{argv[0]} [x y]")  # the seed's usage()
         return 1
+    x, y = int(argv[1]), int(argv[2])
     rclpy.init(args=args)
-    node = Node("add_two_ints_client", enable_logger_service=True)
+    node = Node("add_two_ints_client")
     try:
         print(f"Requesting {x}+{y}", flush=True)
         print(f"{x} + {y} = {add_two_ints_client(node, x, y)}", flush=True)

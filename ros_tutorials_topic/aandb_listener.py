@@ -14,7 +14,7 @@ from ros_tutorials_interfaces.msg import AandB
 
 class AandBListener(Node):
     def __init__(self) -> None:
-        super().__init__("listener", enable_logger_service=True)
+        super().__init__("listener")
         # chatter_callback runs for every AandB message on chatter (queue of 1000).
         self.subscription = self.create_subscription(AandB, "chatter", self.chatter_callback, 1000)
 

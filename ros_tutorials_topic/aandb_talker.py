@@ -16,7 +16,7 @@ from ros_tutorials_interfaces.msg import AandB
 
 class AandBTalker(Node):
     def __init__(self) -> None:
-        super().__init__("talker", enable_logger_service=True)
+        super().__init__("talker")
         # Publish AandB on chatter, keeping up to 1000 messages for slow subscribers.
         self.publisher = self.create_publisher(AandB, "chatter", 1000)
         # Ten times a second, as ros::Rate loop_rate(10).
@@ -37,9 +37,6 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

@@ -13,7 +13,7 @@ from std_msgs.msg import String
 
 class Listener(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("listener", enable_logger_service=True, **node_kwargs)
+        super().__init__("listener", **node_kwargs)
         self.subscription = self.create_subscription(String, "chatter", self.on_message, 1000)
 
     def on_message(self, msg: String) -> None:

@@ -15,7 +15,7 @@ from ros_tutorials_interfaces.msg import Num
 
 class NumPublisher(Node):
     def __init__(self) -> None:
-        super().__init__("pub", enable_logger_service=True)
+        super().__init__("pub")
         self.publisher = self.create_publisher(Num, "publisher", 1000)
         self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
         self.i = 0
@@ -34,9 +34,6 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

@@ -14,7 +14,7 @@ from ros_tutorials_interfaces.msg import Num
 
 class NumSubscriber(Node):
     def __init__(self) -> None:
-        super().__init__("sub", enable_logger_service=True)
+        super().__init__("sub")
         self.subscription = self.create_subscription(Num, "/publisher", self.pub_callback, 1000)
 
     def pub_callback(self, msg: Num) -> None:

@@ -11,16 +11,14 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-QUEUE_SIZE = 100
-
 
 class TopicPublisher(Node):
     def __init__(self, **node_kwargs) -> None:
-        # enable_logger_service: every node of this project serves get/set_logger_levels,
-        # so that a node's log level can be changed while it runs.
+        # enable_logger_service: serve get/set_logger_levels, so that rqt_logger_level can
+        # change this node's log level while it runs (docs/rqt-and-logging.md).
         super().__init__("topic_publisher", enable_logger_service=True, **node_kwargs)
         # The publisher: message type, topic name, queue size.
-        self.publisher = self.create_publisher(MsgTutorial, "ros_tutorial_msg", QUEUE_SIZE)
+        self.publisher = self.create_publisher(MsgTutorial, "ros_tutorial_msg", 100)
         self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz, the book's loop rate
         self.count = 0
 
@@ -42,9 +40,6 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

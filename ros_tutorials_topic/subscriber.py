@@ -16,7 +16,7 @@ QUEUE_SIZE = 100
 
 class TopicSubscriber(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("topic_subscriber", enable_logger_service=True, **node_kwargs)
+        super().__init__("topic_subscriber", **node_kwargs)
         # The subscriber: message type, topic name, the callback for each message, queue size.
         self.subscription = self.create_subscription(
             MsgTutorial, "ros_tutorial_msg", self.on_message, QUEUE_SIZE

@@ -13,7 +13,7 @@ from std_msgs.msg import String
 
 class Talker(Node):
     def __init__(self, **node_kwargs) -> None:
-        super().__init__("talker", enable_logger_service=True, **node_kwargs)
+        super().__init__("talker", **node_kwargs)
         self.publisher = self.create_publisher(String, "chatter", 10)  # queue_size=10
         self.timer = self.create_timer(0.1, self.publish_message)  # 10 Hz
         self.count = 0
@@ -32,9 +32,6 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # run its timer until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

@@ -16,7 +16,7 @@ from ros_tutorials_interfaces.msg import UserRecord
 
 class UserRecordPublisher(Node):
     def __init__(self) -> None:
-        super().__init__("user_record_publisher", enable_logger_service=True)
+        super().__init__("user_record_publisher")
         self.publisher = self.create_publisher(UserRecord, "user_record", 10)
         self.timer = self.create_timer(0.1, self.publish_record)  # 10 Hz, as rospy.Rate(10)
         self.score = 0
@@ -40,9 +40,6 @@ def main(args: list[str] | None = None) -> None:
         rclpy.spin(node)  # until Ctrl-C
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down

@@ -14,7 +14,7 @@ from ros_tutorials_interfaces.msg import UserRecord
 
 class UserRecordSubscriber(Node):
     def __init__(self) -> None:
-        super().__init__("user_record_subscriber", enable_logger_service=True)
+        super().__init__("user_record_subscriber")
         self.subscription = self.create_subscription(UserRecord, "user_record", self.callback, 10)
 
     def callback(self, msg: UserRecord) -> None:

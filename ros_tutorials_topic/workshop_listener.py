@@ -14,7 +14,7 @@ from std_msgs.msg import String
 
 class Listener(Node):
     def __init__(self):
-        super().__init__("listener", enable_logger_service=True)  # rospy.init_node('listener')
+        super().__init__("listener")  # rospy.init_node('listener')
         self.sub = self.create_subscription(String, "chatter", self.callback, 10)
 
     def callback(self, data):

@@ -13,7 +13,7 @@ from std_msgs.msg import String
 
 class Talker(Node):
     def __init__(self):
-        super().__init__("talker", enable_logger_service=True)  # rospy.init_node('talker')
+        super().__init__("talker")  # rospy.init_node('talker')
         self.pub = self.create_publisher(String, "chatter", 10)  # queue_size=10
         self.timer = self.create_timer(0.1, self.talk)  # rospy.Rate(10): ten times a second
 
@@ -30,9 +30,6 @@ def main(args=None):
         rclpy.spin(node)  # the seed's `while not rospy.is_shutdown()` loop, run by the timer
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl-C: the seed's `except rospy.ROSInterruptException: pass`
-    except RuntimeError:  # the timer published just as Ctrl-C shut ROS down (rclpy's race)
-        if rclpy.ok():
-            raise  # any other error is one
     finally:
         node.destroy_node()
         rclpy.try_shutdown()

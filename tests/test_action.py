@@ -7,7 +7,6 @@ noticed a cancel, a new goal or a shutdown at the end of a step, these tests wou
 from __future__ import annotations
 
 import ast
-import gc
 import threading
 from collections.abc import Callable, Iterator
 
@@ -22,12 +21,9 @@ from rclpy.parameter import Parameter
 from rclpy.qos import qos_profile_action_status_default
 from ros_tutorials_interfaces.action import Fibonacci
 
-from ros_tutorials_action.server import (
-    ACTION_NAME,
-    INT32_MAX,
-    MAX_ORDER,
-    FibonacciActionServer,
-)
+from ros_tutorials_action.server import ACTION_NAME, MAX_ORDER, FibonacciActionServer
+
+INT32_MAX = 2**31 - 1
 
 FAST = 0.01  # seconds per step, for goals that should finish
 FOREVER = 3600.0  # seconds per step, for goals that must be stopped
@@ -212,36 +208,6 @@ def test_new_goal_preempts_the_running_one(start_server, probe, capfd):
     assert "ros_tutorial_action: Preempted" in capfd.readouterr().err
 
 
-@pytest.mark.parametrize("value", [0.0, -1.0, float("inf"), "fast", True, 1.0e300, 86401])
-def test_step_period_must_be_a_positive_number(context, value):
-    with pytest.raises(SystemExit, match="step_period must be"):
-        FibonacciActionServer(
-            context=context, parameter_overrides=[Parameter("step_period", value=value)]
-        )
-    # The half-made node (and its DDS participant) is kept alive by the traceback's cycle
-    # until some later garbage collection. Destroyed then, while other tests' participants of
-    # this process were sending to it, it once deadlocked Fast DDS (2.14: destroy_participant
-    # waiting for a listener call that waited for it). Destroy it now, alone.
-    gc.collect()
-
-
-def test_step_period_can_change_but_only_to_a_positive_number(context):
-    server = FibonacciActionServer(
-        context=context, parameter_overrides=[Parameter("step_period", value=2)]
-    )
-    try:
-        assert server.step_period == 2.0
-        (refused,) = server.set_parameters([Parameter("step_period", value=0.0)])
-        assert not refused.successful and "greater than 0" in refused.reason
-        # A step no thread can wait for (OverflowError in every goal, issue 15).
-        (refused,) = server.set_parameters([Parameter("step_period", value=1.0e300)])
-        assert not refused.successful and "at most 86400" in refused.reason
-        (accepted,) = server.set_parameters([Parameter("step_period", value=0.5)])
-        assert accepted.successful and server.step_period == 0.5
-    finally:
-        server.destroy_node()
-
-
 # --- the client CLI, as a real process ---------------------------------------------------
 
 
@@ -273,7 +239,7 @@ def test_client_computes_the_books_order_20_by_default(start_server, node_proces
 
 @pytest.mark.parametrize(
     "args",
-    [["abc"], ["1", "2"], ["99999999999"], ["--timeout", "0"], ["--result-timeout", "x"]],
+    [["abc"], ["1", "2"], ["1.5"], ["2147483648"], ["--timeout", "x"]],
 )
 def test_client_usage_errors(node_process, args):
     client = node_process(*CLIENT, *args)
@@ -296,7 +262,7 @@ def test_client_reports_a_rejected_goal(start_server, node_process):
     assert f"Goal of order {MAX_ORDER + 1} rejected" in client.output
 
 
-def test_ctrl_c_on_client_cancels_the_goal_on_the_server(start_server, probe, node_process):
+def test_ctrl_c_on_client_exits_130_without_a_traceback(start_server, node_process):
     start_server(FOREVER)
     client = node_process(*CLIENT, "5")
     client.wait_for_output(
@@ -304,25 +270,22 @@ def test_ctrl_c_on_client_cancels_the_goal_on_the_server(start_server, probe, no
         what="the first feedback",
     )
     assert client.interrupt() == 130
-    assert "Action finished: CANCELED" in client.output
     assert "Traceback" not in client.output
-    probe.wait_for_status(GoalStatus.STATUS_CANCELED)
 
 
-def test_client_cancels_the_goal_after_its_result_timeout(start_server, probe, node_process):
+def test_client_gives_up_after_its_timeout_with_the_books_line(start_server, node_process):
     start_server(FOREVER)
-    client = node_process(*CLIENT, "5", "--result-timeout", "1")
+    client = node_process(*CLIENT, "5", "--timeout", "8")
     assert client.wait() == 1
     assert "Action did not finish before the time out." in client.output
-    assert "Action finished: CANCELED" in client.output
-    probe.wait_for_status(GoalStatus.STATUS_CANCELED)
+    assert "Traceback" not in client.output
 
 
-def test_server_stops_mid_goal_on_ctrl_c_and_the_client_notices(node_process):
+def test_server_stops_mid_goal_on_ctrl_c_and_the_client_times_out(node_process):
     server = node_process(
         "-m", "ros_tutorials_action.server", "--ros-args", "-p", f"step_period:={FOREVER}"
     )
-    client = node_process(*CLIENT, "5")
+    client = node_process(*CLIENT, "5", "--timeout", "20")
     client.wait_for_output(
         lambda lines: any("Received feedback: [0, 1, 1]" in line for line in lines),
         what="the first feedback",
@@ -333,20 +296,4 @@ def test_server_stops_mid_goal_on_ctrl_c_and_the_client_notices(node_process):
     assert "Traceback" not in server.output
     assert "[ERROR]" not in server.output and "[WARN]" not in server.output
     assert client.wait() == 1
-    assert f"Action server {ACTION_NAME} went away before the goal finished" in client.output
-
-
-def test_server_refuses_a_bad_step_period(node_process):
-    server = node_process("-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=0")
-    assert server.wait() != 0
-    assert "error: step_period must be greater than 0 seconds" in server.output
-    assert "Traceback" not in server.output
-
-
-def test_server_refuses_a_step_period_too_long_to_wait(node_process):
-    server = node_process(
-        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=1.0e+300"
-    )
-    assert server.wait() != 0
-    assert "error: step_period must be greater than 0 seconds and at most 86400" in server.output
-    assert "Traceback" not in server.output
+    assert "Action did not finish before the time out." in client.output  # no result came

@@ -90,23 +90,23 @@ def _stamped(lines: list[str], text: str) -> list[float]:
 
 
 def test_logger_level_change_takes_effect_in_the_nodes_output(node_process, talkers):
-    talker, _ = talkers
-    assert finished(tool(node_process, "rqt_logger_level", "/talker"))[-1].startswith(
-        "/talker: UNSET"
-    )
-    lines = finished(tool(node_process, "rqt_logger_level", "/talker", "warn"))
-    assert lines[-1] == "/talker: WARN"
+    # The topic lesson's publisher: the lesson node that serves the logger services.
+    _, publisher = talkers
+    node = "/topic_publisher"
+    assert finished(tool(node_process, "rqt_logger_level", node))[-1].startswith(f"{node}: UNSET")
+    lines = finished(tool(node_process, "rqt_logger_level", node, "warn"))
+    assert lines[-1] == f"{node}: WARN"
     quiet_from = time.time()
-    # While WARN, the talker's INFO lines stop: watch for a second and a half of its life.
-    count = heard(talker, "hello world")
-    talker.wait_for_output(lambda lines: time.time() - quiet_from > 1.5, timeout=10)
-    lines = finished(tool(node_process, "rqt_logger_level", "/talker", "info"))
-    assert lines[-1] == "/talker: INFO"
-    talker.wait_for_output(
-        lambda lines: heard(talker, "hello world") > count + 3, what="INFO again"
+    # While WARN, its INFO lines stop: watch for a second and a half of its life.
+    publisher.wait_for_output(lambda lines: time.time() - quiet_from > 1.5, timeout=10)
+    count = len(_stamped(publisher.lines, "send msg"))
+    lines = finished(tool(node_process, "rqt_logger_level", node, "info"))
+    assert lines[-1] == f"{node}: INFO"
+    publisher.wait_for_output(
+        lambda lines: len(_stamped(lines, "send msg")) > count + 3, what="INFO again"
     )
     silent = [
-        t for t in _stamped(talker.lines, "hello world") if quiet_from + 0.3 < t < quiet_from + 1.5
+        t for t in _stamped(publisher.lines, "send msg") if quiet_from + 0.3 < t < quiet_from + 1.5
     ]
     assert not silent, f"INFO lines while the level was WARN: {silent}"
 

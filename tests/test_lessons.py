@@ -1,7 +1,8 @@
 """The lesson files as a course: each is plain rclpy (the standard library, rclpy and interface
-packages; no code of this project), every node serves the logger-level services, and the docs'
-table of lengths (docs/lesson-files.md) is the files' own. tests/test_take_home.py runs them in a
-package of one's own."""
+packages; no code of this project) and carries none of the toolkit's hardening; only the lesson
+that teaches changing a log level at run time serves the logger-level services; and the docs'
+table of lengths (docs/lesson-files.md) is the files' own and keeps its target. tests/
+test_take_home.py runs them in a package of one's own."""
 
 from __future__ import annotations
 
@@ -13,8 +14,7 @@ from pathlib import Path
 import pytest
 from helpers import spin_until
 
-from ros_tutorials_action.server import FibonacciActionServer
-from ros_tutorials_parameter.server import ServiceServerWithParameter
+from ros_tutorials_common import lesson_scripts
 from ros_tutorials_topic.publisher import TopicPublisher
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -74,23 +74,30 @@ def test_a_lesson_shows_init_spin_and_shutdown(path):
     assert "ros_tutorials_common" not in source and "DISCOVERY" not in source
 
 
-@pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
-def test_a_lesson_node_serves_logger_levels(path):
-    nodes = [
+# The lesson that teaches changing a node's log level while it runs (docs/rqt-and-logging.md:
+# rqt_logger_level /ns1/topic_publisher warn): the one node that serves the logger services.
+LOGGING_LESSON = ROOT / "ros_tutorials_topic" / "publisher.py"
+
+
+def node_creations(path: Path) -> list[ast.Call]:
+    return [
         call for call in ast.walk(ast.parse(path.read_text()))
         if isinstance(call, ast.Call) and ast.unparse(call.func) in ("Node", "super().__init__")
     ]  # fmt: skip
+
+
+@pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
+def test_only_the_logging_lesson_serves_logger_levels(path):
+    nodes = node_creations(path)
     assert nodes, f"{path.name} creates no node"
     for call in nodes:
         flags = {kw.arg: ast.unparse(kw.value) for kw in call.keywords}
-        assert flags.get("enable_logger_service") == "True", ast.unparse(call)
+        expected = "True" if path == LOGGING_LESSON else None
+        assert flags.get("enable_logger_service") == expected, ast.unparse(call)
 
 
-@pytest.mark.parametrize(
-    "make", [TopicPublisher, ServiceServerWithParameter, FibonacciActionServer]
-)
-def test_nodes_serve_the_logger_level_services(context, executor, make):
-    node = make(context=context)
+def test_the_logging_lesson_serves_the_logger_level_services(context, executor):
+    node = TopicPublisher(context=context)
     executor.add_node(node)
     name = node.get_fully_qualified_name()
     spin_until(
@@ -103,11 +110,60 @@ def test_nodes_serve_the_logger_level_services(context, executor, make):
     )
 
 
-def test_the_docs_list_each_lesson_files_length():
+@pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
+def test_a_lesson_carries_no_hardening(path):
+    """Numbers are argparse's int and float, goal states GoalStatus names, and rclpy's shutdown
+    race is handled where the lessons start (ros_tutorials_common/lesson_scripts.py)."""
+    tree = ast.parse(path.read_text())
+    for call in ast.walk(tree):
+        if isinstance(call, ast.Call) and ast.unparse(call.func).endswith(".add_argument"):
+            kinds = {ast.unparse(kw.value) for kw in call.keywords if kw.arg == "type"}
+            assert kinds <= {"int", "float"}, ast.unparse(call)
+    assert "rclpy.ok()" not in ast.unparse(tree), "rclpy's shutdown race is handled elsewhere"
+    assert not {"nan", "inf", "1e6"} & set(re.findall(r"[\w.]+", path.read_text()))
+    assert not re.search(r"^import re$", path.read_text(), re.M), "numbers are argparse's int"
+    if "ActionClient(" in path.read_text():
+        assert "GoalStatus.STATUS_SUCCEEDED" in path.read_text()
+
+
+# docs/lesson-files.md's table: | `file` | lines | book's original | lines | official | lines |
+# ratio |; a ratio is the lines over the longer of the two originals.
+ROW = re.compile(
+    r"^\| `(ros_tutorials_\w+/\w+\.py)` \| (\d+) \| [^|]+ \| (\d+|-) \| [^|]+ \| (\d+) \| "
+    r"(\d\.\d\d) \|$",
+    re.M,
+)
+TARGET = 1.3  # no lesson over 1.3 times the longer of the book's file and the official one
+
+
+def test_the_docs_list_each_lesson_files_length_and_keep_the_target():
     table = (ROOT / "docs" / "lesson-files.md").read_text()
-    listed = dict(re.findall(r"^\| `(ros_tutorials_\w+/\w+\.py)` \| (\d+) \|", table, re.M))
+    assert f"no file over {TARGET} times" in table
+    rows = {path: (int(n), book, int(official), ratio) for path, n, book, official, ratio in
+            ROW.findall(table)}  # fmt: skip
     actual = {
-        str(path.relative_to(ROOT)): str(len(path.read_text().splitlines()))
-        for path in LESSON_FILES
+        str(path.relative_to(ROOT)): len(path.read_text().splitlines()) for path in LESSON_FILES
     }
-    assert listed == actual
+    assert {path: row[0] for path, row in rows.items()} == actual
+    for path, (lines, book, official, ratio) in rows.items():
+        longer = max(official, 0 if book == "-" else int(book))
+        assert ratio == f"{lines / longer:.2f}", path
+        assert lines <= TARGET * longer, f"{path}: {lines} lines, over {TARGET} x {longer}"
+
+
+def test_the_console_scripts_take_rclpys_shutdown_race_for_the_stop(monkeypatch, tmp_path):
+    """The race the lessons no longer carry: a timer's publish after rclpy's Ctrl-C handler
+    shut ROS down is the stop (status 0) where the console scripts start the lessons; any other
+    RuntimeError stays an error."""
+    (tmp_path / "racing_lesson.py").write_text("def main():\n    raise RuntimeError(MESSAGE)\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setitem(lesson_scripts.LESSONS, "racing", "racing_lesson")
+    import racing_lesson
+
+    monkeypatch.setattr(
+        racing_lesson, "MESSAGE", "Failed to publish: publisher's context is invalid", raising=False
+    )
+    assert lesson_scripts.racing() == 0
+    monkeypatch.setattr(racing_lesson, "MESSAGE", "another error")
+    with pytest.raises(RuntimeError, match="another error"):
+        lesson_scripts.racing()

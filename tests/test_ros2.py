@@ -531,7 +531,7 @@ def test_ctrl_c_interrupts_one_shot_verbs_with_exit_130(executor, node_process, 
 def _goal_in_progress(node_process):
     """An action server whose steps never end, and send_goal waiting on it after one feedback."""
     server = node_process(
-        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600"
+        "-m", "ros_tutorials_action.server", "--ros-args", "-p", "step_period:=3600.0"
     )
     goal = node_process(
         str(BIN / "ros2"), "action", "send_goal", "/ros_tutorial_action", FIBONACCI,

@@ -10,7 +10,9 @@ from rclpy.node import Node
 from ros_tutorials_interfaces.srv import AddTwoInts, SrvTutorial
 
 from ros_tutorials_service.add_two_ints_server import AddTwoIntsServer
-from ros_tutorials_service.server import INT64_MAX, INT64_MIN, ServiceServer
+from ros_tutorials_service.server import ServiceServer
+
+INT64_MIN, INT64_MAX = -(2**63), 2**63 - 1
 
 # (client module, the service it calls)
 CLIENTS = [
@@ -110,20 +112,11 @@ def test_add_two_ints_client_calls_the_server(node_process):
         ([], "the following arguments are required"),
         (["1"], "the following arguments are required"),
         (["1", "2", "3"], "unrecognized arguments: 3"),
-        (["1.5", "2"], "'1.5' is not an integer"),
-        (["1", "two"], "'two' is not an integer"),
-        (["9223372036854775808", "0"], "9223372036854775808 does not fit in a 64-bit integer"),
+        (["1.5", "2"], "invalid int value: '1.5'"),
+        (["1", "two"], "invalid int value: 'two'"),
         (["1", "2", "--timeout", "x"], "invalid float value: 'x'"),
-        (["1", "2", "--timeout", "-1"], "--timeout: -1 is not a positive number of seconds"),
-        (["1", "2", "--timeout", "nan"], "--timeout: nan is not a positive number of seconds"),
-        # Waits rcl cannot count (int64 nanoseconds) or Python cannot sleep: one clear line.
-        (["1", "2", "--timeout", "1e10"], "1e+10 is not a positive number of seconds up to 1e6"),
-        (["1", "2", "--timeout", "1e300"], "1e+300 is not a positive number of seconds up to"),
-        (["1", "2", "--timeout", "inf"], "inf is not a positive number of seconds up to"),
-        # The book's clients read atoll-style integers: ASCII digits and an optional sign.
-        (["1_000", "2"], "'1_000' is not an integer"),
-        (["\u0665", "2"], "is not an integer"),  # ARABIC-INDIC DIGIT FIVE
-        (["1", " 5 "], "' 5 ' is not an integer"),
+        # rclpy's own failure for a number int64 cannot hold is a SystemError traceback.
+        (["9223372036854775808", "0"], "must fit in int64"),
     ],
 )
 def test_client_usage_errors(capsys, module, args, complaint):
