@@ -31,6 +31,8 @@ def main(args: list[str] | None = None) -> int:
     options = parser.parse_args(remove_ros_args(args or sys.argv)[1:])
     if not -(2**31) <= options.order < 2**31:
         parser.error("ORDER must fit in int32")  # else rclpy fails with a SystemError
+    if not 0 < options.timeout <= 3600:  # rclpy needs a finite wait
+        parser.error("--timeout must be more than 0 and at most 3600 seconds")
 
     rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
     node = Node("action_client")  # create the node

@@ -17,6 +17,8 @@ def main(args: list[str] | None = None) -> int:
     options = parser.parse_args(remove_ros_args(args or sys.argv)[1:])
     if not all(-(2**63) <= n < 2**63 for n in (options.x, options.y)):
         parser.error("X and Y must fit in int64")  # else rclpy fails with a SystemError
+    if not 0 < options.timeout <= 3600:  # rclpy needs a finite wait
+        parser.error("--timeout must be more than 0 and at most 3600 seconds")
 
     rclpy.init(args=args)
     node = Node("add_two_ints_client")

@@ -239,7 +239,7 @@ def test_client_computes_the_books_order_20_by_default(start_server, node_proces
 
 @pytest.mark.parametrize(
     "args",
-    [["abc"], ["1", "2"], ["1.5"], ["2147483648"], ["--timeout", "x"]],
+    [["abc"], ["1", "2"], ["1.5"], ["2147483648"], ["--timeout", "x"], ["--timeout", "nan"]],
 )
 def test_client_usage_errors(node_process, args):
     client = node_process(*CLIENT, *args)

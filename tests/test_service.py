@@ -117,6 +117,10 @@ def test_add_two_ints_client_calls_the_server(node_process):
         (["1", "2", "--timeout", "x"], "invalid float value: 'x'"),
         # rclpy's own failure for a number int64 cannot hold is a SystemError traceback.
         (["9223372036854775808", "0"], "must fit in int64"),
+        # rclpy's own failure for a wait it cannot make is a traceback too.
+        (["1", "2", "--timeout", "nan"], "--timeout must be more than 0"),
+        (["1", "2", "--timeout", "-1"], "--timeout must be more than 0"),
+        (["1", "2", "--timeout", "1e10"], "at most 3600 seconds"),
     ],
 )
 def test_client_usage_errors(capsys, module, args, complaint):
