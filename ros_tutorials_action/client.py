@@ -16,7 +16,6 @@ from rclpy.utilities import remove_ros_args
 from ros_tutorials_interfaces.action import Fibonacci
 
 ACTION_NAME = "ros_tutorial_action"
-# The final states, named as the book's client prints them.
 STATES = {
     GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
     GoalStatus.STATUS_CANCELED: "CANCELED",
@@ -29,10 +28,8 @@ def main(args: list[str] | None = None) -> int:
     parser.add_argument("order", metavar="ORDER", type=int, nargs="?", default=20)
     parser.add_argument("--timeout", metavar="SECONDS", type=float, default=30.0)
     options = parser.parse_args(remove_ros_args(args or sys.argv)[1:])
-    if not -(2**31) <= options.order < 2**31:
-        parser.error("ORDER must fit in int32")  # else rclpy fails with a SystemError
-    if not 0 < options.timeout <= 3600:  # rclpy needs a finite wait
-        parser.error("--timeout must be more than 0 and at most 3600 seconds")
+    if not -(2**31) <= options.order < 2**31 or not 0 < options.timeout <= 3600:
+        parser.error("ORDER must fit in int32, --timeout be in (0, 3600] s")  # else a traceback
 
     rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
     node = Node("action_client")  # create the node

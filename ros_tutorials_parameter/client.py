@@ -1,8 +1,6 @@
-"""Service client for the parameter lesson (book: ros_tutorials_parameter/service_client).
-
-The book changes only the server in this lesson; its client is the service lesson's, and so is
-this one (ros_tutorials_service/client.py under this lesson's name). Its result now depends on
-the server's parameter ``calculation_method``.
+"""Service client for the parameter lesson (book: ros_tutorials_parameter/service_client): the
+book's client is the service lesson's, and so is this one, under this lesson's name. Its result
+now depends on the server's parameter ``calculation_method``.
 
     service_client_with_parameter 10 5   (or: python -m ros_tutorials_parameter.client 10 5)
 """
