@@ -5,10 +5,14 @@ project's DDS defaults (after the environment check `ros2 run` makes), then the 
 A lesson file is plain rclpy and sets no defaults: the environment it starts in does
 (``source .venv/bin/activate``, ``ros2 run``, rosrun and the launcher apply ``dds.py``'s).
 A console script typed without activating the environment (``.venv/bin/topic_publisher``)
-gets them here: pyproject.toml's [project.scripts] points each lesson's script at this
-module's attribute of the same name, ``ros_tutorials_common.lesson_scripts:topic_publisher``,
-which applies the defaults and calls ``ros_tutorials_topic.publisher.main()``. The package
-index (ros_tutorials_common/packages.py) runs the lesson module itself.
+gets them here. pyproject.toml's [project.scripts] is the one place a lesson's script is named:
+its value names the lesson module after this module,
+``ros_tutorials_common.lesson_scripts:ros_tutorials_topic.publisher``, and the script pip
+writes runs ``from ros_tutorials_common.lesson_scripts import ros_tutorials_topic`` then
+``ros_tutorials_topic.publisher()``: the defaults, then ``ros_tutorials_topic.publisher.main()``.
+The lesson is imported by the name the script gives, after the defaults, so nothing here
+imports a lesson package (the lessons sit above this floor). The package index
+(ros_tutorials_common/packages.py, ``lesson_module``) reads the same values.
 
 Here too, not in the lessons: rclpy's shutdown race on Ctrl-C (docs/lesson-files.md).
 """
@@ -21,52 +25,49 @@ from collections.abc import Callable
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 SHUT_DOWN_WHILE_PUBLISHING = "publisher's context is invalid"
-
-# Console script -> the lesson module whose main() it runs.
-LESSONS = {
-    "topic_publisher": "ros_tutorials_topic.publisher",
-    "topic_subscriber": "ros_tutorials_topic.subscriber",
-    "talker": "ros_tutorials_topic.talker",
-    "listener": "ros_tutorials_topic.listener",
-    "aandb_talker": "ros_tutorials_topic.aandb_talker",
-    "aandb_listener": "ros_tutorials_topic.aandb_listener",
-    "num_publisher": "ros_tutorials_topic.num_publisher",
-    "num_subscriber": "ros_tutorials_topic.num_subscriber",
-    "user_record_publisher": "ros_tutorials_topic.user_record_publisher",
-    "user_record_subscriber": "ros_tutorials_topic.user_record_subscriber",
-    "service_server": "ros_tutorials_service.server",
-    "service_client": "ros_tutorials_service.client",
-    "add_two_ints_server": "ros_tutorials_service.add_two_ints_server",
-    "add_two_ints_client": "ros_tutorials_service.add_two_ints_client",
-    "service_server_with_parameter": "ros_tutorials_parameter.server",
-    "service_client_with_parameter": "ros_tutorials_parameter.client",
-    "dynamics_talker": "ros_tutorials_parameter.talker",
-    "action_server": "ros_tutorials_action.server",
-    "action_client": "ros_tutorials_action.client",
-    "introspection_service": "ros_tutorials_demo_nodes.introspection_service",
-    "introspection_client": "ros_tutorials_demo_nodes.introspection_client",
-    "introspection": "ros_tutorials_demo_nodes.introspection",
-}
+# The packages whose modules a script may name (the lessons and the demo nodes).
+LESSON_PACKAGE_PREFIX = "ros_tutorials_"
 
 
-def __getattr__(name: str) -> Callable[[], int | None]:
-    """The console script ``name`` (``from ros_tutorials_common.lesson_scripts import talker``,
-    as the script pip writes reads)."""
-    if name not in LESSONS:
+def lesson_module(script_value: str) -> str | None:
+    """The lesson module a console script's ``module:attr`` value runs, or None if it is not
+    a lesson's script."""
+    module, _, attribute = script_value.partition(":")
+    if module.strip() != __name__:
+        return None
+    return attribute.strip()
+
+
+def run(module: str) -> int | None:
+    """Check the environment, apply the DDS defaults, then run ``module``'s main()."""
+    problem = environment_problem()  # as `ros2 run` checks: rclpy.init would fail
+    if problem:
+        raise SystemExit(f"error: {problem}")
+    apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
+    try:
+        return importlib.import_module(module).main()
+    except RuntimeError as error:
+        # rclpy's race: its Ctrl-C/SIGTERM handler shut ROS down in its own thread while a
+        # timer published (RCLError "publisher's context is invalid"). That is the stop.
+        if SHUT_DOWN_WHILE_PUBLISHING not in str(error):
+            raise
+        return 0
+
+
+class _Package:
+    """``ros_tutorials_topic`` as a script's first name: its attributes are the lessons' runs."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __getattr__(self, module: str) -> Callable[[], int | None]:
+        if module.startswith("__"):
+            raise AttributeError(module)
+        return lambda: run(f"{self.name}.{module}")
+
+
+def __getattr__(name: str) -> _Package:
+    """The first name of a lesson script's value (``... import ros_tutorials_topic``)."""
+    if not name.startswith(LESSON_PACKAGE_PREFIX):
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-    def run_lesson() -> int | None:
-        problem = environment_problem()  # as `ros2 run` checks: rclpy.init would fail
-        if problem:
-            raise SystemExit(f"error: {problem}")
-        apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
-        try:
-            return importlib.import_module(LESSONS[name]).main()
-        except RuntimeError as error:
-            # rclpy's race: its Ctrl-C/SIGTERM handler shut ROS down in its own thread while a
-            # timer published (RCLError "publisher's context is invalid"). That is the stop.
-            if SHUT_DOWN_WHILE_PUBLISHING not in str(error):
-                raise
-            return 0
-
-    return run_lesson
+    return _Package(name)

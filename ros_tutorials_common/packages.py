@@ -181,9 +181,8 @@ def console_scripts() -> dict[str, str]:
     found = {}
     for script in importlib.metadata.entry_points(group="console_scripts"):
         module, _, function = script.value.partition(":")
-        if module == lesson_scripts.__name__:
-            module, function = lesson_scripts.LESSONS[function.strip()], "main"
-        found[script.name] = f"{module}:{function.strip()}"
+        lesson = lesson_scripts.lesson_module(script.value)
+        found[script.name] = f"{lesson}:main" if lesson else f"{module.strip()}:{function.strip()}"
     return found
 
 

@@ -157,13 +157,12 @@ def test_the_console_scripts_take_rclpys_shutdown_race_for_the_stop(monkeypatch,
     RuntimeError stays an error."""
     (tmp_path / "racing_lesson.py").write_text("def main():\n    raise RuntimeError(MESSAGE)\n")
     monkeypatch.syspath_prepend(str(tmp_path))
-    monkeypatch.setitem(lesson_scripts.LESSONS, "racing", "racing_lesson")
     import racing_lesson
 
     monkeypatch.setattr(
         racing_lesson, "MESSAGE", "Failed to publish: publisher's context is invalid", raising=False
     )
-    assert lesson_scripts.racing() == 0
+    assert lesson_scripts.run("racing_lesson") == 0
     monkeypatch.setattr(racing_lesson, "MESSAGE", "another error")
     with pytest.raises(RuntimeError, match="another error"):
-        lesson_scripts.racing()
+        lesson_scripts.run("racing_lesson")
