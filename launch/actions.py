@@ -29,6 +29,7 @@ from launch._base import (
 from launch._missing import module_getattr
 from launch.event_handlers import OnProcessExit
 from launch.events import Shutdown as ShutdownEvent
+from launch.frontend.expose import expose_action
 from launcher import LaunchError
 from launcher.declarations import DEFAULT_RESPAWN_MAX_RETRIES, MAX_SECONDS, NodeDecl, Step, When
 
@@ -91,10 +92,18 @@ class DeclareLaunchArgument(Action):
             raise self.error(f"argument {self.name!r} is {value!r}; choose one of {self.choices}")
 
 
+@expose_action("let")
 class SetLaunchConfiguration(Action):
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
         super().__init__(**kw)
         self.name, self.value = name, value
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         context.launch_configurations[perform(self.name, context)] = perform(self.value, context)
@@ -109,24 +118,48 @@ class UnsetLaunchConfiguration(Action):
         context.launch_configurations.pop(perform(self.name, context), None)
 
 
+def env_name(action: Any, context: LaunchContext) -> str:
+    """The variable an environment action names, refused where no environment can hold it."""
+    name = perform(action.name, context)
+    if not name or "=" in name or "\0" in name:
+        raise action.error(f"invalid environment variable name {name!r}")
+    return name
+
+
+@expose_action("set_env")
 class SetEnvironmentVariable(Action):
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
         super().__init__(**kw)
         self.name, self.value = name, value
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        context.set_env(perform(self.name, context), perform(self.value, context))
+        context.set_env(env_name(self, context), perform(self.value, context))
 
 
+@expose_action("unset_env")
 class UnsetEnvironmentVariable(Action):
     def __init__(self, name: SomeSubstitutionsType, **kw: Any) -> None:
         super().__init__(**kw)
         self.name = name
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        context.set_env(perform(self.name, context), None)
+        context.set_env(env_name(self, context), None)
 
 
+@expose_action("append_env")
 class AppendEnvironmentVariable(Action):
     def __init__(
         self,
@@ -139,8 +172,22 @@ class AppendEnvironmentVariable(Action):
         super().__init__(**kw)
         self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        prepend = entity.get_attr("prepend", optional=True)
+        if prepend is not None:  # launch_xml's own test writes "yes"
+            word = prepend.strip().lower()
+            kwargs["prepend"] = {"yes": "true", "no": "false"}.get(word, prepend)
+        separator = entity.get_attr("separator", optional=True)
+        if separator is not None:
+            kwargs["separator"] = parser.parse_substitution(separator)
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        name, value = perform(self.name, context), perform(self.value, context)
+        name, value = env_name(self, context), perform(self.value, context)
         old = context.environment.get(name, "")
         separator = perform(self.separator, context)
         if old:
@@ -150,12 +197,20 @@ class AppendEnvironmentVariable(Action):
         context.set_env(name, value)
 
 
+@expose_action("log")
 class LogInfo(Action):
     """A message on the launcher's screen, when the launch reaches it."""
 
     def __init__(self, *, msg: SomeSubstitutionsType, **kw: Any) -> None:
         super().__init__(**kw)
         self.msg = msg
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["msg"] = parser.parse_substitution(entity.get_attr("message"))
+        entity.get_attr("level", optional=True)  # every message is said at INFO here
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         parts = normalize(self.msg)
@@ -459,6 +514,9 @@ class IncludeLaunchDescription(Action):
         super().__init__(**kw)
         self.launch_description_source = launch_description_source
         self.launch_arguments = list(launch_arguments or [])
+        # Where a front-end wrote each argument (<arg> lines): the launcher then checks them
+        # against the included file's declarations and names those lines in its warnings.
+        self.arguments_at: dict[str, str] | None = None
 
     def execute(self, context: LaunchContext) -> None:
         source = self.launch_description_source
@@ -468,12 +526,13 @@ class IncludeLaunchDescription(Action):
             path = context.launch_file.parent / path
         if not path.is_file():
             raise self.error(f"included launch file {path} does not exist")
-        # The included file sees the includer's launch configurations too, and what it sets
-        # stays set after it (ros2 launch does not scope includes; resolve_file does this).
+        # Every given argument becomes a launch configuration of the included file, declared
+        # there or not; the included file sees the includer's configurations too, and what it
+        # sets stays set after it (ros2 launch does not scope includes; the sink does this).
         given = {perform(name, context): perform(value, context)
                  for name, value in self.launch_arguments}  # fmt: skip
         try:
-            context.include(path, given)
+            context.include(path, given, self.where, self.arguments_at)
         except RecursionError:
             raise self.error("launch files include each other too deeply") from None
 

@@ -155,7 +155,9 @@ class PlanSink(Protocol):
       (lazy: its substitutions are performed when the supervisor reports the event).
     - ``warn``: one line printed before the launch starts.
     - ``include``: read another launch file (any format) with the ``given`` arguments, in
-      ``scope`` (the including context's, opaque to the model).
+      ``scope`` (the including context's, opaque to the model), included at file:line
+      ``where``; ``given_at``: where a front-end wrote each argument (checked, and named in
+      warnings), None from a Python file.
     - ``add_container``: a component container or components to load (planned and shown;
       not started: rclcpp_components is not on PyPI).
     """
@@ -166,6 +168,13 @@ class PlanSink(Protocol):
 
     def warn(self, text: str) -> None: ...
 
-    def include(self, path: Path, given: dict[str, str], scope: Any) -> None: ...
+    def include(
+        self,
+        path: Path,
+        given: dict[str, str],
+        scope: Any,
+        where: str | None = None,
+        given_at: dict[str, str] | None = None,
+    ) -> None: ...
 
     def add_container(self, container: ContainerDecl) -> None: ...
