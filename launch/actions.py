@@ -29,6 +29,7 @@ from launch._base import (
 from launch._missing import module_getattr
 from launch.event_handlers import OnProcessExit
 from launch.events import Shutdown as ShutdownEvent
+from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
 from launcher import LaunchError
 from launcher.declarations import DEFAULT_RESPAWN_MAX_RETRIES, MAX_SECONDS, NodeDecl, Step, When
@@ -62,6 +63,7 @@ def flag(value: Any, context: LaunchContext) -> bool:
     return perform(value, context).strip().lower() in ("true", "1")
 
 
+@expose_action("arg")
 class DeclareLaunchArgument(Action):
     """A launch argument: ``name:=value`` on the command line or from an includer, else its
     default."""
@@ -80,6 +82,19 @@ class DeclareLaunchArgument(Action):
         self.default_value = default_value
         self.description = description
         self.choices = list(choices) if choices is not None else None
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = entity.get_attr("name")
+        default = entity.get_attr("default", optional=True)
+        if default is not None:
+            kwargs["default_value"] = parser.parse_substitution(default)
+        kwargs["description"] = entity.get_attr("description", optional=True)
+        choices = entity.get_attr("choice", data_type=list[Entity], optional=True)
+        if choices:
+            kwargs["choices"] = [choice.get_attr("value") for choice in choices]
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         context.declare(self.name)
@@ -302,6 +317,7 @@ class OpaqueFunction(Action):
         return self.function(context, *self.args, **self.kwargs)
 
 
+@expose_action("group")
 class GroupAction(Action):
     """Actions in a scope of their own (launch configurations, environment, remaps...)."""
 
@@ -319,19 +335,39 @@ class GroupAction(Action):
         self.scoped, self.forwarding = scoped, forwarding
         self.launch_configurations = launch_configurations or {}
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        for name in ("scoped", "forwarding"):
+            value = entity.get_attr(name, data_type=bool, optional=True)
+            if value is not None:
+                kwargs[name] = parser.parse_if_substitutions(value)
+        keep = entity.get_attr("keep", data_type=list[Entity], optional=True) or []
+        kwargs["launch_configurations"] = {
+            parser.parse_substitution(item.get_attr("name")): parser.parse_substitution(
+                item.get_attr("value")
+            )
+            for item in keep
+        }
+        kwargs["actions"] = [
+            parser.parse_action(child) for child in entity.children if child.type_name != "keep"
+        ]
+        return cls, kwargs
+
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
 
     def execute(self, context: LaunchContext) -> None:
         inner = context
-        if self.scoped:
-            inner = context.child(forwarding=self.forwarding)
+        if flag(self.scoped, context):
+            inner = context.child(forwarding=flag(self.forwarding, context))
         for name, value in self.launch_configurations.items():
             inner.launch_configurations[perform(name, context)] = perform(value, context)
         for action in self.actions:
             inner.visit(action)
 
 
+@expose_action("timer")
 class TimerAction(Action):
     """Its actions happen ``period`` seconds later."""
 
@@ -347,6 +383,14 @@ class TimerAction(Action):
         self.period = period
         self.actions = list(actions)
         self.cancel_on_shutdown = cancel_on_shutdown
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        period = entity.get_attr("period", data_type=float, can_be_str=True)
+        kwargs["period"] = parser.parse_if_substitutions(period)
+        kwargs["actions"] = [parser.parse_action(child) for child in entity.children]
+        return cls, kwargs
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
@@ -501,6 +545,7 @@ def normalize_actions(value: Any) -> list[Any]:
     return list(value) if isinstance(value, (list, tuple)) else [value]
 
 
+@expose_action("include")
 class IncludeLaunchDescription(Action):
     """Another launch file, of any of the three formats, with arguments."""
 
@@ -517,6 +562,20 @@ class IncludeLaunchDescription(Action):
         # Where a front-end wrote each argument (<arg> lines): the launcher then checks them
         # against the included file's declarations and names those lines in its warnings.
         self.arguments_at: dict[str, str] | None = None
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        from launch.launch_description_sources import AnyLaunchDescriptionSource
+
+        _, kwargs = super().parse(entity, parser)
+        source = parser.parse_substitution(entity.get_attr("file"))
+        kwargs["launch_description_source"] = AnyLaunchDescriptionSource(source)
+        arguments = entity.get_attr("arg", data_type=list[Entity], optional=True) or []
+        kwargs["launch_arguments"] = [
+            (item.get_attr("name"), parser.parse_substitution(item.get_attr("value")))
+            for item in arguments
+        ]
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         source = self.launch_description_source

@@ -15,6 +15,10 @@ from launcher.parse import Element
 _TRUE, _FALSE = ("true", "1"), ("false", "0")
 
 
+class MissingAttribute(LaunchError, AttributeError):
+    """An attribute (or children) an entity needs is not there: one line at its file:line."""
+
+
 class Entity(BaseEntity):
     """One element of a launch file; what its parse method reads is remembered, so that an
     attribute or child nobody read is refused (assert_entity_completely_parsed)."""
@@ -58,12 +62,12 @@ class Entity(BaseEntity):
             self._read_children.add(key)
             found = [type(self)(c, self) for c in self.element.children if c.tag == key]
             if not found and not optional:
-                raise AttributeError(f"{self.where}: <{self.type_name}> needs <{name}> children")
+                raise MissingAttribute(f"{self.where}: <{self.type_name}> needs <{name}> children")
             return found or None
         if key not in self.element.attrs:
             if optional:
                 return None
-            raise AttributeError(f"{self.where}: <{self.type_name}> needs a {name!r} attribute")
+            raise MissingAttribute(f"{self.where}: <{self.type_name}> needs a {name!r} attribute")
         self._read_attrs.add(key)
         return _coerce(self.element.attrs[key], data_type, can_be_str, self.element, name)
 

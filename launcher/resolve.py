@@ -15,7 +15,6 @@ launch leaks included arguments). An included file sees only the arguments passe
 
 from __future__ import annotations
 
-import functools
 import math
 import os
 import re
@@ -27,6 +26,7 @@ from typing import Any
 
 import yaml
 
+from launch_xml import Entity, Parser
 from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
@@ -443,6 +443,18 @@ def _short(text: str, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
+class LaunchParser(Parser):
+    """launch.frontend's Parser for the launcher: the entities an action holds (a <group>'s,
+    a <timer>'s children) are read when the action reaches them, in its scope and by the
+    tag's handler of the file's format (Resolver.deferred)."""
+
+    def __init__(self, resolver: Resolver, parent: str) -> None:
+        self.resolver, self.parent = resolver, parent
+
+    def parse_action(self, entity: Any) -> Any:
+        return self.resolver.deferred(entity.element, self.parent)
+
+
 class Resolver:
     """Walks launch files and collects node declarations. One per launch."""
 
@@ -617,20 +629,19 @@ class Resolver:
         finally:
             self.depth -= 1
 
-    def entities(self, element: Element) -> list[Any]:
-        """The children of a <group> or <timer> as launch entities (launch._base
-        .FrontendEntity), for the action that holds them (GroupAction, TimerAction): each, when
-        reached, is checked and read by its tag's handler in the scope the action gives it."""
+    def deferred(self, child: Element, parent: str) -> Any:
+        """A child of a <group> or <timer> (``parent``) as a launch entity (launch._base
+        .FrontendEntity) for the action holding it: when reached, it is checked and read by its
+        tag's handler in the scope the action gives it."""
         from launch._base import FrontendEntity
 
-        def handle(child: Element, context: Any) -> None:
+        def handle(context: Any) -> None:
             scope = context.frontend_scope
-            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, element.tag)
+            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, parent)
             if self.enabled(child, scope):
                 TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
-        return [FrontendEntity(functools.partial(handle, child), child.where)
-                for child in element.children]  # fmt: skip
+        return FrontendEntity(handle, child.where)
 
     def run_nested(self, action: Any, element: Element, scope: Scope) -> None:
         """run() for an action that holds entities: one level deeper (a recursion is refused)."""
@@ -831,9 +842,6 @@ class Resolver:
         """A ROS 2 <arg>: DeclareLaunchArgument, its default performed only if no value was
         given or set before (ros2 launch keeps a value set before, even one let in from the
         including file, which is said once, here)."""
-        from launch.actions import DeclareLaunchArgument
-        from launch.substitutions import FrontendText
-
         if name in scope.given:
             scope.args[name] = scope.given[name]
         elif name in scope.inherited and name in scope.args:
@@ -843,14 +851,7 @@ class Resolver:
                 "file including this one (not passed to it), not its default; ros2 launch lets "
                 "it in (its includes are not scoped)"
             )
-        default = element.attrs.get("default")
-        choices = [self.text(child, "value", scope) for child in element.children]
-        action = DeclareLaunchArgument(
-            name,
-            default_value=None if default is None else FrontendText(default, element),
-            choices=choices or None,
-        )
-        self.run(action, element, scope)
+        self.run(self.parse(element), element, scope)
 
     @tag("ros2", "let", {"name", "value"})
     @tag("ros2", "log", {"message", "level"})
@@ -866,10 +867,8 @@ class Resolver:
 
     def parse(self, element: Element) -> Any:
         """``element``'s action, as launch.frontend's Parser builds it (if/unless were read
-        already: enabled())."""
-        from launch_xml import Entity, Parser
-
-        action = Parser().parse_action(Entity(element))
+        already: enabled()); the entities it holds are read when the action reaches them."""
+        action = LaunchParser(self, element.tag).build(Entity(element))
         action.condition = None
         return action
 
@@ -880,11 +879,10 @@ class Resolver:
         self.resolve_scope(element, scope.child(namespace=ns))
 
     @tag("ros2", "group", {"scoped"}, marks={"scoped"})
-    def on_ros2_group(self, element: Element, scope: Scope) -> None:
-        from launch.actions import GroupAction
-
-        scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
-        self.run_nested(GroupAction(self.entities(element), scoped=scoped), element, scope)
+    @tag("ros2", "timer", {"period"})
+    def on_nested(self, element: Element, scope: Scope) -> None:
+        """GroupAction and TimerAction, built by their parse methods, one level deeper."""
+        self.run_nested(self.parse(element), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
          marks={"ns", "pass_all_args", "clear_params"})  # fmt: skip
@@ -920,37 +918,13 @@ class Resolver:
     def on_ros2_include(self, element: Element, scope: Scope) -> None:
         """IncludeLaunchDescription: its file and each <arg name value> performed when it
         executes (ros2 launch does not scope an include: see resolve_file)."""
-        from launch.actions import IncludeLaunchDescription
-        from launch.launch_description_sources import AnyLaunchDescriptionSource
-        from launch.substitutions import FrontendText
-
-        arguments, arguments_at = [], {}
+        arguments_at = {}
         for child in element.children:
             _check_tag(child, {"arg": {"name", "value"}}, scope, "include")
-            if not self.enabled(child, scope):
-                continue
-            name = self.text(child, "name", scope)
-            if "value" not in child.attrs:
-                raise child.error("<arg> needs a 'value' attribute")
-            arguments.append((name, FrontendText(child.attrs["value"], child)))
-            arguments_at.setdefault(name, child.where)
-        if "file" not in element.attrs:
-            raise element.error("<include> needs a 'file' attribute")
-        source = AnyLaunchDescriptionSource(FrontendText(element.attrs["file"], element))
-        action = IncludeLaunchDescription(source, launch_arguments=arguments)
+            arguments_at.setdefault(child.attrs.get("name", ""), child.where)
+        action = self.parse(element)
         action.arguments_at = arguments_at
         self.run(action, element, scope)
-
-    @tag("ros2", "timer", {"period"})
-    def on_timer(self, element: Element, scope: Scope) -> None:
-        """<timer period="S">: its children happen S seconds after the timer itself."""
-        from launch.actions import TimerAction
-
-        period = self.number(element, "period", scope)
-        if period is None:
-            raise element.error("<timer> needs a 'period' in seconds")
-        timer = TimerAction(period=period, actions=self.entities(element))
-        self.run_nested(timer, element, scope)
 
     # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 

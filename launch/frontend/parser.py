@@ -83,6 +83,11 @@ class Parser:
 
     def parse_action(self, entity: Entity) -> Any:
         """The action of one entity, by the parse method its tag exposed."""
+        return self.build(entity)
+
+    def build(self, entity: Entity) -> Any:
+        """The action the parse method exposed for ``entity``'s tag builds (a parse method
+        calls parse_action for the entities it holds: a front-end may defer those)."""
         _load_extensions()
         stack = self.__dict__.setdefault("_parsing", [])
         stack.append(entity)  # whose attributes parse_substitution is given
