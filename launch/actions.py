@@ -343,8 +343,8 @@ class GroupAction(Action):
             if value is not None:
                 kwargs[name] = parser.parse_if_substitutions(value)
         keep = entity.get_attr("keep", data_type=list[Entity], optional=True) or []
-        kwargs["launch_configurations"] = {
-            parser.parse_substitution(item.get_attr("name")): parser.parse_substitution(
+        kwargs["launch_configurations"] = {  # a name's substitutions as a key: a tuple
+            tuple(parser.parse_substitution(item.get_attr("name"))): parser.parse_substitution(
                 item.get_attr("value")
             )
             for item in keep

@@ -226,3 +226,60 @@ def test_a_bad_params_file_is_refused_at_the_params_line(tmp_path):
     )
     with pytest.raises(LaunchError, match=r"t\.launch\.xml:4: "):
         resolve(path, {}, Options())
+
+
+def test_timer_as_launch_xmls_test():  # launch_xml/test/launch_xml/test_timer.py
+    from launch.actions import TimerAction
+    from launch.substitutions import FrontendText
+
+    ld = load('<launch>\n<timer period="5">\n  <let name="a" value="b"/>\n</timer>\n</launch>\n')
+    (timer,) = ld.entities
+    assert isinstance(timer, TimerAction) and timer.period == 5.0 and len(timer.actions) == 1
+    ld = load('<launch><timer period="$(var my_period 5)"><log message="x"/></timer></launch>')
+    (timer,) = ld.entities
+    assert isinstance(timer.period, list) and isinstance(timer.period[0], FrontendText)
+
+
+def test_group_as_launch_xmls_test():  # launch_xml/test/launch_xml/test_group.py
+    from launch.actions import GroupAction
+
+    ld = load("""\
+        <launch>
+            <let name="foo" value="FOO"/>
+            <let name="bar" value="BAR"/>
+            <group scoped="True" forwarding="False">
+                <keep name="bar" value="$(var bar)"/>
+                <keep name="baz" value="BAZ"/>
+                <let name="var1" value="asd"/>
+            </group>
+        </launch>
+        """)
+    assert isinstance(ld.entities[2], GroupAction)
+    context = LaunchContext()
+    for entity in ld.entities[:2]:
+        entity.visit(context)
+    group = ld.entities[2]
+    assert len(group.actions) == 1 and isinstance(group.actions[0], SetLaunchConfiguration)
+    group.visit(context)  # scoped: nothing it sets is left after it
+    assert context.launch_configurations == {"foo": "FOO", "bar": "BAR"}
+
+
+def test_arg_and_include_build_their_actions():
+    from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+
+    ld = load("""\
+        <launch>
+            <arg name="mode" default="fast" description="how">
+                <choice value="fast"/><choice value="slow"/>
+            </arg>
+            <include file="other.launch.xml"><arg name="x" value="$(var mode)"/></include>
+        </launch>
+        """)
+    arg, include = ld.entities
+    assert isinstance(arg, DeclareLaunchArgument) and isinstance(include, IncludeLaunchDescription)
+    assert (arg.name, arg.description, arg.choices) == ("mode", "how", ["fast", "slow"])
+    context = LaunchContext()
+    arg.visit(context)
+    assert context.launch_configurations["mode"] == "fast"
+    ((name, value),) = include.launch_arguments
+    assert name == "x" and perform_substitutions(context, value) == "fast"
