@@ -32,7 +32,14 @@ from launch.events import Shutdown as ShutdownEvent
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
 from launcher import LaunchError
-from launcher.declarations import DEFAULT_RESPAWN_MAX_RETRIES, MAX_SECONDS, NodeDecl, Step, When
+from launcher.declarations import (
+    DEFAULT_RESPAWN_MAX_RETRIES,
+    MAX_SECONDS,
+    NodeDecl,
+    Step,
+    When,
+    shown_line,
+)
 
 __all__ = [
     "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
@@ -510,12 +517,9 @@ class ExecuteProcess(Action):
         decl.required = any(isinstance(a, EmitEvent) and not callable(a) for a in exit_actions)
 
     def execute(self, context: LaunchContext) -> None:
-        if self.output_format != DEFAULT_OUTPUT_FORMAT:
-            context.sink.warn(
-                f"{self.where}: output_format is not used: this launcher prefixes each line "
-                "with [name] (ros2 launch's default format)"
-            )
         decl = self.process_decl(context)
+        if self.output_format != DEFAULT_OUTPUT_FORMAT:
+            decl.output_format = checked_output_format(self.output_format, self.where)
         if decl.required and decl.respawn:
             raise self.error("a process cannot both respawn and shut the launch down on exit")
         index = context.sink.add_node(decl)
@@ -529,6 +533,23 @@ class ExecuteProcess(Action):
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
             OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def checked_output_format(output_format: Any, where: str) -> str:
+    """ExecuteProcess's output_format, tried on a sample line now: a field it cannot fill
+    ({nme}) is the launch file's error, not a failure of each line later."""
+    if not isinstance(output_format, str):
+        raise LaunchError(
+            f"{where}: output_format must be text, not {type(output_format).__name__}"
+        )
+    try:
+        shown_line(output_format, "name", "line")
+    except (AttributeError, IndexError, KeyError, ValueError) as error:
+        raise LaunchError(
+            f"{where}: output_format {output_format!r} cannot be formatted: {error!r} (it can use "
+            "{line} and {this.process_description.final_name})"
+        ) from None
+    return output_format
 
 
 def _process_details(custom_env: bool, info: dict[str, Any]) -> list[Step]:
