@@ -594,6 +594,7 @@ class IncludeLaunchDescription(Action):
         arguments = entity.get_attr("arg", data_type=list[Entity], optional=True) or []
         kwargs["launch_arguments"] = [
             (item.get_attr("name"), parser.parse_substitution(item.get_attr("value")))
+            + ((condition,) if (condition := parser.parse_condition(item)) else ())
             for item in arguments
         ]
         return cls, kwargs
@@ -609,8 +610,11 @@ class IncludeLaunchDescription(Action):
         # Every given argument becomes a launch configuration of the included file, declared
         # there or not; the included file sees the includer's configurations too, and what it
         # sets stays set after it (ros2 launch does not scope includes; the sink does this).
-        given = {perform(name, context): perform(value, context)
-                 for name, value in self.launch_arguments}  # fmt: skip
+        given = {}
+        for name, value, *condition in self.launch_arguments:
+            # a front-end's <arg if=...> inside <include> is a third item: given only if it holds
+            if not condition or condition[0].evaluate(context):
+                given[perform(name, context)] = perform(value, context)
         try:
             context.include(path, given, self.where, self.arguments_at)
         except RecursionError:

@@ -30,7 +30,6 @@ from launch_xml import Entity, Parser
 from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
-    DEFAULT_RESPAWN_MAX_RETRIES,
     MAX_SECONDS,
     ArgInfo,
     ContainerDecl,
@@ -1292,57 +1291,34 @@ class Resolver:
         node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
             scope.child(in_node=True))  # fmt: skip
         self.resolve_children(element, node_scope, element.tag)
-        if not ros1:  # launch_ros's Node or launch's ExecuteProcess, in the node's own scope
-            from launch.actions import ExecuteProcess, Shutdown
-            from launch_ros.actions import Node
+        # launch_ros's Node or launch's ExecuteProcess, in the node's own scope (both formats)
+        from launch.actions import ExecuteProcess, Shutdown
+        from launch_ros.actions import Node
 
-            process: dict[str, Any] = {
-                "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
-                "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
-                "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
-                "cwd": cwd, "on_exit": Shutdown() if required else None,
-            }  # fmt: skip
-            if cmd is not None:
-                action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
-            else:
-                parameters, remappings = self.node_parts(element, scope)
-                action = Node(
-                    package=package, executable=executable, name=name,
-                    namespace=namespace if ns_attr in element.attrs else None,
-                    exec_name=self.text(element, "exec_name", scope, "") or None,
-                    parameters=parameters, remappings=remappings,
-                    arguments=args, ros_arguments=ros_args, **process,
-                )  # fmt: skip
-            self.run(action, element, node_scope)
-            return
-        node = NodeDecl(
-            element.where,
-            package=package,
-            executable=executable,
-            cmd=cmd,
-            name=name,
-            namespace=namespace,
-            args=args,
-            ros_args=ros_args,
-            remaps=node_scope.remaps,
-            params=node_scope.params,
-            params_files=node_scope.params_files,
-            env=node_scope.env,
-            output=output,
-            respawn=respawn,
-            respawn_delay=respawn_delay,
-            respawn_max_retries=DEFAULT_RESPAWN_MAX_RETRIES if retries is None else retries,
-            required=required,
-            sigterm_timeout=sigterm_timeout,
-            sigkill_timeout=sigkill_timeout,
-            launch_prefix=launch_prefix,
-            cwd=cwd,
-            when=scope.when,
-            label=self.text(element, "exec_name", scope, "") or None,  # its output prefix
-        )
-        self.add_node(node)
+        process: dict[str, Any] = {
+            "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
+            "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
+            "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
+            "cwd": cwd, "on_exit": Shutdown() if required else None,
+        }  # fmt: skip
+        if cmd is not None:
+            action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
+        else:
+            # ROS 1: the node's namespace is absolute already (its scope's is its private one,
+            # where its <param>s went); its parameters come from the parameter server at the
+            # end (finish()), its remaps are its scope's (the last of a name won).
+            parameters, remappings = ([], []) if ros1 else self.node_parts(element, scope)
+            given_ns = ros1 or ns_attr in element.attrs
+            action = Node(
+                package=package, executable=executable, name=name,
+                namespace=namespace if given_ns else None,
+                exec_name=self.text(element, "exec_name", scope, "") or None,
+                parameters=parameters, remappings=remappings,
+                arguments=args, ros_arguments=ros_args, **process,
+            )  # fmt: skip
+        self.run(action, element, node_scope)
         if ros1:
-            self.ros1_nodes.append(node)
+            self.ros1_nodes.append(self.nodes[-1])
 
 
 def resolve(path: Path, args: dict[str, str], options: Options | None = None) -> Launch:

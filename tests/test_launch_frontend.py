@@ -188,6 +188,26 @@ def test_an_include_sets_every_given_argument_and_checks_required_ones(tmp_path)
         resolve(missing, {}, Options())
 
 
+@pytest.mark.parametrize(("hello", "said"), [("true", "hello"), ("false", "goodbye")])
+def test_an_include_argument_may_have_a_condition(tmp_path, hello, said):
+    # as ros_tutorials_parameter/launch/combine.launch.xml passes talker_str
+    write(tmp_path, "inner.launch.xml", '<launch><executable cmd="echo $(var word)"/></launch>')
+    main = write(
+        tmp_path,
+        "main.launch.xml",
+        """\
+        <launch>
+            <arg name="hello" default="true"/>
+            <include file="inner.launch.xml">
+                <arg name="word" value="hello" if="$(var hello)"/>
+                <arg name="word" value="goodbye" unless="$(var hello)"/>
+            </include>
+        </launch>
+        """,
+    )
+    assert resolve(main, {"hello": hello}, Options()).nodes[0].cmd == ["echo", said]
+
+
 def test_node_params_and_set_parameter_are_launch_ros_parameters(tmp_path):
     params = write(tmp_path, "p.yaml", "/**:\n  ros__parameters:\n    a: 1\n")
     path = write(
