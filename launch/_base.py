@@ -3,8 +3,9 @@ Condition, EventHandler, LaunchContext), written for this project's launcher.
 
 A Python launch file builds these objects; ``launcher/python_files.py`` calls its
 ``generate_launch_description()`` and executes the entities into the same plan the XML and
-YAML front-ends build (``launcher/resolve.py``, which also executes some of these actions for
-its tags): executing an action hands a process or a step to the context's sink
+YAML front-ends build (``launcher/resolve.py`` builds these actions for its tags, many by the
+parse methods of launch.frontend, and executes them the same way): executing an action hands
+a process or a step to the context's sink
 (``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
 line of the launch file that created it, so an error names the user's file:line, never a line
 in here.

@@ -1,16 +1,18 @@
 """Resolve a launch file: arguments, conditions, substitutions and scopes -> node declarations.
 
-Both formats are read here, each detected per file. What differs is the set of tags and
-attributes (each handler's ``@tag`` lines: the one place a tag is defined) and parameters:
-- ROS 1 ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
+Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
+line (its attributes, where it may stand, the signs of its format) on the handler that reads
+it. A ROS 2 tag's handler builds its action (launch/, launch_ros/), by the parse method the
+action exposed (launch.frontend) or from the attributes it reads, and executes it in the
+file's scope (``run``): what the tag does is the action's. ROS 1's rules are its handlers':
+- ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
   each node receives the parameters of its namespace and of the enclosing ones (the nearest
   wins) plus its private ones (``~name``, or written inside ``<node>``).
-- ROS 2 ``<set_parameter>`` applies to the nodes after it in its scope, like ros2 launch.
-
-Every ``<group>`` and every ``<include>`` is a scope: arguments, remaps, parameters,
-environment and namespace set inside do not leak out (also in the ROS 2 format, where ros2
-launch leaks included arguments). An included file sees only the arguments passed to it.
+- a later ``<remap>`` of a name replaces the earlier; ``<group>`` and ``<include>`` are scopes:
+  an included file sees only the arguments passed to it, and nothing set inside leaks out.
+A ROS 2 ``<include>`` is not scoped, as in ros2 launch (``resolve_file`` says where a value
+crossed one); ``<set_parameter>`` applies to the nodes after it in its scope.
 """
 
 from __future__ import annotations
