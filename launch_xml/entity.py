@@ -102,14 +102,13 @@ def _coerce(text: str, data_type: Any, can_be_str: bool, element: Element, name:
         if not isinstance(items, list):
             raise element.error(f"{name}={text!r} is not a list")
         return [_coerce(str(item), item_type, False, element, name) for item in items]
+    if data_type is bool:  # as to_bool reads a flag
+        word = text.strip().lower()
+        if word not in _TRUE + _FALSE:
+            raise element.error(f"{name!r} must be true, false, 1 or 0, not {text!r}")
+        return word in _TRUE
     try:
-        if data_type is bool:
-            word = text.strip().lower()
-            if word not in _TRUE + _FALSE:
-                raise ValueError
-            return word in _TRUE
         return data_type(text)
     except (TypeError, ValueError):
-        raise LaunchError(
-            f"{element.where}: {name}={text!r} is not {getattr(data_type, '__name__', data_type)}"
-        ) from None
+        what = {int: "an integer", float: "a number"}.get(data_type, str(data_type))
+        raise element.error(f"{name!r} must be {what}, not {text!r}") from None
