@@ -3,8 +3,9 @@ Condition, EventHandler, LaunchContext), written for this project's launcher.
 
 A Python launch file builds these objects; ``launcher/python_files.py`` calls its
 ``generate_launch_description()`` and executes the entities into the same plan the XML and
-YAML front-ends build (``launcher/resolve.py``, which also executes some of these actions for
-its tags): executing an action hands a process or a step to the context's sink
+YAML front-ends build (``launcher/resolve.py`` builds these actions for its tags, many by the
+parse methods of launch.frontend, and executes them the same way): executing an action hands
+a process or a step to the context's sink
 (``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
 line of the launch file that created it, so an error names the user's file:line, never a line
 in here.
@@ -37,10 +38,16 @@ def is_ours(filename: str) -> bool:
     return filename.startswith(_OURS) or filename.startswith("<frozen")
 
 
+_LAUNCHER = _OURS[-1]
+
+
 def caller_where() -> str:
-    """file:line of the first frame outside the stand-in: the launch file's line."""
+    """file:line of the first frame outside the stand-in: the launch file's line. An entity a
+    front-end builds (the launcher's frames come first) is told its file:line by it."""
     frame = sys._getframe(1)
     while frame is not None and is_ours(frame.f_code.co_filename):
+        if frame.f_code.co_filename.startswith(_LAUNCHER):
+            return "<launch file>"  # not the whole stack's walk for each of them
         frame = frame.f_back
     if frame is None:
         return "<launch file>"
@@ -99,6 +106,14 @@ class Action(LaunchDescriptionEntity):
     def __init__(self, *, condition: Condition | None = None) -> None:
         super().__init__()
         self.condition = condition
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        """What every tag of a markup front-end has (launch.frontend): ``if``/``unless``. Each
+        action's own parse adds its attributes to these keyword arguments."""
+        condition = parser.parse_condition(entity)
+        kwargs: dict[str, Any] = {} if condition is None else {"condition": condition}
+        return cls, kwargs
 
     def visit(self, context: LaunchContext) -> None:
         """Execute this action into the plan, with what it returns, if its condition holds."""
@@ -191,6 +206,17 @@ class _DetachedScope:
     def anon(self, name: str) -> str:
         return f"{name}_{os.getpid()}_{id(self) % 10000}"
 
+    # What a front-end's substitutions read of their context (launcher.substitutions.Context).
+    allow_code = False
+
+    def read_arg(self, name: str, element: Element) -> str:
+        if name not in self.args:
+            raise element.error(f"launch configuration {name!r} is not set")
+        return self.args[name]
+
+    def charge(self, size: int, element: Element) -> None:
+        """Outside a launch there is no whole launch to count toward."""
+
 
 class _NoPlan:
     """The sink of a LaunchContext made outside a launch: nothing can be added to a plan."""
@@ -204,7 +230,7 @@ class _NoPlan:
     def warn(self, text: str) -> None:
         print(f"[WARNING] [launch]: {text}", file=sys.stderr)
 
-    def include(self, path: Path, given: dict[str, str], scope: Any) -> None:
+    def include(self, path: Path, given: dict[str, str], scope: Any, *where: Any) -> None:
         raise LaunchError(f"{path}: this LaunchContext is not part of a launch")
 
 
@@ -312,9 +338,16 @@ class LaunchContext:
     def anon(self, name: str) -> str:
         return self._scope.anon(name)
 
-    def include(self, path: Path, given: dict[str, str]) -> None:
-        """Read another launch file with ``given`` arguments (not scoped, as ros2 launch)."""
-        self.sink.include(path, given, self._scope)
+    def include(
+        self,
+        path: Path,
+        given: dict[str, str],
+        where: str | None = None,
+        given_at: dict[str, str] | None = None,
+    ) -> None:
+        """Read another launch file with ``given`` arguments (not scoped, as ros2 launch),
+        included at file:line ``where``, each argument written at ``given_at[name]``."""
+        self.sink.include(path, given, self._scope, where, given_at)
 
     def perform_substitution(self, substitution: Substitution) -> str:
         return substitution.perform(self)

@@ -29,8 +29,17 @@ from launch._base import (
 from launch._missing import module_getattr
 from launch.event_handlers import OnProcessExit
 from launch.events import Shutdown as ShutdownEvent
+from launch.frontend.entity import Entity
+from launch.frontend.expose import expose_action
 from launcher import LaunchError
-from launcher.declarations import DEFAULT_RESPAWN_MAX_RETRIES, MAX_SECONDS, NodeDecl, Step, When
+from launcher.declarations import (
+    DEFAULT_RESPAWN_MAX_RETRIES,
+    MAX_SECONDS,
+    NodeDecl,
+    Step,
+    When,
+    shown_line,
+)
 
 __all__ = [
     "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
@@ -61,6 +70,7 @@ def flag(value: Any, context: LaunchContext) -> bool:
     return perform(value, context).strip().lower() in ("true", "1")
 
 
+@expose_action("arg")
 class DeclareLaunchArgument(Action):
     """A launch argument: ``name:=value`` on the command line or from an includer, else its
     default."""
@@ -80,6 +90,19 @@ class DeclareLaunchArgument(Action):
         self.description = description
         self.choices = list(choices) if choices is not None else None
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = entity.get_attr("name")
+        default = entity.get_attr("default", optional=True)
+        if default is not None:
+            kwargs["default_value"] = parser.parse_substitution(default)
+        kwargs["description"] = entity.get_attr("description", optional=True)
+        choices = entity.get_attr("choice", data_type=list[Entity], optional=True)
+        if choices:
+            kwargs["choices"] = [choice.get_attr("value") for choice in choices]
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
         context.declare(self.name)
         if self.name not in context.launch_configurations:
@@ -91,10 +114,18 @@ class DeclareLaunchArgument(Action):
             raise self.error(f"argument {self.name!r} is {value!r}; choose one of {self.choices}")
 
 
+@expose_action("let")
 class SetLaunchConfiguration(Action):
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
         super().__init__(**kw)
         self.name, self.value = name, value
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         context.launch_configurations[perform(self.name, context)] = perform(self.value, context)
@@ -109,24 +140,48 @@ class UnsetLaunchConfiguration(Action):
         context.launch_configurations.pop(perform(self.name, context), None)
 
 
+def env_name(action: Any, context: LaunchContext) -> str:
+    """The variable an environment action names, refused where no environment can hold it."""
+    name = perform(action.name, context)
+    if not name or "=" in name or "\0" in name:
+        raise action.error(f"invalid environment variable name {name!r}")
+    return name
+
+
+@expose_action("set_env")
 class SetEnvironmentVariable(Action):
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
         super().__init__(**kw)
         self.name, self.value = name, value
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        context.set_env(perform(self.name, context), perform(self.value, context))
+        context.set_env(env_name(self, context), perform(self.value, context))
 
 
+@expose_action("unset_env")
 class UnsetEnvironmentVariable(Action):
     def __init__(self, name: SomeSubstitutionsType, **kw: Any) -> None:
         super().__init__(**kw)
         self.name = name
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        context.set_env(perform(self.name, context), None)
+        context.set_env(env_name(self, context), None)
 
 
+@expose_action("append_env")
 class AppendEnvironmentVariable(Action):
     def __init__(
         self,
@@ -139,8 +194,22 @@ class AppendEnvironmentVariable(Action):
         super().__init__(**kw)
         self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        prepend = entity.get_attr("prepend", optional=True)
+        if prepend is not None:  # launch_xml's own test writes "yes"
+            word = prepend.strip().lower()
+            kwargs["prepend"] = {"yes": "true", "no": "false"}.get(word, prepend)
+        separator = entity.get_attr("separator", optional=True)
+        if separator is not None:
+            kwargs["separator"] = parser.parse_substitution(separator)
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
-        name, value = perform(self.name, context), perform(self.value, context)
+        name, value = env_name(self, context), perform(self.value, context)
         old = context.environment.get(name, "")
         separator = perform(self.separator, context)
         if old:
@@ -150,12 +219,20 @@ class AppendEnvironmentVariable(Action):
         context.set_env(name, value)
 
 
+@expose_action("log")
 class LogInfo(Action):
     """A message on the launcher's screen, when the launch reaches it."""
 
     def __init__(self, *, msg: SomeSubstitutionsType, **kw: Any) -> None:
         super().__init__(**kw)
         self.msg = msg
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["msg"] = parser.parse_substitution(entity.get_attr("message"))
+        entity.get_attr("level", optional=True)  # every message is said at INFO here
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         parts = normalize(self.msg)
@@ -247,6 +324,7 @@ class OpaqueFunction(Action):
         return self.function(context, *self.args, **self.kwargs)
 
 
+@expose_action("group")
 class GroupAction(Action):
     """Actions in a scope of their own (launch configurations, environment, remaps...)."""
 
@@ -264,19 +342,39 @@ class GroupAction(Action):
         self.scoped, self.forwarding = scoped, forwarding
         self.launch_configurations = launch_configurations or {}
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        for name in ("scoped", "forwarding"):
+            value = entity.get_attr(name, data_type=bool, optional=True)
+            if value is not None:
+                kwargs[name] = parser.parse_if_substitutions(value)
+        keep = entity.get_attr("keep", data_type=list[Entity], optional=True) or []
+        kwargs["launch_configurations"] = {  # a name's substitutions as a key: a tuple
+            tuple(parser.parse_substitution(item.get_attr("name"))): parser.parse_substitution(
+                item.get_attr("value")
+            )
+            for item in keep
+        }
+        kwargs["actions"] = [
+            parser.parse_action(child) for child in entity.children if child.type_name != "keep"
+        ]
+        return cls, kwargs
+
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
 
     def execute(self, context: LaunchContext) -> None:
         inner = context
-        if self.scoped:
-            inner = context.child(forwarding=self.forwarding)
+        if flag(self.scoped, context):
+            inner = context.child(forwarding=flag(self.forwarding, context))
         for name, value in self.launch_configurations.items():
             inner.launch_configurations[perform(name, context)] = perform(value, context)
         for action in self.actions:
             inner.visit(action)
 
 
+@expose_action("timer")
 class TimerAction(Action):
     """Its actions happen ``period`` seconds later."""
 
@@ -292,6 +390,14 @@ class TimerAction(Action):
         self.period = period
         self.actions = list(actions)
         self.cancel_on_shutdown = cancel_on_shutdown
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        period = entity.get_attr("period", data_type=float, can_be_str=True)
+        kwargs["period"] = parser.parse_if_substitutions(period)
+        kwargs["actions"] = [parser.parse_action(child) for child in entity.children]
+        return cls, kwargs
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
@@ -411,12 +517,9 @@ class ExecuteProcess(Action):
         decl.required = any(isinstance(a, EmitEvent) and not callable(a) for a in exit_actions)
 
     def execute(self, context: LaunchContext) -> None:
-        if self.output_format != DEFAULT_OUTPUT_FORMAT:
-            context.sink.warn(
-                f"{self.where}: output_format is not used: this launcher prefixes each line "
-                "with [name] (ros2 launch's default format)"
-            )
         decl = self.process_decl(context)
+        if self.output_format != DEFAULT_OUTPUT_FORMAT:
+            decl.output_format = checked_output_format(self.output_format, self.where)
         if decl.required and decl.respawn:
             raise self.error("a process cannot both respawn and shut the launch down on exit")
         index = context.sink.add_node(decl)
@@ -430,6 +533,23 @@ class ExecuteProcess(Action):
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
             OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def checked_output_format(output_format: Any, where: str) -> str:
+    """ExecuteProcess's output_format, tried on a sample line now: a field it cannot fill
+    ({nme}) is the launch file's error, not a failure of each line later."""
+    if not isinstance(output_format, str):
+        raise LaunchError(
+            f"{where}: output_format must be text, not {type(output_format).__name__}"
+        )
+    try:
+        shown_line(output_format, "name", "line")
+    except (AttributeError, IndexError, KeyError, ValueError) as error:
+        raise LaunchError(
+            f"{where}: output_format {output_format!r} cannot be formatted: {error!r} (it can use "
+            "{line} and {this.process_description.final_name})"
+        ) from None
+    return output_format
 
 
 def _process_details(custom_env: bool, info: dict[str, Any]) -> list[Step]:
@@ -446,6 +566,7 @@ def normalize_actions(value: Any) -> list[Any]:
     return list(value) if isinstance(value, (list, tuple)) else [value]
 
 
+@expose_action("include")
 class IncludeLaunchDescription(Action):
     """Another launch file, of any of the three formats, with arguments."""
 
@@ -459,6 +580,24 @@ class IncludeLaunchDescription(Action):
         super().__init__(**kw)
         self.launch_description_source = launch_description_source
         self.launch_arguments = list(launch_arguments or [])
+        # Where a front-end wrote each argument (<arg> lines): the launcher then checks them
+        # against the included file's declarations and names those lines in its warnings.
+        self.arguments_at: dict[str, str] | None = None
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        from launch.launch_description_sources import AnyLaunchDescriptionSource
+
+        _, kwargs = super().parse(entity, parser)
+        source = parser.parse_substitution(entity.get_attr("file"))
+        kwargs["launch_description_source"] = AnyLaunchDescriptionSource(source)
+        arguments = entity.get_attr("arg", data_type=list[Entity], optional=True) or []
+        kwargs["launch_arguments"] = [
+            (item.get_attr("name"), parser.parse_substitution(item.get_attr("value")))
+            + ((condition,) if (condition := parser.parse_condition(item)) else ())
+            for item in arguments
+        ]
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         source = self.launch_description_source
@@ -468,12 +607,16 @@ class IncludeLaunchDescription(Action):
             path = context.launch_file.parent / path
         if not path.is_file():
             raise self.error(f"included launch file {path} does not exist")
-        # The included file sees the includer's launch configurations too, and what it sets
-        # stays set after it (ros2 launch does not scope includes; resolve_file does this).
-        given = {perform(name, context): perform(value, context)
-                 for name, value in self.launch_arguments}  # fmt: skip
+        # Every given argument becomes a launch configuration of the included file, declared
+        # there or not; the included file sees the includer's configurations too, and what it
+        # sets stays set after it (ros2 launch does not scope includes; the sink does this).
+        given = {}
+        for name, value, *condition in self.launch_arguments:
+            # a front-end's <arg if=...> inside <include> is a third item: given only if it holds
+            if not condition or condition[0].evaluate(context):
+                given[perform(name, context)] = perform(value, context)
         try:
-            context.include(path, given)
+            context.include(path, given, self.where, self.arguments_at)
         except RecursionError:
             raise self.error("launch files include each other too deeply") from None
 

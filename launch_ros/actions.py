@@ -8,6 +8,7 @@ from typing import Any
 from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess
+from launch.frontend.expose import expose_action
 from launch_ros.utilities import (
     node_parameters,
     node_remaps,
@@ -17,7 +18,7 @@ from launch_ros.utilities import (
 from launcher import LaunchError
 from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
 from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
-from ros_tutorials_common.bounded import InputError, read_params_file
+from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
 __all__ = [
     "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
@@ -140,10 +141,17 @@ def _components(nodes: list[Any], context: LaunchContext, namespace: str) -> lis
     return found
 
 
+@expose_action("push_ros_namespace")
 class PushRosNamespace(Action):
     def __init__(self, namespace: Any, **kw: Any) -> None:
         super().__init__(**kw)
         self.namespace = namespace
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["namespace"] = parser.parse_substitution(entity.get_attr("namespace"))
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         value = perform(self.namespace, context)
@@ -156,14 +164,26 @@ class PushRosNamespace(Action):
 PushROSNamespace = PushRosNamespace
 
 
+@expose_action("set_parameter")
 class SetParameter(Action):
     def __init__(self, name: Any, value: Any, **kw: Any) -> None:
         super().__init__(**kw)
         self.name, self.value = name, value
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
+        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
+        return cls, kwargs
+
     def execute(self, context: LaunchContext) -> None:
+        name = perform(self.name, context)
         value = parameter_value(self.value, context, self.where)
-        context.ros_params.append((perform(self.name, context), value))
+        problem = parameter_problem(name, value)
+        if problem:
+            raise self.error(problem)
+        context.ros_params.append((name, value))
 
 
 class SetParametersFromFile(Action):
@@ -180,10 +200,18 @@ class SetParametersFromFile(Action):
         context.ros_params_files.append(str(path))
 
 
+@expose_action("set_remap")
 class SetRemap(Action):
     def __init__(self, src: Any, dst: Any, **kw: Any) -> None:
         super().__init__(**kw)
         self.src, self.dst = src, dst
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        kwargs["src"] = parser.parse_substitution(entity.get_attr("from"))
+        kwargs["dst"] = parser.parse_substitution(entity.get_attr("to"))
+        return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
         pair = (perform(self.src, context), perform(self.dst, context))

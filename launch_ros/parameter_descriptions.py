@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from launch._base import caller_where
 from launch._missing import module_getattr
 
 __all__ = ["ParameterFile", "ParameterValue"]
@@ -23,6 +24,7 @@ class ParameterFile:
     def __init__(self, param_file: Any, *, allow_substs: Any = False) -> None:
         self.param_file = param_file
         self.allow_substs = allow_substs
+        self.where = caller_where()  # its errors name this line
 
 
 __getattr__ = module_getattr("launch_ros.parameter_descriptions", lambda: __all__)

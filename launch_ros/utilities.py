@@ -75,13 +75,14 @@ def node_parameters(
                 params.append((key, typed))
         else:
             source = item.param_file if isinstance(item, ParameterFile) else item
+            where = item.where if isinstance(item, ParameterFile) else entity.where
             path = Path(perform(source, context))
             if isinstance(item, ParameterFile) and flag(item.allow_substs, context):
-                element = element_at(entity.where)
+                element = element_at(where)
                 path = substituted_params_file(path, context.frontend_scope, element)
-            try:
+            try:  # checked now: the node would fail on it later
                 read_params_file(path)
             except InputError as error:
-                raise LaunchError(f"{entity.where}: {error}") from None
+                raise LaunchError(f"{where}: {error}") from None
             files.append(str(path))
     return params, files

@@ -4,8 +4,8 @@
 
 The XML and YAML front-end (resolve.py) and the Python one (python_files.py, with the ``launch``
 and ``launch_ros`` packages) build these; plan.py turns them into process specs and
-supervise.py does the steps. Data only, importing nothing of the launcher, so every stage
-can take it from here.
+supervise.py does the steps. Data only (and ``shown_line``, the one reading of
+output_format), importing nothing of the launcher, so every stage can take it from here.
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any, Protocol
 
 # How many times in a row a respawning process may fail quickly before we give up.
@@ -92,6 +93,9 @@ class NodeDecl:
     cwd: str | None = None
     when: When = AT_START
     label: str | None = None  # the output prefix, if not the node's name (ExecuteProcess name=)
+    # ExecuteProcess(output_format=...): how each line is shown, str.format with ``line`` and
+    # ``this`` (this.process_description.final_name); None: "[name] line"
+    output_format: str | None = None
 
 
 @dataclass
@@ -155,7 +159,9 @@ class PlanSink(Protocol):
       (lazy: its substitutions are performed when the supervisor reports the event).
     - ``warn``: one line printed before the launch starts.
     - ``include``: read another launch file (any format) with the ``given`` arguments, in
-      ``scope`` (the including context's, opaque to the model).
+      ``scope`` (the including context's, opaque to the model), included at file:line
+      ``where``; ``given_at``: where a front-end wrote each argument (checked, and named in
+      warnings), None from a Python file.
     - ``add_container``: a component container or components to load (planned and shown;
       not started: rclcpp_components is not on PyPI).
     """
@@ -166,6 +172,23 @@ class PlanSink(Protocol):
 
     def warn(self, text: str) -> None: ...
 
-    def include(self, path: Path, given: dict[str, str], scope: Any) -> None: ...
+    def include(
+        self,
+        path: Path,
+        given: dict[str, str],
+        scope: Any,
+        where: str | None = None,
+        given_at: dict[str, str] | None = None,
+    ) -> None: ...
 
     def add_container(self, container: ContainerDecl) -> None: ...
+
+
+def shown_line(output_format: str | None, name: str, line: str) -> str:
+    """A line of a process's output as the screen shows it: ``[name] line``, or as its
+    ExecuteProcess's output_format says (str.format, as ros2 launch formats it; checked when
+    the launch was planned)."""
+    if output_format is None:
+        return f"[{name}] {line}"
+    this = SimpleNamespace(process_description=SimpleNamespace(final_name=name, name=name))
+    return output_format.format(line=line, this=this)

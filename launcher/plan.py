@@ -48,6 +48,7 @@ class ProcessSpec:
     remaps: list[tuple[str, str]] = field(default_factory=list)  # shown by --print
     params: list[tuple[str, Any]] = field(default_factory=list)
     when: When = AT_START  # a timer or an event handler starts it later
+    output_format: str | None = None  # NodeDecl.output_format
 
 
 def command_for(package: str, executable: str, where: str) -> list[str]:
@@ -212,6 +213,7 @@ def make_plan(
                 remaps=node.remaps,
                 params=node.params,
                 when=node.when,
+                output_format=node.output_format,
             )
         )
     return specs

@@ -1,21 +1,22 @@
 """Resolve a launch file: arguments, conditions, substitutions and scopes -> node declarations.
 
-Both formats are read here, each detected per file. What differs is the set of tags and
-attributes (each handler's ``@tag`` lines: the one place a tag is defined) and parameters:
-- ROS 1 ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
+Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
+line (its attributes, where it may stand, the signs of its format) on the handler that reads
+it. A ROS 2 tag's handler builds its action (launch/, launch_ros/), by the parse method the
+action exposed (launch.frontend) or from the attributes it reads, and executes it in the
+file's scope (``run``): what the tag does is the action's. ROS 1's rules are its handlers':
+- ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
   each node receives the parameters of its namespace and of the enclosing ones (the nearest
   wins) plus its private ones (``~name``, or written inside ``<node>``).
-- ROS 2 ``<set_parameter>`` applies to the nodes after it in its scope, like ros2 launch.
-
-Every ``<group>`` and every ``<include>`` is a scope: arguments, remaps, parameters,
-environment and namespace set inside do not leak out (also in the ROS 2 format, where ros2
-launch leaks included arguments). An included file sees only the arguments passed to it.
+- a later ``<remap>`` of a name replaces the earlier; ``<group>`` and ``<include>`` are scopes:
+  an included file sees only the arguments passed to it, and nothing set inside leaks out.
+A ROS 2 ``<include>`` is not scoped, as in ros2 launch (``resolve_file`` says where a value
+crossed one); ``<set_parameter>`` applies to the nodes after it in its scope.
 """
 
 from __future__ import annotations
 
-import functools
 import math
 import os
 import re
@@ -27,13 +28,12 @@ from typing import Any
 
 import yaml
 
+from launch_xml import Entity, Parser
 from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
-    DEFAULT_RESPAWN_MAX_RETRIES,
     MAX_SECONDS,
     ArgInfo,
-    ComponentDecl,
     ContainerDecl,
     Launch,
     NodeDecl,
@@ -53,7 +53,6 @@ from launcher.substitutions import (
     MAX_LAUNCH_SUBSTITUTED,
     run_command,
     substitute,
-    substituted_params_file,
     to_bool,
 )
 from ros_tutorials_common.bounded import (
@@ -61,7 +60,6 @@ from ros_tutorials_common.bounded import (
     load_yaml,
     parameter_problem,
     parameters_problem,
-    read_params_file,
     read_text,
 )
 
@@ -418,14 +416,6 @@ def _check_params(element: Element, mapping: dict | None, name: str, value: Any)
         raise element.error(problem)
 
 
-def _check_params_file(element: Element, path: Path) -> None:
-    """A ROS 2 params file, checked before anything starts: the child would fail on it later."""
-    try:
-        read_params_file(path)
-    except InputError as error:
-        raise element.error(str(error)) from None
-
-
 def describe_container(container: ContainerDecl) -> str:
     """A container and its components in one phrase (the warning, --print)."""
     what = f"{container.name}" if container.package else f"components for {container.name}"
@@ -438,8 +428,32 @@ def describe_container(container: ContainerDecl) -> str:
     return f"{what} with {names}" if names else f"{what} (no components)"
 
 
+def _as_typed(value: Any) -> Any:
+    """A value a front-end typed already, as launch_ros's Node takes it: text stays text
+    (ParameterValue of str), not read as YAML again."""
+    from launch_ros.parameter_descriptions import ParameterValue
+
+    if isinstance(value, str):
+        return ParameterValue(value, value_type=str)
+    if isinstance(value, list):
+        return [_as_typed(item) for item in value]
+    return value
+
+
 def _short(text: str, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+class LaunchParser(Parser):
+    """launch.frontend's Parser for the launcher: the entities an action holds (a <group>'s,
+    a <timer>'s children) are read when the action reaches them, in its scope and by the
+    tag's handler of the file's format (Resolver.deferred)."""
+
+    def __init__(self, resolver: Resolver, parent: str) -> None:
+        self.resolver, self.parent = resolver, parent
+
+    def parse_action(self, entity: Any) -> Any:
+        return self.resolver.deferred(entity.element, self.parent)
 
 
 class Resolver:
@@ -513,16 +527,17 @@ class Resolver:
         given: dict[str, str],
         parent: Scope | None,
         strict: bool = True,
-        include: Element | None = None,
-        given_at: dict[str, Element] | None = None,
+        include: str | None = None,
+        given_at: dict[str, str] | None = None,
     ) -> Scope:
         """Read one launch file with the ``given`` argument values, included from ``parent``
-        (None: the file the user named). Returns the file's scope as it ends."""
+        (None: the file the user named) at file:line ``include``, each argument given at
+        ``given_at[name]``. Returns the file's scope as it ends."""
         path = path.resolve()
         if path in self.include_chain:
             chain = " -> ".join(str(p) for p in [*self.include_chain, path])
             message = f"launch files include each other in a loop: {chain}"
-            raise include.error(message) if include else LaunchError(message)
+            raise LaunchError(f"{include}: {message}" if include else message)
         is_python = path.name.endswith(".py")
         root = None if is_python else parse_file(path)
         fmt, why = ("ros2", "") if root is None else detect(root)
@@ -551,7 +566,8 @@ class Resolver:
             self.include_chain.pop()
         if unscoped:
             assert parent is not None
-            where = f"{path.name} (included at line {include.line})" if include else path.name
+            line = include.rpartition(":")[2] if include else ""
+            where = f"{path.name} (included at line {line})" if include else path.name
             for name, value in scope.args.items():
                 if name not in parent.args or parent.args[name] != value:
                     parent.args[name] = value
@@ -572,7 +588,7 @@ class Resolver:
             self.depth -= 1
 
     def _resolve_root(
-        self, root: Element, scope: Scope, strict: bool, given_at: dict[str, Element] | None
+        self, root: Element, scope: Scope, strict: bool, given_at: dict[str, str] | None
     ) -> None:
         """The <launch> of an XML or YAML file: its deprecation, its arguments, its entities."""
         path = scope.file
@@ -584,9 +600,9 @@ class Resolver:
         names = ", ".join(sorted(n for n in declared if n)) or "none"
         if unknown and strict and scope.fmt == "ros1":  # roslaunch: "unused args"
             if given_at and unknown[0] in given_at:  # an <include>'s <arg>: name its line
-                raise given_at[unknown[0]].error(
-                    f"no argument named {', '.join(unknown)} is declared in {path.name} "
-                    f"(declared: {names})"
+                raise LaunchError(
+                    f"{given_at[unknown[0]]}: no argument named {', '.join(unknown)} is declared "
+                    f"in {path.name} (declared: {names})"
                 )
             raise LaunchError(
                 f"{path}: no argument named {', '.join(unknown)} is declared (declared: {names})"
@@ -598,7 +614,7 @@ class Resolver:
         for name in unknown:  # a typo is worth a line where nothing reads the value
             named = given_at is not None and name in given_at  # by an <include>'s <arg>
             if name not in self.reads.get(path, set()) and (named or (strict and not given_at)):
-                where = given_at[name].where if given_at and named else str(path)
+                where = given_at[name] if given_at and named else str(path)
                 self.warn(
                     f"{where}: {path.name} declares no argument {name!r} and does not read it "
                     f"(declared: {names})"
@@ -614,20 +630,19 @@ class Resolver:
         finally:
             self.depth -= 1
 
-    def entities(self, element: Element) -> list[Any]:
-        """The children of a <group> or <timer> as launch entities (launch._base
-        .FrontendEntity), for the action that holds them (GroupAction, TimerAction): each, when
-        reached, is checked and read by its tag's handler in the scope the action gives it."""
+    def deferred(self, child: Element, parent: str) -> Any:
+        """A child of a <group> or <timer> (``parent``) as a launch entity (launch._base
+        .FrontendEntity) for the action holding it: when reached, it is checked and read by its
+        tag's handler in the scope the action gives it."""
         from launch._base import FrontendEntity
 
-        def handle(child: Element, context: Any) -> None:
+        def handle(context: Any) -> None:
             scope = context.frontend_scope
-            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, element.tag)
+            _check_tag(child, allowed_tags(scope.fmt, "launch"), scope, parent)
             if self.enabled(child, scope):
                 TAGS[scope.fmt][child.tag].handler(self, child, scope)
 
-        return [FrontendEntity(functools.partial(handle, child), child.where)
-                for child in element.children]  # fmt: skip
+        return FrontendEntity(handle, child.where)
 
     def run_nested(self, action: Any, element: Element, scope: Scope) -> None:
         """run() for an action that holds entities: one level deeper (a recursion is refused)."""
@@ -685,9 +700,18 @@ class Resolver:
             self.nodes, self.messages, self.warnings + warnings, self.steps, self.containers
         )
 
-    def include(self, path: Path, given: dict[str, str], scope: Any) -> None:
-        """PlanSink.include: a file included by a Python file (IncludeLaunchDescription)."""
-        self.resolve_file(path, given, scope, strict=False)
+    def include(
+        self,
+        path: Path,
+        given: dict[str, str],
+        scope: Any,
+        where: str | None = None,
+        given_at: dict[str, str] | None = None,
+    ) -> None:
+        """PlanSink.include: IncludeLaunchDescription's file (any format), included at
+        ``where``; ``given_at``: where each argument was given (a front-end's <arg> lines,
+        checked and named in warnings as roslaunch and launch_xml users expect them)."""
+        self.resolve_file(path, given, scope, given_at is not None, where, given_at)
 
     def add_container(self, container: ContainerDecl) -> None:
         """PlanSink.add_container: planned and shown, not started (see finish())."""
@@ -721,12 +745,6 @@ class Resolver:
             return shlex.split(text)
         except ValueError as error:  # No closing quotation
             raise element.error(f"{name.replace('_', '-')}={text!r}: {error}") from None
-
-    def env_name(self, element: Element, scope: Scope) -> str:
-        name = self.text(element, "name", scope)
-        if not name or "=" in name or "\0" in name:
-            raise element.error(f"invalid environment variable name {name!r}")
-        return name
 
     def flag(self, element: Element, name: str, scope: Scope) -> bool:
         return to_bool(self.text(element, name, scope, "false"), element, f"{name!r}")
@@ -825,9 +843,6 @@ class Resolver:
         """A ROS 2 <arg>: DeclareLaunchArgument, its default performed only if no value was
         given or set before (ros2 launch keeps a value set before, even one let in from the
         including file, which is said once, here)."""
-        from launch.actions import DeclareLaunchArgument
-        from launch.substitutions import FrontendText
-
         if name in scope.given:
             scope.args[name] = scope.given[name]
         elif name in scope.inherited and name in scope.args:
@@ -837,21 +852,26 @@ class Resolver:
                 "file including this one (not passed to it), not its default; ros2 launch lets "
                 "it in (its includes are not scoped)"
             )
-        default = element.attrs.get("default")
-        choices = [self.text(child, "value", scope) for child in element.children]
-        action = DeclareLaunchArgument(
-            name,
-            default_value=None if default is None else FrontendText(default, element),
-            choices=choices or None,
-        )
-        self.run(action, element, scope)
+        self.run(self.parse(element), element, scope)
 
     @tag("ros2", "let", {"name", "value"})
-    def on_let(self, element: Element, scope: Scope) -> None:
-        from launch.actions import SetLaunchConfiguration
+    @tag("ros2", "log", {"message", "level"})
+    @tag("ros2", "set_env", {"name", "value"})
+    @tag("ros2", "unset_env", {"name"})
+    @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
+    @tag("ros2", "push_ros_namespace", {"namespace"})
+    @tag("ros2", "set_remap", {"from", "to"})
+    def on_exposed(self, element: Element, scope: Scope) -> None:
+        """A tag whose action is built by the parse method the action exposed for it
+        (launch.frontend, as ros2/launch's @expose_action): its one definition."""
+        self.run(self.parse(element), element, scope)
 
-        name, value = self.text(element, "name", scope), self.text(element, "value", scope)
-        self.run(SetLaunchConfiguration(name, value), element, scope)
+    def parse(self, element: Element) -> Any:
+        """``element``'s action, as launch.frontend's Parser builds it (if/unless were read
+        already: enabled()); the entities it holds are read when the action reaches them."""
+        action = LaunchParser(self, element.tag).build(Entity(element))
+        action.condition = None
+        return action
 
     @tag("ros1", "group", {"ns", "clear_params"}, marks={"ns", "clear_params"})
     def on_ros1_group(self, element: Element, scope: Scope) -> None:
@@ -860,112 +880,76 @@ class Resolver:
         self.resolve_scope(element, scope.child(namespace=ns))
 
     @tag("ros2", "group", {"scoped"}, marks={"scoped"})
-    def on_ros2_group(self, element: Element, scope: Scope) -> None:
-        from launch.actions import GroupAction
-
-        scoped = self.flag(element, "scoped", scope) or "scoped" not in element.attrs
-        self.run_nested(GroupAction(self.entities(element), scoped=scoped), element, scope)
-
-    @tag("ros2", "push_ros_namespace", {"namespace"})
-    def on_push_ros_namespace(self, element: Element, scope: Scope) -> None:
-        from launch_ros.actions import PushRosNamespace
-
-        self.run(PushRosNamespace(self.text(element, "namespace", scope)), element, scope)
+    @tag("ros2", "timer", {"period"})
+    def on_nested(self, element: Element, scope: Scope) -> None:
+        """GroupAction and TimerAction, built by their parse methods, one level deeper."""
+        self.run_nested(self.parse(element), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
          marks={"ns", "pass_all_args", "clear_params"})  # fmt: skip
-    @tag("ros2", "include", {"file"})
-    def on_include(self, element: Element, scope: Scope) -> None:
+    def on_ros1_include(self, element: Element, scope: Scope) -> None:
+        """roslaunch's <include>: a scope of its own (namespace, <env>), the included file
+        seeing only the arguments passed to it (all of them with pass_all_args)."""
         path = Path(self.text(element, "file", scope))
         if not path.is_absolute():  # relative to the including file, not the current directory
             path = scope.file.parent / path
-        pass_all = scope.fmt == "ros1" and self.flag(element, "pass_all_args", scope)
+        pass_all = self.flag(element, "pass_all_args", scope)
         self.clear_params(element, scope)
         given = dict(scope.args) if pass_all else {}
-        given_at = {}
+        given_at: dict[str, str] = {}
         inner = scope.child(pass_all=pass_all)  # what the included file starts with
-        allowed = {"arg": {"name", "value"}}
-        if scope.fmt == "ros1":  # roslaunch: an <env> in <include> is for the included nodes
-            allowed["env"] = {"name", "value"}
+        allowed = {"arg": {"name", "value"}, "env": {"name", "value"}}
         for child in element.children:
             _check_tag(child, allowed, scope, "include")
             if not self.enabled(child, scope):
                 continue
-            if child.tag == "env":
+            if child.tag == "env":  # roslaunch: an <env> in <include> is for the included nodes
                 self.on_env(child, inner)
                 continue
             name = self.text(child, "name", scope)
             given[name] = self.text(child, "value", scope)
-            given_at.setdefault(name, child)
+            given_at.setdefault(name, child.where)
         if "ns" in element.attrs:
             inner.namespace = self.namespace(element, "ns", scope)
         if not path.is_file():
             raise element.error(f"included file {path} does not exist")
-        # ROS 2: the including scope itself, which keeps what the included file sets
-        parent = scope if scope.fmt == "ros2" else inner
-        self.resolve_file(path, given, parent, not pass_all, element, given_at)
+        self.resolve_file(path, given, inner, not pass_all, element.where, given_at)
 
-    @tag("ros2", "log", {"message", "level"})
-    def on_log(self, element: Element, scope: Scope) -> None:
-        from launch.actions import LogInfo
-
-        self.run(LogInfo(msg=self.text(element, "message", scope)), element, scope)
-
-    @tag("ros2", "timer", {"period"})
-    def on_timer(self, element: Element, scope: Scope) -> None:
-        """<timer period="S">: its children happen S seconds after the timer itself."""
-        from launch.actions import TimerAction
-
-        period = self.number(element, "period", scope)
-        if period is None:
-            raise element.error("<timer> needs a 'period' in seconds")
-        timer = TimerAction(period=period, actions=self.entities(element))
-        self.run_nested(timer, element, scope)
+    @tag("ros2", "include", {"file"})
+    def on_ros2_include(self, element: Element, scope: Scope) -> None:
+        """IncludeLaunchDescription: its file and each <arg name value> performed when it
+        executes (ros2 launch does not scope an include: see resolve_file)."""
+        arguments_at = {}
+        for child in element.children:
+            _check_tag(child, {"arg": {"name", "value"}}, scope, "include")
+            arguments_at.setdefault(child.attrs.get("name", ""), child.where)
+        action = self.parse(element)
+        action.arguments_at = arguments_at
+        self.run(action, element, scope)
 
     # -- tags: what applies to nodes, in a scope or inside one <node> --------------------------
 
     @tag("ros1", "remap", {"from", "to"}, under={"launch", "node"})
-    @tag("ros2", "set_remap", {"from", "to"})
-    @tag("ros2", "remap", {"from", "to"}, under={"node", "composable_node"})
     def on_remap(self, element: Element, scope: Scope) -> None:
         names = []
         for side in ("from", "to"):
             written = name = self.text(element, side, scope)
-            if scope.fmt == "ros1" and name.startswith("~") and not name.startswith("~/"):
+            if name.startswith("~") and not name.startswith("~/"):
                 name = "~/" + name[1:]  # ROS 1's private ~name is ~/name in ROS 2
             if remap_problem(name, side):
                 raise element.error(remap_problem(written, side) or "")
             names.append(name)
-        if scope.fmt == "ros1":  # roslaunch: a later remap of the same name replaces the earlier
-            scope.remaps[:] = [remap for remap in scope.remaps if remap[0] != names[0]]
-            scope.remaps.append((names[0], names[1]))
-            return
-        from launch_ros.actions import SetRemap  # ROS 2: the action's one definition
-
-        self.run(SetRemap(names[0], names[1]), element, scope)
+        # roslaunch: a later remap of the same name replaces the earlier
+        scope.remaps[:] = [remap for remap in scope.remaps if remap[0] != names[0]]
+        scope.remaps.append((names[0], names[1]))
 
     @tag("ros1", "env", {"name", "value"}, under={"launch", "node"})
-    @tag("ros2", "set_env", {"name", "value"})
     @tag("ros2", "env", {"name", "value"}, under={"node", "executable"})
     def on_env(self, element: Element, scope: Scope) -> None:
         from launch.actions import SetEnvironmentVariable
 
-        name, value = self.env_name(element, scope), self.text(element, "value", scope)
+        name, value = self.text(element, "name", scope), self.text(element, "value", scope)
         self.run(SetEnvironmentVariable(name, value), element, scope)
-
-    @tag("ros2", "append_env", {"name", "value", "prepend", "separator"})
-    def on_append_env(self, element: Element, scope: Scope) -> None:
-        """Add to a variable of the environment the launch started with (or set before)."""
-        from launch.actions import AppendEnvironmentVariable
-
-        name = self.env_name(element, scope)
-        value = self.text(element, "value", scope)
-        prepend = self.text(element, "prepend", scope, "false").strip().lower()
-        if prepend not in ("true", "false", "1", "0", "yes", "no"):
-            raise element.error(f"'prepend' must be true or false, not {prepend!r}")
-        separator = self.text(element, "separator", scope, os.pathsep)
-        before = prepend in ("true", "1", "yes")  # launch_xml's own test writes "yes"
-        self.run(AppendEnvironmentVariable(name, value, before, separator), element, scope)
 
     @tag("ros2", "reset", set())
     def on_reset(self, element: Element, scope: Scope) -> None:
@@ -977,36 +961,43 @@ class Resolver:
         scope.args.clear()
         scope.args.update(kept)
 
-    @tag("ros2", "unset_env", {"name"})
-    def on_unset_env(self, element: Element, scope: Scope) -> None:
-        from launch.actions import UnsetEnvironmentVariable
-
-        self.run(UnsetEnvironmentVariable(self.env_name(element, scope)), element, scope)
-
     @tag("ros2", "set_parameter", {"name", "value"})
+    def on_set_parameter(self, element: Element, scope: Scope) -> None:
+        """SetParameter, for the nodes after it in its scope (said if none receives it)."""
+        self.on_exposed(element, scope)
+        self.set_parameters.append((scope.params[-1], element.where))
+
     @tag("ros2", "param", PARAM_ATTRS, under={"node", "composable_node"}, marks={"value_sep"})
-    def on_ros2_param(self, element: Element, scope: Scope, prefix: str = "") -> None:
-        """A node's parameter (or <set_parameter>), typed as launch_ros types it: by YAML, or by
-        its ``type``; ``value-sep`` makes a list; ``<param name="group">`` holds ``<param>``s."""
-        if "from" in element.attrs:  # a params file, checked now: the child would fail on it later
+    @tag("ros2", "remap", {"from", "to"}, under={"node", "composable_node"})
+    def on_node_part(self, element: Element, scope: Scope) -> None:
+        """Read by on_process() and composable_node() into their action's parameters and
+        remappings."""
+
+    def ros2_parameters(self, element: Element, scope: Scope, prefix: str = "") -> list[Any]:
+        """A <param> as launch_ros's Node takes its parameters: ``{name: value}``, typed as
+        launch_xml types it (by YAML, or by its ``type``; ``value-sep`` makes a list), or a
+        ParameterFile (``from``); ``<param name="group">`` holds ``<param>``s."""
+        from launch_ros.parameter_descriptions import ParameterFile
+
+        if "from" in element.attrs:
             path = Path(self.text(element, "from", scope))
             path = path if path.is_absolute() else scope.file.parent / path
-            if self.flag(element, "allow_substs", scope):
-                path = substituted_params_file(path, scope, element)
-            _check_params_file(element, path)
-            scope.params_files.append(str(path))
-            return
+            substs = self.flag(element, "allow_substs", scope)
+            parameter_file = ParameterFile(str(path), allow_substs=substs)
+            parameter_file.where = element.where
+            return [parameter_file]
         if "allow_substs" in element.attrs:
             raise element.error("allow_substs is for a parameters file (<param from=...>)")
         name = prefix + self.text(element, "name", scope)
         if element.children:  # a group of parameters: their names start with its own
             if {"value", "type"} & element.attrs.keys():
                 raise element.error("<param> holds either a value or <param>s, not both")
+            found = []
             for child in element.children:
                 _check_tag(child, {"param": PARAM_ATTRS - {"from"}}, scope, "param")
                 if self.enabled(child, scope):
-                    self.on_ros2_param(child, scope, name + ".")
-            return
+                    found += self.ros2_parameters(child, scope, name + ".")
+            return found
         if "value_sep" in element.attrs:  # each item substituted and typed on its own
             separator = element.attrs["value_sep"]
             items = element.attrs.get("value", "").split(separator) if separator else []
@@ -1014,11 +1005,24 @@ class Resolver:
         else:
             texts = self.text(element, "value", scope)
         value = _ros2_typed(texts, element.attrs.get("type"), element)
-        _check_params(element, None, name, value)
-        entry = (name, value)
-        scope.params.append(entry)
-        if element.tag == "set_parameter":
-            self.set_parameters.append((entry, element.where))
+        _check_params(element, None, name, value)  # at the <param>'s own line
+        return [{name: _as_typed(value)}]
+
+    def node_parts(self, element: Element, scope: Scope) -> tuple[list[Any], list[Any]]:
+        """The parameters and remappings a ROS 2 <node> or <composable_node> gives its action
+        (its <param> and <remap> children; the others are read in the node's scope)."""
+        parameters: list[Any] = []
+        remappings: list[tuple[str, str]] = []
+        for child in element.children:
+            if child.tag == "param" and self.enabled(child, scope):
+                parameters += self.ros2_parameters(child, scope)
+            elif child.tag == "remap" and self.enabled(child, scope):
+                pair = (self.text(child, "from", scope), self.text(child, "to", scope))
+                for name, side in zip(pair, ("from", "to"), strict=True):
+                    if remap_problem(name, side):  # at its own line (launch_ros checks it too)
+                        raise child.error(remap_problem(name, side) or "")
+                remappings.append(pair)
+        return parameters, remappings
 
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
@@ -1153,53 +1157,59 @@ class Resolver:
          marks={"exec", "namespace"})  # fmt: skip
     @tag("ros2", "load_composable_node", {"target"})
     def on_container(self, element: Element, scope: Scope) -> None:
-        """A component container with its components, or components for one (``target``)."""
-        if element.tag == "load_composable_node":
-            name = self.text(element, "target", scope)
-            package = executable = None
-        else:
-            package, executable = (
-                self.text(element, "pkg", scope),
-                self.text(element, "exec", scope),
-            )
-            namespace = scope.namespace
-            if "namespace" in element.attrs:
-                namespace = self.namespace(element, "namespace", scope)
-            name = join_namespace(namespace, self.text(element, "name", scope))
-        container = ContainerDecl(element.where, name, package, executable)
+        """ComposableNodeContainer with its components, or LoadComposableNodes for one
+        (``target``)."""
+        from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
+
+        nodes = []
         for child in element.children:
             _check_tag(child, allowed_tags("ros2", "node_container"), scope, element.tag)
             if self.enabled(child, scope):
-                container.components.append(self.composable_node(child, scope))
-        self.add_container(container)
+                nodes.append(self.composable_node(child, scope))
+        action: Any
+        if element.tag == "load_composable_node":
+            target = self.text(element, "target", scope)
+            action = LoadComposableNodes(
+                composable_node_descriptions=nodes, target_container=target
+            )
+        else:
+            action = ComposableNodeContainer(
+                package=self.text(element, "pkg", scope),
+                executable=self.text(element, "exec", scope),
+                name=self.text(element, "name", scope),
+                namespace=self.text(element, "namespace", scope, ""),
+                arguments=self.words(element, "args", scope),
+                output=self.text(element, "output", scope, "log"),
+                composable_node_descriptions=nodes,
+            )
+        self.run(action, element, scope)
 
     @tag(
         "ros2", "composable_node", {"pkg", "plugin", "name", "namespace"}, under={"node_container"}
     )
-    def composable_node(self, element: Element, scope: Scope) -> ComponentDecl:
-        namespace = scope.namespace
-        if "namespace" in element.attrs:
-            namespace = self.namespace(element, "namespace", scope)
-        inner = scope.child(in_node=True)
+    def composable_node(self, element: Element, scope: Scope) -> Any:
+        """launch_ros's ComposableNode, for the container's action."""
+        from launch_ros.descriptions import ComposableNode
+
         extra = []
         for child in element.children:
             _check_tag(child, allowed_tags("ros2", "composable_node"), scope, element.tag)
-            if not self.enabled(child, scope):
-                continue
-            if child.tag == "extra_arg":
-                extra.append((self.text(child, "name", scope), self.text(child, "value", scope)))
-            else:
-                TAGS["ros2"][child.tag].handler(self, child, inner)
-        return ComponentDecl(
-            element.where,
-            self.text(element, "pkg", scope),
-            self.text(element, "plugin", scope),
-            self.text(element, "name", scope, "") or None,
-            namespace,
-            inner.remaps,
-            inner.params,
-            extra,
+            if child.tag == "extra_arg" and self.enabled(child, scope):
+                extra.append({self.text(child, "name", scope): self.text(child, "value", scope)})
+        parameters, remappings = self.node_parts(element, scope)
+        node = ComposableNode(
+            package=self.text(element, "pkg", scope),
+            plugin=self.text(element, "plugin", scope),
+            name=self.text(element, "name", scope, "") or None,
+            namespace=(
+                self.text(element, "namespace", scope) if "namespace" in element.attrs else None
+            ),
+            parameters=parameters,
+            remappings=remappings,
+            extra_arguments=extra,
         )
+        node.where = element.where
+        return node
 
     @tag("ros2", "extra_arg", {"name", "value"}, under={"composable_node"})
     def on_extra_arg(self, element: Element, scope: Scope) -> None:
@@ -1283,55 +1293,34 @@ class Resolver:
         node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
             scope.child(in_node=True))  # fmt: skip
         self.resolve_children(element, node_scope, element.tag)
-        if not ros1:  # launch_ros's Node or launch's ExecuteProcess, in the node's own scope
-            from launch.actions import ExecuteProcess, Shutdown
-            from launch_ros.actions import Node
+        # launch_ros's Node or launch's ExecuteProcess, in the node's own scope (both formats)
+        from launch.actions import ExecuteProcess, Shutdown
+        from launch_ros.actions import Node
 
-            process: dict[str, Any] = {
-                "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
-                "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
-                "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
-                "cwd": cwd, "on_exit": Shutdown() if required else None,
-            }  # fmt: skip
-            if cmd is not None:
-                action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
-            else:
-                action = Node(
-                    package=package, executable=executable, name=name,
-                    namespace=namespace if ns_attr in element.attrs else None,
-                    exec_name=self.text(element, "exec_name", scope, "") or None,
-                    arguments=args, ros_arguments=ros_args, **process,
-                )  # fmt: skip
-            self.run(action, element, node_scope)
-            return
-        node = NodeDecl(
-            element.where,
-            package=package,
-            executable=executable,
-            cmd=cmd,
-            name=name,
-            namespace=namespace,
-            args=args,
-            ros_args=ros_args,
-            remaps=node_scope.remaps,
-            params=node_scope.params,
-            params_files=node_scope.params_files,
-            env=node_scope.env,
-            output=output,
-            respawn=respawn,
-            respawn_delay=respawn_delay,
-            respawn_max_retries=DEFAULT_RESPAWN_MAX_RETRIES if retries is None else retries,
-            required=required,
-            sigterm_timeout=sigterm_timeout,
-            sigkill_timeout=sigkill_timeout,
-            launch_prefix=launch_prefix,
-            cwd=cwd,
-            when=scope.when,
-            label=self.text(element, "exec_name", scope, "") or None,  # its output prefix
-        )
-        self.add_node(node)
+        process: dict[str, Any] = {
+            "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
+            "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
+            "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
+            "cwd": cwd, "on_exit": Shutdown() if required else None,
+        }  # fmt: skip
+        if cmd is not None:
+            action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
+        else:
+            # ROS 1: the node's namespace is absolute already (its scope's is its private one,
+            # where its <param>s went); its parameters come from the parameter server at the
+            # end (finish()), its remaps are its scope's (the last of a name won).
+            parameters, remappings = ([], []) if ros1 else self.node_parts(element, scope)
+            given_ns = ros1 or ns_attr in element.attrs
+            action = Node(
+                package=package, executable=executable, name=name,
+                namespace=namespace if given_ns else None,
+                exec_name=self.text(element, "exec_name", scope, "") or None,
+                parameters=parameters, remappings=remappings,
+                arguments=args, ros_arguments=ros_args, **process,
+            )  # fmt: skip
+        self.run(action, element, node_scope)
         if ros1:
-            self.ros1_nodes.append(node)
+            self.ros1_nodes.append(self.nodes[-1])
 
 
 def resolve(path: Path, args: dict[str, str], options: Options | None = None) -> Launch:

@@ -58,7 +58,7 @@ from pathlib import Path
 from typing import IO, ClassVar
 
 from launcher import LaunchError, guardian
-from launcher.declarations import Step
+from launcher.declarations import Step, shown_line
 from launcher.plan import ProcessSpec, program_path
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults
@@ -483,7 +483,7 @@ class Supervisor:
             if len(held) >= MAX_TRACEBACK_LINES:
                 self._flush_held(child, screen, held)
             return
-        self.show(f"[{child.name}] {line}", screen)
+        self.show(shown_line(child.spec.output_format, child.name, line), screen)
 
     def _flush_held(self, child: Child, screen: IO[str], held: list[str]) -> None:
         """A child that gets the launcher's SIGINT without a handler for it (still starting or

@@ -459,9 +459,13 @@ def generate_launch_description():
     ])
 """,
     )
-    warnings = resolve(path, {}, Options()).warnings
-    assert any(":6: output_format is not used" in w for w in warnings)
-    assert any(":7: TimerAction(cancel_on_shutdown=False)" in w for w in warnings)
+    launch = resolve(path, {}, Options())
+    assert launch.nodes[0].output_format == "{line}"  # honoured: the supervisor formats lines
+    assert not any("output_format" in w for w in launch.warnings)
+    assert any(":7: TimerAction(cancel_on_shutdown=False)" in w for w in launch.warnings)
+    bad = path.read_text().replace("'{line}'", "'{line} {nme}'")
+    with pytest.raises(LaunchError, match=r":6: output_format '\{line\} \{nme\}' cannot be"):
+        resolve(write(tmp_path, "bad.launch.py", bad), {}, Options())
     text = path.read_text().replace("cancel_on_shutdown=False", "cancel_on_shutdwn=False")
     with pytest.raises(LaunchError) as raised:  # a misspelt keyword is the file's own error
         resolve(write(tmp_path, "t.launch.py", text), {}, Options())

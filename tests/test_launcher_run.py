@@ -305,6 +305,20 @@ def test_log_output_goes_to_the_log_folder_and_stderr_to_the_screen(node_process
     )
 
 
+def test_output_format_is_how_each_line_is_shown(node_process, tmp_path):
+    # ros2 launch's ExecuteProcess(output_format=...): str.format with {line} and {this...}
+    ok = script(tmp_path, "ok", "print('fine')\n")
+    py = (
+        "from launch import LaunchDescription\nfrom launch.actions import ExecuteProcess\n"
+        "def generate_launch_description():\n    return LaunchDescription([ExecuteProcess(\n"
+        f"        cmd={ok.split()!r}, name='ok', output='screen',\n"
+        "        output_format='{line} <- {this.process_description.final_name}')])\n"
+    )
+    launcher = node_process("-m", "launcher", launch_file(tmp_path, py, "test.launch.py"))
+    assert launcher.wait() == 0
+    assert "fine <- ok" in launcher.lines and "[ok] fine" not in launcher.output
+
+
 def test_clean_launch_exits_0(node_process, tmp_path):
     ok = script(tmp_path, "ok", "print('fine')\n")
     launcher = node_process(
