@@ -14,6 +14,7 @@ import argparse
 from ros2cmd.param.verb import delete, describe, dump, get, load
 from ros2cmd.param.verb import list as list_verb
 from ros2cmd.param.verb import set as set_verb
+from ros2cmd.sub_verbs import add_sub_verbs
 
 # `ros2 param -h` lists them in this order.
 SUB_VERBS = {
@@ -30,7 +31,4 @@ SUB_VERBS = {
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     parser = verbs.add_parser("param", help="Various param related sub-commands")
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
-    for name, module in SUB_VERBS.items():
-        p = sub.add_parser(name, parents=[common], help=module.HELP)
-        p.set_defaults(run=module.main)
-        module.add_arguments(p)
+    add_sub_verbs(sub, SUB_VERBS, parents=[common])

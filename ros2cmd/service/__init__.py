@@ -13,6 +13,7 @@ import argparse
 from ros2cmd.service.verb import call, echo, find, info
 from ros2cmd.service.verb import list as list_verb
 from ros2cmd.service.verb import type as type_verb
+from ros2cmd.sub_verbs import add_sub_verbs
 
 # `ros2 service -h` lists them in this order.
 SUB_VERBS = {
@@ -35,7 +36,4 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         help="Consider hidden services as well",
     )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for name, module in SUB_VERBS.items():
-        p = sub.add_parser(name, parents=[common], help=module.HELP)
-        p.set_defaults(run=module.main)
-        module.add_arguments(p)
+    add_sub_verbs(sub, SUB_VERBS, parents=[common])

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd.sub_verbs import add_sub_verbs
 from ros2cmd.topic.verb import bw, delay, echo, find, hz, info, pub
 from ros2cmd.topic.verb import list as list_verb
 from ros2cmd.topic.verb import type as type_verb
@@ -44,16 +45,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         dest="command",
         title="Commands",
         description="".join(
-            f"{name.ljust(width)}  {module.DESCRIPTION}\n" for name, module in SUB_VERBS.items()
+            f"{name.ljust(width)}  {module.HELP}\n" for name, module in SUB_VERBS.items()
         ),
         metavar="Call `ros2 topic <command> -h` for more detailed usage.",
     )
     parser.set_defaults(offline=True, run=lambda _graph, _args: parser.print_help())
-    for name, module in SUB_VERBS.items():
-        p = sub.add_parser(
-            name,
-            description=module.DESCRIPTION,
-            formatter_class=argparse.RawDescriptionHelpFormatter,
-        )
-        p.set_defaults(run=module.main, offline=False)
-        module.add_arguments(p)
+    add_sub_verbs(sub, SUB_VERBS, listed_in_description=True)

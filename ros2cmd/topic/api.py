@@ -9,7 +9,7 @@ import math
 import sys
 import time
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from rclpy.executors import ExternalShutdownException
@@ -110,6 +110,16 @@ def filter_expression(expression: str | None) -> Callable[[Any], bool] | None:
             raise ToolError(f"--filter {expression!r}: {type(error).__name__}: {error}") from None
 
     return keep
+
+
+def every_second(graph: Graph) -> Iterator[None]:
+    """Spins the graph, and comes back once a second (bw's and delay's reports), for ever."""
+    next_report = time.monotonic() + 1.0
+    while True:
+        graph.spin_once(min(0.1, max(0.0, next_report - time.monotonic())))
+        if time.monotonic() >= next_report:
+            next_report += 1.0
+            yield
 
 
 class OtherType:
@@ -226,6 +236,15 @@ def add_graph_options(parser: argparse.ArgumentParser, timeout_help: str | None 
         "--no-daemon", action="store_true", help="Do not spawn nor use an already running daemon"
     )
     parser.set_defaults(timeout_given=False)
+
+
+def add_count_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "-c",
+        "--count-topics",
+        action="store_true",
+        help="Only display the number of topics discovered",
+    )
 
 
 def add_hidden_option(parser: argparse.ArgumentParser) -> None:

@@ -7,10 +7,10 @@ import time
 from collections import deque
 
 from ros2cmd.graph import Graph, absolute_name, until_stopped
-from ros2cmd.topic.api import add_graph_options, subscribe_when_known
+from ros2cmd.topic.api import add_graph_options, every_second, subscribe_when_known
 from ros_tutorials_common.cli import positive_int
 
-DESCRIPTION = "Display bandwidth used by topic"
+HELP = "Display bandwidth used by topic"
 BW_WINDOW = 100  # messages, as ros2topic bw
 
 
@@ -35,12 +35,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
             graph, topic, lambda raw: arrivals.append((time.time_ns(), len(raw))), raw=True
         )
         print(f"Subscribed to [{topic}]", flush=True)
-        next_report = time.monotonic() + 1.0
-        while True:
-            graph.spin_once(min(0.1, max(0.0, next_report - time.monotonic())))
-            if time.monotonic() < next_report:
-                continue
-            next_report += 1.0
+        for _ in every_second(graph):
             if len(arrivals) >= 2:
                 print(_bandwidth(list(arrivals), time.time_ns()), flush=True)
 

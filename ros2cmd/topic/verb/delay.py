@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import time
 from collections import deque
 from typing import Any
 
@@ -12,11 +11,17 @@ from rclpy.time import Time
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
-from ros2cmd.topic.api import HZ_WINDOW, add_graph_options, single_type, subscribe_when_known
+from ros2cmd.topic.api import (
+    HZ_WINDOW,
+    add_graph_options,
+    every_second,
+    single_type,
+    subscribe_when_known,
+)
 from ros2cmd.typenames import full_type_name
 from ros_tutorials_common.cli import positive_int
 
-DESCRIPTION = "Display delay of topic from timestamp in header"
+HELP = "Display delay of topic from timestamp in header"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -46,12 +51,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
         if "header" not in msg_type.get_fields_and_field_types():
             raise ToolError(f"msg does not have header: {full_type_name(msg_type)} has none")
         subscribe_when_known(graph, topic, on_message, raw=False)
-        next_report = time.monotonic() + 1.0
-        while True:
-            graph.spin_once(min(0.1, max(0.0, next_report - time.monotonic())))
-            if time.monotonic() < next_report:
-                continue
-            next_report += 1.0
+        for _ in every_second(graph):
             if not delays:
                 continue
             if not new[0]:

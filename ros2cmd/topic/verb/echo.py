@@ -26,7 +26,7 @@ from ros2cmd.topic.api import (
 )
 from ros2cmd.typenames import full_type_name
 
-DESCRIPTION = "Output messages from a topic"
+HELP = "Output messages from a topic"
 TRUNCATE_LENGTH = 128  # strings and arrays longer than this end in '...'
 
 

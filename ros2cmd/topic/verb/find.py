@@ -5,10 +5,15 @@ from __future__ import annotations
 import argparse
 
 from ros2cmd.graph import Graph
-from ros2cmd.topic.api import add_graph_options, add_hidden_option, names_and_types
+from ros2cmd.topic.api import (
+    add_count_option,
+    add_graph_options,
+    add_hidden_option,
+    names_and_types,
+)
 from ros2cmd.typenames import full_type_name, load_type
 
-DESCRIPTION = "Output a list of available topics of a given type"
+HELP = "Output a list of available topics of a given type"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -16,12 +21,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "topic_type", help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')"
     )
-    parser.add_argument(
-        "-c",
-        "--count-topics",
-        action="store_true",
-        help="Only display the number of topics discovered",
-    )
+    add_count_option(parser)
     add_hidden_option(parser)
     add_graph_options(parser)
 

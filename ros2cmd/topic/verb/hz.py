@@ -15,7 +15,7 @@ from ros2cmd.topic.api import (
 )
 from ros_tutorials_common.cli import positive_int
 
-DESCRIPTION = "Print the average publishing rate to screen"
+HELP = "Print the average publishing rate to screen"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

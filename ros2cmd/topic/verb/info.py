@@ -10,7 +10,7 @@ from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.topic.api import add_graph_options, names_and_types, node_names_known, wait_for_types
 
-DESCRIPTION = "Print information about a topic"
+HELP = "Print information about a topic"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

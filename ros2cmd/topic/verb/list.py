@@ -5,9 +5,14 @@ from __future__ import annotations
 import argparse
 
 from ros2cmd.graph import Graph
-from ros2cmd.topic.api import add_graph_options, add_hidden_option, names_and_types
+from ros2cmd.topic.api import (
+    add_count_option,
+    add_graph_options,
+    add_hidden_option,
+    names_and_types,
+)
 
-DESCRIPTION = "Output a list of available topics"
+HELP = "Output a list of available topics"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -15,12 +20,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the topic type"
     )
-    parser.add_argument(
-        "-c",
-        "--count-topics",
-        action="store_true",
-        help="Only display the number of topics discovered",
-    )
+    add_count_option(parser)
     add_hidden_option(parser)
     parser.add_argument(
         "-v", "--verbose", action="store_true", help="List full details about each topic"

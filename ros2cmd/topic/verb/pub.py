@@ -23,7 +23,7 @@ from ros2cmd.wait import spin_until
 from ros_tutorials_common.bounded import InputError, read_text
 from ros_tutorials_common.cli import positive_rate, positive_seconds
 
-DESCRIPTION = "Publish a message to a topic"
+HELP = "Publish a message to a topic"
 WAIT_PERIOD = 0.1  # s between looks for matching subscriptions (-w)
 
 

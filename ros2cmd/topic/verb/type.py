@@ -7,7 +7,7 @@ import argparse
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.topic.api import add_graph_options, wait_for_types
 
-DESCRIPTION = "Print a topic's type"
+HELP = "Print a topic's type"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
