@@ -1,5 +1,8 @@
 """The ROS graph as the command-line tools see it: one hidden node, and waiting that is bounded.
 
+(About 500 lines, one subject: the Graph's waits and the complete snapshot they lead to are
+read together; discovery.py and local_participants.py hold what they ask.)
+
 Every command starts one node (its name begins with ``_`` so ``node list`` hides it, as
 ros2cli hides its own) and asks the graph. DDS discovery is asynchronous: a node that
 is already running shows up in a new process after a few milliseconds, or after the
