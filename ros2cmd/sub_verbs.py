@@ -8,6 +8,16 @@ import argparse
 from types import ModuleType
 
 
+def add_count_option(parser: argparse.ArgumentParser, things: str) -> None:
+    """ros2cli's -c of the lists (`--count-topics`, `--count-services`)."""
+    parser.add_argument(
+        "-c",
+        f"--count-{things}",
+        action="store_true",
+        help=f"Only display the number of {things} discovered",
+    )
+
+
 def add_sub_verbs(
     sub: argparse._SubParsersAction,
     sub_verbs: dict[str, ModuleType],

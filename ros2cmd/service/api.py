@@ -44,15 +44,6 @@ def add_hidden_option(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def add_count_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument(
-        "-c",
-        "--count-services",
-        action="store_true",
-        help="Only display the number of services discovered",
-    )
-
-
 def with_hidden(args: argparse.Namespace) -> bool:
     """--include-hidden-services, given before the sub-verb or after it."""
     return args.hidden_before or getattr(args, "include_hidden_services", False)

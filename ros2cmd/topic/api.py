@@ -238,15 +238,6 @@ def add_graph_options(parser: argparse.ArgumentParser, timeout_help: str | None 
     parser.set_defaults(timeout_given=False)
 
 
-def add_count_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument(
-        "-c",
-        "--count-topics",
-        action="store_true",
-        help="Only display the number of topics discovered",
-    )
-
-
 def add_hidden_option(parser: argparse.ArgumentParser) -> None:
     """--include-hidden-topics after the sub-verb too; SUPPRESS keeps the value given before
     it (`ros2 topic --include-hidden-topics list`)."""

@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 
 from ros2cmd.graph import Graph
-from ros2cmd.service.api import add_count_option, add_hidden_option, service_types, with_hidden
+from ros2cmd.service.api import add_hidden_option, service_types, with_hidden
+from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.typenames import full_type_name, load_type
 
 HELP = "Output a list of available services of a given type"
@@ -15,7 +16,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "service_type", help="Name of the ROS service type (e.g. 'std_srvs/srv/Empty')"
     )
-    add_count_option(parser)
+    add_count_option(parser, "services")
     add_hidden_option(parser)
     parser.set_defaults(daemon=True)
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 
 from ros2cmd.graph import Graph
+from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.topic.api import (
-    add_count_option,
     add_graph_options,
     add_hidden_option,
     names_and_types,
@@ -21,7 +21,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "topic_type", help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')"
     )
-    add_count_option(parser)
+    add_count_option(parser, "topics")
     add_hidden_option(parser)
     add_graph_options(parser)
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 
 from ros2cmd.graph import Graph
+from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.topic.api import (
-    add_count_option,
     add_graph_options,
     add_hidden_option,
     names_and_types,
@@ -20,7 +20,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the topic type"
     )
-    add_count_option(parser)
+    add_count_option(parser, "topics")
     add_hidden_option(parser)
     parser.add_argument(
         "-v", "--verbose", action="store_true", help="List full details about each topic"
