@@ -1,7 +1,7 @@
 """`ros2 VERB COMMAND ...`: the command line, and how every command runs and fails.
 
 The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
-in its own module or package (topic/, service.py, ...) and registers its commands here;
+in its own package or module (topic/, node.py, ...) and registers its commands here;
 `ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
 entry.py before this module loads rclpy. A command is a function of the
 graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
