@@ -22,6 +22,7 @@ from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
 from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
+from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.typenames import full_type_name, load_type
 from ros2cmd.wait import Interrupted, ServerLost, spin_until
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
@@ -254,12 +255,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the action type"
     )
-    p.add_argument(
-        "-c",
-        "--count-actions",
-        action="store_true",
-        help="Only display the number of actions discovered",
-    )
+    add_count_option(p, "actions")
     p.set_defaults(
         daemon=True, run=lambda graph, a: list_actions(graph, a.show_types, a.count_actions)
     )

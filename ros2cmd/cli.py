@@ -1,8 +1,9 @@
 """`ros2 VERB COMMAND ...`: the command line, and how every command runs and fails.
 
 The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
-in its own module (topic.py, service.py, ...) and registers its commands here; `ros2 launch`
-is the launcher's own command line (launcher/__main__.py). A command is a function of the
+in its own package or module (topic/, node.py, ...) and registers its commands here;
+`ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
+entry.py before this module loads rclpy. A command is a function of the
 graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
 a bad name prints one line and exits 1, Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the
 verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with a rate or latched), for which it
@@ -59,7 +60,8 @@ def common_options() -> argparse.ArgumentParser:
 VERBS_WITH_COMMANDS = frozenset(
     {"action", "bag", "daemon", "interface", "node", "param", "pkg", "service", "topic"}
 )
-# `ros2 launch` is the launcher: its own parser, options and process (see main()).
+# `ros2 launch` is the launcher: its own parser, options and process (entry.py hands it over;
+# here it is only its line in `ros2 -h`).
 LAUNCH_HELP = "Run a launch file"
 
 
@@ -170,10 +172,6 @@ def _execute(
 
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
-    if words[:1] == ["launch"]:
-        from launcher.__main__ import main as launch
-
-        return launch(words[1:], program="ros2 launch", standalone=argv is None)
     parser = build_parser()
     if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
         # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.

@@ -1,8 +1,8 @@
 """The `ros2` console script: `ros2 launch ...` goes to the launcher before anything loads rclpy.
 
-The launcher does not use rclpy; a process that had loaded it (and Fast DDS with it) without
-using it ended with a segmentation fault in 2 of 3 runs after Ctrl-C stopped a launch, in C++
-code run at exit. Every other verb is ros2cmd.cli's.
+The launcher does not use rclpy, and a launch must not load it: a process that loaded rclpy
+(and Fast DDS with it) without using it can crash in Fast DDS's exit code after a Ctrl-C
+(docs/dev/limits.md). Every other verb is ros2cmd.cli's.
 """
 
 from __future__ import annotations

@@ -1,5 +1,8 @@
 """The ROS graph as the command-line tools see it: one hidden node, and waiting that is bounded.
 
+(About 500 lines, one subject: the Graph's waits and the complete snapshot they lead to are
+read together; discovery.py and local_participants.py hold what they ask.)
+
 Every command starts one node (its name begins with ``_`` so ``node list`` hides it, as
 ros2cli hides its own) and asks the graph. DDS discovery is asynchronous: a node that
 is already running shows up in a new process after a few milliseconds, or after the
@@ -14,7 +17,7 @@ its announcement period (0.25 s here) has passed since ours started (we wait fiv
 five after the last participant found: participants are not visible through ROS); or, where
 the machine can say which processes hold one (local_participants.py), as soon as each of them
 has been heard from, however long its own period (a plain rclpy node without this project's
-profile announces every 3 s, and a newcomer misses its first answer in about 2 runs of 5); each
+profile announces every 3 s, and a newcomer may miss its first answer and wait for the next); each
 participant's ``ros_discovery_info`` (discovery.py) says which nodes it holds and which
 readers and writers each node has; the graph is complete when every participant seen has sent it and
 every node and endpoint it names is in our graph. ``snapshot()`` then gives every tool the
@@ -72,7 +75,7 @@ def _default_timeout() -> float:
 
 
 DEFAULT_TIMEOUT = _default_timeout()  # how long a command waits for the thing it names to appear
-MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete (load: 7 s seen)
+MAX_SETTLE_TIME = 10.0  # the most a listing waits for discovery to complete
 POLL_PERIOD = 0.02  # how often a wait looks for what it waits for, at first (wait_for)
 # How often settle() looks for new participants: against an announcement period of 0.25 s,
 # finding one up to 0.05 s later changes nothing, and each look costs CPU.
@@ -270,8 +273,8 @@ class Graph(VisibleNames):
         From then on a Ctrl-C (the user answering the printed line, however late the
         process gets the CPU back) does not make the command "interrupted" (130): its exit
         status stays 0 (see cli.execute). The counterpart of until_stopped. Ctrl-C is ignored
-        from here on, before the answer is printed: a Ctrl-C that came between the printed
-        answer and cli.execute's own decision ended the command with 130 (seen under load).
+        from here on, before the answer is printed: a Ctrl-C between the printed answer and
+        cli.execute's own decision must not end the command with 130.
         """
         self.finished = True
         if threading.current_thread() is threading.main_thread():
@@ -306,12 +309,11 @@ class Graph(VisibleNames):
             spin_until(self.executor, lambda: False, self.spin_time, period=SETTLE_POLL_PERIOD)
             return
         # Participant discovery itself is not visible through ROS; what bounds it is the
-        # running participants' announcement period. Five of them: on a loaded 2-core
-        # machine (load 13) an announcement and the endpoint exchange after it took up to
-        # 0.7 s, and three periods missed one in 20. Participants found in one run arrive
-        # spread out (up to 0.6 s apart seen), so the
-        # same wait also follows the last participant found; on a busy machine, where they
-        # arrive further apart, it is 1.5 times the longest gap between two arrivals.
+        # running participants' announcement period: ANNOUNCEMENTS of them, which leaves room
+        # for a loaded machine (docs/dev/limits.md). Participants found in one run arrive
+        # spread out, so the same wait also follows the last participant found; on a busy
+        # machine, where they arrive further apart, it is 1.5 times the longest gap between
+        # two arrivals.
         period = announcement_period() * ANNOUNCEMENTS + 0.05
         all_announced = self.started + period
         participants = self.participants()
@@ -343,8 +345,8 @@ class Graph(VisibleNames):
             elif expected is not None and now >= next_count:
                 # Someone counted is still unheard after our profile's periods: a participant
                 # that announces less often. A plain rclpy node (Fast DDS's default, every
-                # 3 s) misses its first exchange with a newcomer in about 2 runs of 5 and is
-                # heard only at its next announcement: keep waiting for it, unless its
+                # 3 s) may miss its first exchange with a newcomer and be heard only at its
+                # next announcement: keep waiting for it, unless its
                 # process has ended meanwhile (counted again now and then).
                 recount = local_participants(domain_id)
                 if recount is not None:

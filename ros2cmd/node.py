@@ -22,6 +22,7 @@ from rclpy.action.graph import (
 )
 
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
+from ros2cmd.sub_verbs import add_count_option
 
 # What `ros2 node list` and `ros2 node info` print (to stderr) for nodes of one name.
 DUPLICATES_WARNING = (
@@ -89,12 +90,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("list", parents=[common], help="Output a list of available nodes")
     p.add_argument("-a", "--all", action="store_true", help="Display all nodes even hidden ones")
-    p.add_argument(
-        "-c",
-        "--count-nodes",
-        action="store_true",
-        help="Only display the number of nodes discovered",
-    )
+    add_count_option(p, "nodes")
     p.set_defaults(daemon=True, run=lambda graph, a: list_nodes(graph, a.all, a.count_nodes))
 
     p = sub.add_parser("info", parents=[common], help="Output information about a node")

@@ -252,11 +252,6 @@ def load_yaml(text: str, source: str = "YAML") -> Any:
         loader.dispose()
 
 
-def load_yaml_file(path: str | os.PathLike) -> Any:
-    """A YAML file, read and parsed within the limits."""
-    return load_yaml(read_text(path), str(path))
-
-
 def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
     """A ROS 2 params file, read within the limits and checked before anything uses it:
     {node name: {"ros__parameters": {...}}}, one entry per node name in the file's order.

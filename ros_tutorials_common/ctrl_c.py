@@ -7,12 +7,11 @@ a Ctrl-C prints Python's own KeyboardInterrupt traceback, as it does for any ROS
 are closed:
 
 - Python raises KeyboardInterrupt in whatever Python code runs at that instant. Raised in code
-  that C calls and whose errors C drops, it is gone: a `rostopic echo` waiting for its topic ran
-  on for the whole wait (seen once in about 700 Ctrl-C's under load). The handler counts
-  presses, and ``ros2cmd.wait.spin_until`` raises KeyboardInterrupt when the count changed.
+  that C calls and whose errors C drops, it is gone. So the handler counts presses, and
+  ``ros2cmd.wait.spin_until`` raises KeyboardInterrupt when the count changed.
 - Raised inside a ``__del__`` (rclpy's Future and Task have one; the executor drops one per
-  callback), Python reports it as unraisable and runs on (`rostopic echo` ignored a Ctrl-C for
-  30 s under load). The unraisable hook delivers it again, a moment later.
+  callback), Python reports it as unraisable and runs on. The unraisable hook delivers it
+  again, a moment later.
 
 The same hook says nothing of an rclpy object whose ``__init__`` a Ctrl-C cut short (its
 ``__del__`` fails on a missing attribute: "Exception ignored in: <function Future.__del__>").
@@ -36,8 +35,8 @@ CONVERSION_FAILED = "Unable to convert call argument"
 
 presses = 0  # Ctrl-C presses seen since count_presses()
 # The presses whose KeyboardInterrupt a redelivery has raised (the hook, or ros2cmd.wait's
-# count): a press is delivered again once, not by both (a running `rostopic echo` ended
-# normally by the first, then 130 by the second; seen once under make test-load).
+# count): a press is delivered again once, not by both (one press must not end a command
+# twice: normally, then as interrupted).
 delivered = 0
 
 

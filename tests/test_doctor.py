@@ -55,7 +55,7 @@ def network_warnings() -> list[str]:
 def warnings_of(stderr: str) -> list[str]:
     """The messages of the UserWarning lines; every line of stderr must be one."""
     lines = stderr.strip().splitlines()
-    pattern = re.compile(r"^/\S+doctor\.py: \d+: UserWarning: (.*)$")
+    pattern = re.compile(r"^/\S+/ros2cmd/doctor/\S+\.py: \d+: UserWarning: (.*)$")
     for line in lines:
         assert pattern.match(line), f"not a UserWarning line: {line!r}\n{stderr}"
     return [pattern.match(line).group(1) for line in lines]

@@ -106,7 +106,7 @@ def test_ros2_param_set_sends_an_unquoted_date_as_its_text():
     or a list of one of those is the text typed (a params file's date is refused, below)."""
     from rcl_interfaces.msg import ParameterType
 
-    from ros2cmd.param import typed_value
+    from ros2cmd.param.verb.set import typed_value
 
     value = typed_value("when", "2024-01-01")
     assert (value.type, value.string_value) == (ParameterType.PARAMETER_STRING, "2024-01-01")

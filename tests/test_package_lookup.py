@@ -12,7 +12,7 @@ import pytest
 from helpers import fails, ok
 
 from launcher.expressions import BUILTINS, MATH, evaluate
-from ros2cmd import pkg
+from ros2cmd.pkg import api as pkg
 from ros_tutorials_common import ament, packages
 
 

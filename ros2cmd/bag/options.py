@@ -1,4 +1,4 @@
-"""What both spellings of the bag commands share: `ros2 bag ...` (ros2.py) and ROS 1's
+"""What both spellings of the bag commands share: `ros2 bag ...` (ros2/) and ROS 1's
 `rosbag ...` (ros2cmd/ros1/rosbag.py) take the same durations, offsets and this project's own
 options, run play the same way, and have the same `reindex`.
 

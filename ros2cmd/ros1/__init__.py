@@ -2,8 +2,9 @@
 tool: the same functions run, with ROS 1's arguments and output where ROS 1 differs.
 
     rostopic.py, rosservice.py, rosparam.py, rosnode.py, rosmsg.py (also rossrv)
-                          the graph tools, on topic.py, service.py, param.py, node.py,
-                          interface.py; tool.py what they share (parser, no-ROS-2-meaning)
+                          the graph tools, on topic/, service/, param/ (their api.py),
+                          node.py, interface.py; tool.py what they share (parser,
+                          no-ROS-2-meaning)
     rosrun.py             on run.py (`ros2 run`)
     rosbag.py             on bag/ (`ros2 bag`)
     rospack.py            `rospack find|list`, on the package index (`ros2 pkg prefix`)

@@ -16,10 +16,10 @@ from typing import Any
 
 import yaml
 
-from ros2cmd import param
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
 from ros2cmd.messages import parse_yaml
+from ros2cmd.param import api as param
 from ros2cmd.ros1 import tool
 from ros_tutorials_common import packages
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
@@ -180,7 +180,7 @@ def rosparam_dump(graph: Graph, path: str | None) -> None:
 
 def rosparam_load(graph: Graph, path: str) -> None:
     """ROS 1 loaded a file into the one parameter server; here each node it names gets the
-    entries that match it (its own, and patterns such as '/**', see ros2cmd.param)."""
+    entries that match it (its own, and patterns such as '/**', see ros2cmd/param/api.py)."""
     params_file = param.ParamsFile(path)  # read and checked once, before touching any node
     nodes = list(dict.fromkeys(params_file.node_names()))  # '/ns/node' and 'ns/node' are one
     if not nodes:

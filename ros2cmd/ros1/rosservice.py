@@ -2,7 +2,8 @@
 
     rosservice call /ros_tutorial_srv 10 5       the request's fields in order (seed 002)
 
-Each command runs ros2cmd/service.py's function; `args` and `info` read the request's fields.
+Each command runs ros2cmd/service/'s code; `call` prints the response as YAML, as ROS 1 did
+(``sum: 15``), and `args` and `info` read the request's fields.
 """
 
 from __future__ import annotations
@@ -10,9 +11,13 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from ros2cmd import service
 from ros2cmd.graph import Graph, absolute_name
+from ros2cmd.messages import fill_message, message_to_yaml
 from ros2cmd.ros1 import tool
+from ros2cmd.service.api import servers, wait_for_types
+from ros2cmd.service.verb.find import find
+from ros2cmd.service.verb.list import list_services
+from ros2cmd.service.verb.type import print_type
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
@@ -23,11 +28,11 @@ def rosservice_parser() -> argparse.ArgumentParser:
     )
 
     p = sub.add_parser("list", parents=[common], help="list services")
-    p.set_defaults(run=lambda graph, a: service.list_services(graph))
+    p.set_defaults(run=lambda graph, a: list_services(graph))
 
     p = sub.add_parser("type", parents=[common], help="service type")
     p.add_argument("service")
-    p.set_defaults(run=lambda graph, a: service.print_type(graph, a.service))
+    p.set_defaults(run=lambda graph, a: print_type(graph, a.service))
 
     p = sub.add_parser("call", parents=[common], help="call a service")
     p.add_argument("service")
@@ -44,7 +49,7 @@ def rosservice_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("find", parents=[common], help="services of a type")
     p.add_argument("type")
-    p.set_defaults(run=lambda graph, a: service.find(graph, a.type))
+    p.set_defaults(run=lambda graph, a: find(graph, a.type))
     tool.no_ros2_meaning("rosservice", sub)
     return parser
 
@@ -53,7 +58,13 @@ def _call(graph: Graph, args: argparse.Namespace) -> None:
     values = tool.values_from_args(args.values)
     if values is None:  # ROS 1 refused a call without its values: no silent default request
         values = []
-    service.call(graph, args.service, None, values, ros1_output=True)
+    service = absolute_name(args.service)
+    srv_type = load_type(wait_for_types(graph, service)[0], ("srv",))
+    request = fill_message(srv_type.Request(), values)
+    client = graph.node.create_client(srv_type, service)
+    response = graph.call(client, request, f"cannot call '{service}'")
+    graph.finish()
+    print(message_to_yaml(response))
 
 
 def _request_fields(graph: Graph, name: str) -> tuple[str, list[str]]:
@@ -68,7 +79,7 @@ def _service_args(graph: Graph, name: str) -> None:
 
 def _service_info(graph: Graph, name: str) -> None:
     type_name, fields = _request_fields(graph, name)
-    print(f"Node: {', '.join(service.servers(graph, absolute_name(name)))}")
+    print(f"Node: {', '.join(servers(graph, absolute_name(name)))}")
     print(f"Type: {type_name}")
     print(f"Args: {' '.join(fields)}")
 

@@ -16,7 +16,7 @@ handler shuts ROS down in a thread of its own, and Python raises KeyboardInterru
 thread. Left to chance, the program's ``except KeyboardInterrupt`` / ``finally:
 rclpy.try_shutdown()`` can run while that thread is still shutting down: try_shutdown then
 fails with "rcl_shutdown already called", and the node ends killed by SIGINT (status 130)
-instead of exiting 0 (seen in `make test` on a loaded machine).
+instead of exiting 0.
 """
 
 from __future__ import annotations

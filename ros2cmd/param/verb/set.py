@@ -1,0 +1,69 @@
+"""`ros2 param set NODE NAME VALUE`: the node's answer in ros2's words; a refusal is exit
+status 1."""
+
+from __future__ import annotations
+
+import argparse
+
+from rcl_interfaces.msg import Parameter as ParameterMsg
+from rcl_interfaces.msg import ParameterType, ParameterValue
+
+from ros2cmd.errors import ToolError, ToolFailure
+from ros2cmd.graph import Graph
+from ros2cmd.messages import parse_yaml
+from ros2cmd.param.api import add_node_argument, set_each, with_reason
+from ros_tutorials_common.bounded import parameter_problem
+
+HELP = "Set parameter"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_node_argument(parser)
+    parser.add_argument("parameter_name", help="Name of the parameter")
+    parser.add_argument("value", help="Value of the parameter")
+
+
+def main(graph: Graph, args: argparse.Namespace) -> None:
+    name = args.parameter_name
+    value = typed_value(name, args.value)
+    node = graph.wait_for_node(args.node_name)
+    result = set_each(graph, node, [ParameterMsg(name=name, value=value)])[0]
+    if not result.successful:
+        raise ToolFailure(with_reason("Setting parameter failed", result))
+    graph.finish()
+    print(with_reason("Set parameter successful", result))
+
+
+def typed_value(name: str, text: str) -> ParameterValue:
+    """The value `ros2 param set` sends for what was typed: typed as YAML reads it, as
+    rclpy's get_parameter_value does (2 an integer, 2.0 a double, true a boolean, a list of
+    one of those an array); anything else, a mixed list or a mapping too, is the text itself.
+    """
+    try:
+        value = parse_yaml(text)
+    except ToolError:  # not YAML (`a: b: c`): the text, as rclpy does
+        value = text
+    for item in value if isinstance(value, list) else [value]:
+        if isinstance(item, int) and (problem := parameter_problem(name, item)):
+            raise ToolError(f"cannot set {problem}")  # beyond int64: rclpy fails an assert
+    if isinstance(value, bool):
+        return ParameterValue(type=ParameterType.PARAMETER_BOOL, bool_value=value)
+    if isinstance(value, int):
+        return ParameterValue(type=ParameterType.PARAMETER_INTEGER, integer_value=value)
+    if isinstance(value, float):
+        return ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=value)
+    if isinstance(value, list):
+        for kind, code, field in (
+            (bool, ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value"),
+            (int, ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value"),
+            (float, ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value"),
+            (str, ParameterType.PARAMETER_STRING_ARRAY, "string_array_value"),
+        ):
+            # rclpy's tests in its order: [] is a boolean array, [1, true] no integer array
+            if all(
+                isinstance(item, kind) and (kind is bool) == isinstance(item, bool)
+                for item in value
+            ):
+                return ParameterValue(type=code, **{field: value})
+    text_value = value if isinstance(value, str) else text
+    return ParameterValue(type=ParameterType.PARAMETER_STRING, string_value=text_value)
