@@ -879,10 +879,14 @@ class Resolver:
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         self.resolve_scope(element, scope.child(namespace=ns))
 
-    @tag("ros2", "group", {"scoped"}, marks={"scoped"})
+    @tag("ros2", "group", {"scoped", "forwarding"}, marks={"scoped", "forwarding"})
     @tag("ros2", "timer", {"period"})
     def on_nested(self, element: Element, scope: Scope) -> None:
-        """GroupAction and TimerAction, built by their parse methods, one level deeper."""
+        """GroupAction and TimerAction, built by their parse methods, one level deeper (a
+        group's <keep>s are its parse method's; the other children are read when reached)."""
+        for child in element.children:
+            if element.tag == "group" and child.tag == "keep":
+                _check_tag(child, {"keep": {"name", "value"}}, scope, "group")
         self.run_nested(self.parse(element), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
