@@ -7,9 +7,10 @@ from typing import Any
 
 from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
-from launch.actions import ExecuteProcess
+from launch.actions import ExecuteProcess, command_words, frontend_attr
 from launch.frontend.expose import expose_action
 from launch_ros.utilities import (
+    frontend_node_parts,
     node_parameters,
     node_remaps,
     parameter_value,
@@ -26,6 +27,7 @@ __all__ = [
 ]  # fmt: skip
 
 
+@expose_action("node")
 class Node(ExecuteProcess):
     """A ROS node of a package: its name, namespace, parameters, remaps and arguments become
     the standard ROS arguments (launcher/plan.py)."""
@@ -52,6 +54,26 @@ class Node(ExecuteProcess):
         self.ros_arguments = list(normalize(ros_arguments)) if ros_arguments else []
         self.arguments = list(arguments or [])
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
+        """<node>: what <executable> has (ExecuteProcess.parse) but its command, and the
+        node's own attributes; its <param>s and <remap>s are its parameters and remappings."""
+        from launch.substitutions import FrontendWords, split_words
+
+        _, kwargs = super().parse(entity, parser, ignore=("cmd",))
+        kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"))
+        kwargs["executable"] = frontend_attr(entity, "exec", _not_blank("exec"))
+        for attr in ("name", "namespace", "exec_name"):
+            value = frontend_attr(entity, attr)
+            if value is not None:
+                kwargs[attr] = value
+        for attr, key in (("args", "arguments"), ("ros_args", "ros_arguments")):
+            value = frontend_attr(entity, attr, split_words(attr), FrontendWords)
+            if value is not None:
+                kwargs[key] = [value]
+        kwargs["parameters"], kwargs["remappings"] = frontend_node_parts(entity)
+        return cls, kwargs
+
     def process_decl(self, context: LaunchContext) -> NodeDecl:
         if self.package is None:
             raise self.error("Node needs a package= here (a program by path: ExecuteProcess)")
@@ -69,16 +91,25 @@ class Node(ExecuteProcess):
             executable=perform(self.executable, context),
             name=name,
             namespace=namespace,
-            args=[perform(arg, context) for arg in self.arguments],
-            ros_args=[perform(arg, context) for arg in self.ros_arguments],
+            args=command_words(self.arguments, context),
+            ros_args=command_words(self.ros_arguments, context),
             remaps=remaps,
             params=params,
             params_files=files,
         )
         self.fill(decl, context)
         if self.name is not None:  # exec_name: the output prefix
-            decl.label = perform(self.name, context)
+            decl.label = perform(self.name, context) or decl.label
         return decl
+
+
+def _not_blank(attr: str) -> Any:
+    def check(text: str, element: Any) -> str:
+        if not text.strip():
+            raise element.error(f"<node {attr}> is empty")
+        return text
+
+    return check
 
 
 class ComposableNodeContainer(Node):

@@ -139,6 +139,57 @@ def test_what_no_parse_method_reads_is_refused_at_its_line(text, message):
         load(text, "bad.launch.xml")
 
 
+def test_node_and_executable_as_launch_xmls_and_launch_ross_tests():  # test_executable, test_node
+    from launch.actions import ExecuteProcess
+    from launch_ros.actions import Node
+
+    ld = load("""\
+        <launch>
+            <let name="who" value="talker"/>
+            <node pkg="ros_tutorials_topic" exec="talker" name="$(var who)" namespace="ns"
+                  args="-a 'b c'" respawn="true" respawn_delay="2">
+                <param name="rate" value="2.5"/>
+                <param name="group"><param name="x" value="1"/></param>
+                <remap from="chatter" to="talk"/>
+                <remap from="a" to="b" if="false"/>
+                <env name="A" value="$(var who)"/>
+            </node>
+            <executable cmd="echo hi" args="there" name="say" cwd="/tmp" output="screen"
+                        on_exit="shutdown"/>
+        </launch>
+        """)
+    let, node, executable = ld.entities
+    assert type(node) is Node and type(executable) is ExecuteProcess
+    context = LaunchContext()
+    let.execute(context)
+    decl = node.process_decl(context)
+    assert (decl.name, decl.namespace, decl.args) == ("talker", "/ns", ["-a", "b c"])
+    assert decl.params == [("rate", 2.5), ("group.x", 1)] and decl.remaps == [("chatter", "talk")]
+    assert decl.env == {"A": "talker"} and decl.respawn and decl.respawn_delay == 2.0
+    decl = executable.process_decl(context)
+    assert (decl.cmd, decl.label, decl.cwd, decl.output) == (
+        ["echo", "hi", "there"], "say", "/tmp", "screen")  # fmt: skip
+    assert decl.required
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('<node pkg="a" exec="b" respawn_delay="soon"/>',
+         ":2: 'respawn_delay' must be a non-negative number, not 'soon'"),
+        ('<node pkg="a" exec="b" colour="red"/>', ":2: unknown attribute 'colour' on <node>"),
+        ('<node pkg="a" exec=" "/>', ":2: <node exec> is empty"),
+        ("<executable cmd=\"echo 'a\"/>", ":2: cmd=\"echo 'a\": No closing quotation"),
+        ('<executable cmd="sleep 1" on_exit="restart"/>',
+         ":2: on_exit='restart' is not supported; use 'shutdown'"),
+    ],
+)  # fmt: skip
+def test_node_and_executable_attributes_are_checked_at_their_line(text, message):
+    with pytest.raises(LaunchError, match=message):
+        ld = load(f"<launch>\n{text}\n</launch>\n", "bad.launch.xml")
+        ld.entities[0].process_decl(LaunchContext())
+
+
 def test_a_tag_is_exposed_once():
     from launch.frontend.expose import action_parse_methods
 
