@@ -474,9 +474,11 @@ class ExecuteProcess(Action):
 
         _, kwargs = super().parse(entity, parser)
         if "cmd" not in ignore:  # a <node> reads its name and args itself
-            cmd = [frontend_attr(entity, "cmd", _non_empty_cmd, FrontendWords)]
+            cmd = frontend_attr(entity, "cmd", _non_empty_cmd, FrontendWords)
+            if cmd is None:
+                raise entity.element.error("<executable> needs a non-empty 'cmd'")
             args = frontend_attr(entity, "args", split_words("args"), FrontendWords)
-            kwargs["cmd"] = cmd + ([args] if args is not None else [])
+            kwargs["cmd"] = [cmd] + ([args] if args is not None else [])
             name = frontend_attr(entity, "name")
             if name is not None:
                 kwargs["name"] = name
@@ -610,13 +612,17 @@ def command_words(values: Iterable[Any], context: LaunchContext) -> list[str]:
 
 
 def frontend_attr(
-    entity: Any, name: str, check: Callable[[str, Any], str] | None = None, kind: Any = None
+    entity: Any,
+    name: str,
+    check: Callable[[str, Any], str] | None = None,
+    kind: Any = None,
+    optional: bool = True,
 ) -> Any:
     """Attribute ``name`` of a front-end's entity as text performed when the action needs it
     and then checked (``check``, at the entity's line); None if not written."""
     from launch.substitutions import FrontendText
 
-    text = entity.get_attr(name, optional=True)
+    text = entity.get_attr(name, optional=optional)
     return None if text is None else (kind or FrontendText)(text, entity.element, check)
 
 

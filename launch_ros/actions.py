@@ -61,8 +61,8 @@ class Node(ExecuteProcess):
         from launch.substitutions import FrontendWords, split_words
 
         _, kwargs = super().parse(entity, parser, ignore=("cmd",))
-        kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"))
-        kwargs["executable"] = frontend_attr(entity, "exec", _not_blank("exec"))
+        kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"), optional=False)
+        kwargs["executable"] = frontend_attr(entity, "exec", _not_blank("exec"), optional=False)
         for attr in ("name", "namespace", "exec_name"):
             value = frontend_attr(entity, attr)
             if value is not None:
@@ -112,9 +112,18 @@ def _not_blank(attr: str) -> Any:
     return check
 
 
+@expose_action("node_container")
 class ComposableNodeContainer(Node):
     """A component container with its components: planned and shown (--print); not started,
     as rclcpp_components is not on PyPI (the launch says so in one line)."""
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
+        """<node_container>: a <node> with its <composable_node>s."""
+        _, kwargs = super().parse(entity, parser)
+        kwargs.setdefault("namespace", "")
+        kwargs["composable_node_descriptions"] = _parse_components(entity, parser)
+        return cls, kwargs
 
     def __init__(self, *, name: Any, namespace: Any, composable_node_descriptions: Any = None,
                  **kwargs: Any) -> None:  # fmt: skip
@@ -138,8 +147,17 @@ class ComposableNodeContainer(Node):
         context.sink.add_container(container)
 
 
+@expose_action("load_composable_node")
 class LoadComposableNodes(Action):
     """Components for a container (``target_container``: its action or its name)."""
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        """<load_composable_node target=...> with its <composable_node>s."""
+        _, kwargs = super().parse(entity, parser)
+        kwargs["target_container"] = frontend_attr(entity, "target")
+        kwargs["composable_node_descriptions"] = _parse_components(entity, parser)
+        return cls, kwargs
 
     def __init__(self, *, composable_node_descriptions: Any, target_container: Any,
                  **kwargs: Any) -> None:  # fmt: skip
@@ -158,6 +176,20 @@ class LoadComposableNodes(Action):
         nodes = self.composable_node_descriptions
         container.components = _components(nodes, context, context.ros_namespace)
         context.sink.add_container(container)
+
+
+def _parse_components(entity: Any, parser: Any) -> list[Any]:
+    """The <composable_node>s of a front-end's container tag, each by ComposableNode.parse."""
+    from launch.frontend.entity import Entity
+    from launch_ros.descriptions import ComposableNode
+
+    found = []
+    for item in entity.get_attr("composable_node", data_type=list[Entity], optional=True) or []:
+        node_type, kwargs = ComposableNode.parse(parser, item)
+        node = node_type(**kwargs)
+        node.where = item.where
+        found.append(node)
+    return found
 
 
 def _components(nodes: list[Any], context: LaunchContext, namespace: str) -> list[ComponentDecl]:

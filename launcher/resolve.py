@@ -916,8 +916,7 @@ class Resolver:
     @tag("ros2", "param", PARAM_ATTRS, under={"node", "composable_node"}, marks={"value_sep"})
     @tag("ros2", "remap", {"from", "to"}, under={"node", "composable_node"})
     def on_node_part(self, element: Element, scope: Scope) -> None:
-        """Read by on_process() and composable_node() into their action's parameters and
-        remappings."""
+        """Read by Node.parse and ComposableNode.parse into their parameters and remappings."""
 
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
@@ -1052,64 +1051,19 @@ class Resolver:
          marks={"exec", "namespace"})  # fmt: skip
     @tag("ros2", "load_composable_node", {"target"})
     def on_container(self, element: Element, scope: Scope) -> None:
-        """ComposableNodeContainer with its components, or LoadComposableNodes for one
-        (``target``)."""
-        from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
-
-        nodes = []
+        """ComposableNodeContainer with its components, or LoadComposableNodes for a container
+        (``target``), built by their parse methods."""
         for child in element.children:
             _check_tag(child, allowed_tags("ros2", "node_container"), scope, element.tag)
-            if self.enabled(child, scope):
-                nodes.append(self.composable_node(child, scope))
-        action: Any
-        if element.tag == "load_composable_node":
-            target = self.text(element, "target", scope)
-            action = LoadComposableNodes(
-                composable_node_descriptions=nodes, target_container=target
-            )
-        else:
-            action = ComposableNodeContainer(
-                package=self.text(element, "pkg", scope),
-                executable=self.text(element, "exec", scope),
-                name=self.text(element, "name", scope),
-                namespace=self.text(element, "namespace", scope, ""),
-                arguments=self.words(element, "args", scope),
-                output=self.text(element, "output", scope, "log"),
-                composable_node_descriptions=nodes,
-            )
-        self.run(action, element, scope)
+            self.check_children(child, scope)
+        self.run(self.parse(element), element, scope)
 
     @tag(
         "ros2", "composable_node", {"pkg", "plugin", "name", "namespace"}, under={"node_container"}
     )
-    def composable_node(self, element: Element, scope: Scope) -> Any:
-        """launch_ros's ComposableNode, for the container's action."""
-        from launch_ros.descriptions import ComposableNode
-        from launch_ros.utilities import frontend_node_parts
-
-        self.check_children(element, scope)
-        extra = []
-        for child in element.children:
-            if child.tag == "extra_arg" and self.enabled(child, scope):
-                extra.append({self.text(child, "name", scope): self.text(child, "value", scope)})
-        parameters, remappings = frontend_node_parts(Entity(element))
-        node = ComposableNode(
-            package=self.text(element, "pkg", scope),
-            plugin=self.text(element, "plugin", scope),
-            name=self.text(element, "name", scope, "") or None,
-            namespace=(
-                self.text(element, "namespace", scope) if "namespace" in element.attrs else None
-            ),
-            parameters=parameters,
-            remappings=remappings,
-            extra_arguments=extra,
-        )
-        node.where = element.where
-        return node
-
     @tag("ros2", "extra_arg", {"name", "value"}, under={"composable_node"})
-    def on_extra_arg(self, element: Element, scope: Scope) -> None:
-        """Read by composable_node() itself."""
+    def on_component_part(self, element: Element, scope: Scope) -> None:
+        """Read by ComposableNode.parse (its container's parse method)."""
 
     @tag("ros1", "test", {"pkg", "type", "name", "test_name", "args", "ns", "clear_params",
                           "cwd", "launch_prefix", "retry", "time_limit"})  # fmt: skip

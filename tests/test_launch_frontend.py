@@ -180,6 +180,7 @@ def test_node_and_executable_as_launch_xmls_and_launch_ross_tests():  # test_exe
         ('<node pkg="a" exec="b" colour="red"/>', ":2: unknown attribute 'colour' on <node>"),
         ('<node pkg="a" exec=" "/>', ":2: <node exec> is empty"),
         ("<executable cmd=\"echo 'a\"/>", ":2: cmd=\"echo 'a\": No closing quotation"),
+        ('<executable name="x"/>', ":2: <executable> needs a non-empty 'cmd'"),
         ('<executable cmd="sleep 1" on_exit="restart"/>',
          ":2: on_exit='restart' is not supported; use 'shutdown'"),
     ],
@@ -188,6 +189,39 @@ def test_node_and_executable_attributes_are_checked_at_their_line(text, message)
     with pytest.raises(LaunchError, match=message):
         ld = load(f"<launch>\n{text}\n</launch>\n", "bad.launch.xml")
         ld.entities[0].process_decl(LaunchContext())
+
+
+def test_container_tags_build_launch_ros_containers():  # launch_ros's test_composable_node
+    from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
+
+    ld = load("""\
+        <launch>
+            <node_container pkg="rclcpp_components" exec="component_container" name="box"
+                            namespace="ns">
+                <composable_node pkg="demo" plugin="demo::Talker" name="talker">
+                    <param name="rate" value="2"/>
+                    <remap from="chatter" to="talk"/>
+                    <extra_arg name="use_intra_process_comms" value="true"/>
+                </composable_node>
+                <composable_node pkg="demo" plugin="demo::Off" unless="true"/>
+            </node_container>
+            <load_composable_node target="/ns/box">
+                <composable_node pkg="demo" plugin="demo::Listener"/>
+            </load_composable_node>
+        </launch>
+        """)
+    container, load_nodes = ld.entities
+    assert isinstance(container, ComposableNodeContainer)
+    assert isinstance(load_nodes, LoadComposableNodes)
+    talker, off = container.composable_node_descriptions
+    context = LaunchContext()
+    decl = talker.component_decl(context, "/ns")
+    assert (decl.name, decl.namespace, decl.plugin) == ("talker", "/ns", "demo::Talker")
+    assert decl.params == [("rate", 2)] and decl.remaps == [("chatter", "talk")]
+    assert decl.extra_args == [("use_intra_process_comms", "true")]
+    assert not off.condition.evaluate(context)
+    (listener,) = load_nodes.composable_node_descriptions
+    assert listener.component_decl(context, "/").plugin == "demo::Listener"
 
 
 def test_a_tag_is_exposed_once():
