@@ -2,8 +2,8 @@
 
 Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
 line (its attributes, where it may stand, the signs of its format) on the handler that reads
-it. A ROS 2 tag's handler builds its action (launch/, launch_ros/), by the parse method the
-action exposed (launch.frontend) or from the attributes it reads, and executes it in the
+it. A ROS 2 tag's handler has its action (launch/, launch_ros/) built by the parse method
+the action exposed (launch.frontend; ``<reset>`` is still read here) and executes it in the
 file's scope (``run``): what the tag does is the action's. ROS 1's rules are its handlers':
 - ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
