@@ -536,7 +536,7 @@ class ExecuteProcess(Action):
             env = {name: None for name in os.environ if name not in given}
             env.update(given)
         for key, value in (self.additional_env or {}).items():
-            if isinstance(key, Substitution) and not enabled(key, context):
+            if not enabled(key, context):
                 continue  # a front-end's <env if=...>
             env[perform(key, context)] = perform(value, context)
         decl.env = env
