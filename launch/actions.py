@@ -483,7 +483,7 @@ class ExecuteProcess(Action):
             if name is not None:
                 kwargs["name"] = name
         checks: dict[str, Callable[[str, Any], str] | None] = {
-            "cwd": None, "output": None, "respawn": _flag_check("respawn"),
+            "cwd": None, "output": _output_check, "respawn": _flag_check("respawn"),
             "respawn_delay": _number_check("respawn_delay"),
             "respawn_max_retries": _number_check("respawn_max_retries", int),
             "sigterm_timeout": _number_check("sigterm_timeout"),
@@ -633,6 +633,12 @@ def _non_empty_cmd(text: str, element: Any) -> str:
         raise element.error(f"cmd={text!r}: {error}") from None
     if not words:
         raise element.error("<executable> needs a non-empty 'cmd'")
+    return text
+
+
+def _output_check(text: str, element: Any) -> str:
+    if text not in ("screen", "log", "both"):
+        raise element.error(f"output={text!r}; use one of screen, log, both")
     return text
 
 

@@ -155,7 +155,7 @@ class LoadComposableNodes(Action):
     def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
         """<load_composable_node target=...> with its <composable_node>s."""
         _, kwargs = super().parse(entity, parser)
-        kwargs["target_container"] = frontend_attr(entity, "target")
+        kwargs["target_container"] = frontend_attr(entity, "target", optional=False)
         kwargs["composable_node_descriptions"] = _parse_components(entity, parser)
         return cls, kwargs
 
