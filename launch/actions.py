@@ -426,6 +426,7 @@ class RegisterEventHandler(Action):
         register(context)
 
 
+@expose_action("executable")
 class ExecuteProcess(Action):
     """A process: ``cmd`` is a list of words (each text or substitutions); with ``shell``
     they are joined into one shell command line."""
@@ -462,12 +463,61 @@ class ExecuteProcess(Action):
         self.on_exit, self.respawn = on_exit, respawn
         self.respawn_delay, self.respawn_max_retries = respawn_delay, respawn_max_retries
 
+    @classmethod
+    def parse(
+        cls, entity: Any, parser: Any, ignore: Iterable[str] = ()
+    ) -> tuple[type, dict[str, Any]]:
+        """<executable> (with ``ignore=("cmd",)``: what launch_ros's <node> shares with it).
+        Each attribute is performed when the process is planned and checked at its tag's
+        line; <env> children are its additional_env."""
+        from launch.substitutions import FrontendText, FrontendWords, split_words
+
+        _, kwargs = super().parse(entity, parser)
+        if "cmd" not in ignore:  # a <node> reads its name and args itself
+            cmd = frontend_attr(entity, "cmd", _non_empty_cmd, FrontendWords)
+            if cmd is None:
+                raise entity.element.error("<executable> needs a non-empty 'cmd'")
+            args = frontend_attr(entity, "args", split_words("args"), FrontendWords)
+            kwargs["cmd"] = [cmd] + ([args] if args is not None else [])
+            name = frontend_attr(entity, "name")
+            if name is not None:
+                kwargs["name"] = name
+        checks: dict[str, Callable[[str, Any], str] | None] = {
+            "cwd": None, "output": _output_check, "respawn": _flag_check("respawn"),
+            "respawn_delay": _number_check("respawn_delay"),
+            "respawn_max_retries": _number_check("respawn_max_retries", int),
+            "sigterm_timeout": _number_check("sigterm_timeout"),
+            "sigkill_timeout": _number_check("sigkill_timeout"),
+        }  # fmt: skip
+        for attr, check in checks.items():
+            value = frontend_attr(entity, attr, check)
+            if value is not None:
+                kwargs[attr] = value
+        prefix = frontend_attr(entity, "launch_prefix", split_words("launch_prefix"),
+                               FrontendWords)  # fmt: skip
+        if prefix is not None:
+            kwargs["prefix"] = prefix
+        on_exit = entity.get_attr("on_exit", optional=True)  # as ros2 launch: the word itself
+        if on_exit not in (None, "", "shutdown"):
+            raise entity.element.error(f"on_exit={on_exit!r} is not supported; use 'shutdown'")
+        if on_exit == "shutdown":
+            kwargs["on_exit"] = Shutdown()
+        env = entity.get_attr("env", data_type=list[Entity], optional=True) or []
+        if env:
+            kwargs["additional_env"] = {
+                FrontendText(item.get_attr("name"), item.element, _env_name_check): FrontendText(
+                    item.get_attr("value"), item.element
+                )
+                for item in env
+            }
+        return cls, kwargs
+
     def process_decl(self, context: LaunchContext) -> NodeDecl:
         """The process as the launcher's plan holds it (launch_ros's Node fills in more)."""
-        words = [perform(word, context) for word in self.cmd]
+        words = command_words(self.cmd, context)
         if not words or not words[0]:
             raise self.error("ExecuteProcess needs a non-empty cmd")
-        label = perform(self.name, context) if self.name is not None else None
+        label = (perform(self.name, context) or None) if self.name is not None else None
         if self.shell:
             first = shlex.split(words[0])[:1] if words[0].strip() else []
             label = label or (Path(first[0]).name if first else "sh")
@@ -486,26 +536,29 @@ class ExecuteProcess(Action):
             env = {name: None for name in os.environ if name not in given}
             env.update(given)
         for key, value in (self.additional_env or {}).items():
+            if not enabled(key, context):
+                continue  # a front-end's <env if=...>
             env[perform(key, context)] = perform(value, context)
         decl.env = env
         decl.output = perform(self.output, context) or "log"
         if decl.output not in ("screen", "log", "both"):
             raise self.error(f"output={decl.output!r}; use one of screen, log, both")
         decl.respawn = flag(self.respawn, context)
-        if self.respawn_delay is not None:
-            decl.respawn_delay = seconds(self.respawn_delay, context, self.where, "respawn_delay")
+        delay = given_value(self.respawn_delay, context)
+        if delay is not None:
+            decl.respawn_delay = seconds(delay, context, self.where, "respawn_delay")
         # Not given: this launcher's default (it backs off and gives up); -1, as in ros2
         # launch, respawns for ever.
-        retries = self.respawn_max_retries
+        retries = given_value(self.respawn_max_retries, context)
         decl.respawn_max_retries = DEFAULT_RESPAWN_MAX_RETRIES if retries is None else int(retries)
         for attr in ("sigterm_timeout", "sigkill_timeout"):
-            value = getattr(self, attr)
+            value = given_value(getattr(self, attr), context)
             if value is not None:
                 setattr(decl, attr, seconds(value, context, self.where, attr))
         if self.prefix is not None:
             decl.launch_prefix = shlex.split(perform(self.prefix, context))
         if self.cwd is not None:
-            decl.cwd = perform(self.cwd, context)
+            decl.cwd = perform(self.cwd, context) or None
         # emulate_tty (or the launch configuration of that name, as ros2 launch reads it):
         # the child's output is a pipe here, unbuffered either way; what a terminal adds is
         # rcutils' colours.
@@ -533,6 +586,96 @@ class ExecuteProcess(Action):
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
             OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def given_value(value: Any, context: LaunchContext) -> Any:
+    """A number or its text, None if not given (a front-end's attribute that is empty)."""
+    if value is None or isinstance(value, (int, float)):
+        return value
+    return perform(value, context) or None
+
+
+def enabled(value: Any, context: LaunchContext) -> bool:
+    """Whether a front-end's child element a value came from holds (its if/unless)."""
+    check = getattr(value, "enabled", None)
+    return check(context) if check is not None else True
+
+
+def command_words(values: Iterable[Any], context: LaunchContext) -> list[str]:
+    """A command line's words: each value one word, a front-end's command-line attribute
+    (FrontendWords) split as a shell would."""
+    words: list[str] = []
+    for value in values:
+        split = getattr(value, "words", None)
+        words += split(context) if split is not None else [perform(value, context)]
+    return words
+
+
+def frontend_attr(
+    entity: Any,
+    name: str,
+    check: Callable[[str, Any], str] | None = None,
+    kind: Any = None,
+    optional: bool = True,
+) -> Any:
+    """Attribute ``name`` of a front-end's entity as text performed when the action needs it
+    and then checked (``check``, at the entity's line); None if not written."""
+    from launch.substitutions import FrontendText
+
+    text = entity.get_attr(name, optional=optional)
+    return None if text is None else (kind or FrontendText)(text, entity.element, check)
+
+
+def _non_empty_cmd(text: str, element: Any) -> str:
+    try:
+        words = shlex.split(text)
+    except ValueError as error:  # No closing quotation
+        raise element.error(f"cmd={text!r}: {error}") from None
+    if not words:
+        raise element.error("<executable> needs a non-empty 'cmd'")
+    return text
+
+
+def _output_check(text: str, element: Any) -> str:
+    if text not in ("screen", "log", "both"):
+        raise element.error(f"output={text!r}; use one of screen, log, both")
+    return text
+
+
+def _flag_check(name: str) -> Callable[[str, Any], str]:
+    def check(text: str, element: Any) -> str:
+        from launcher.substitutions import to_bool
+
+        return "true" if to_bool(text, element, f"{name!r}") else "false"
+
+    return check
+
+
+def _number_check(name: str, kind: type = float) -> Callable[[str, Any], str]:
+    """A front-end's number: not negative (an int may be -1: for ever), at most a day."""
+
+    def check(text: str, element: Any) -> str:
+        if not text:
+            return text
+        try:
+            value = kind(text)
+        except ValueError:
+            value = None
+        # nan and inf would make the supervisor's deadlines unreachable: refuse them too.
+        bad = value is None or not math.isfinite(value) or value < 0
+        if bad and not (kind is int and value == -1):
+            raise element.error(f"{name!r} must be a non-negative number, not {text!r}")
+        if kind is float and value > MAX_SECONDS:
+            raise element.error(f"{name!r} is {text} s; at most {MAX_SECONDS:.0f} s (a day)")
+        return text
+
+    return check
+
+
+def _env_name_check(name: str, element: Any) -> str:
+    if not name or "=" in name or "\0" in name:
+        raise element.error(f"invalid environment variable name {name!r}")
+    return name
 
 
 def checked_output_format(output_format: Any, where: str) -> str:

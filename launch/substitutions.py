@@ -5,8 +5,10 @@ from __future__ import annotations
 
 import math
 import os
+import shlex
 import shutil
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -35,12 +37,52 @@ class FrontendText(Substitution):
     """An attribute's text as a front-end (launch XML or YAML) wrote it, its $(...) performed
     when the action that holds it needs the value (launch's parse_substitution, lazily)."""
 
-    def __init__(self, text: str, element: Element) -> None:
+    def __init__(
+        self, text: str, element: Element, check: Callable[[str, Element], str] | None = None
+    ) -> None:
         super().__init__()
         self.text, self.element, self.where = text, element, element.where
+        self.check = check  # the attribute's own check of its value, at its element's line
 
     def perform(self, context: LaunchContext) -> str:
-        return substitute(self.text, context.frontend_scope, self.element)
+        value = substitute(self.text, context.frontend_scope, self.element)
+        return self.check(value, self.element) if self.check else value
+
+    def enabled(self, context: LaunchContext) -> bool:
+        """Whether the element this text is an attribute of holds (its ``if``/``unless``):
+        a child of a <node> or <executable> read into the action's arguments."""
+        return frontend_enabled(self.element, context)
+
+
+class FrontendWords(FrontendText):
+    """An attribute that is a command line (cmd, args, ros_args, launch-prefix): its words
+    are split as a shell would, after its $(...) are performed."""
+
+    def words(self, context: LaunchContext) -> list[str]:
+        return shlex.split(self.perform(context))
+
+
+def split_words(name: str) -> Callable[[str, Element], str]:
+    """FrontendWords' check: text a shell can split (the attribute ``name``)."""
+
+    def check(text: str, where: Element) -> str:
+        try:
+            shlex.split(text)
+        except ValueError as error:  # No closing quotation
+            raise where.error(f"{name.replace('_', '-')}={text!r}: {error}") from None
+        return text
+
+    return check
+
+
+def frontend_enabled(element: Element, context: LaunchContext) -> bool:
+    """An element's ``if``/``unless``, performed now in the launch's scope."""
+    scope = context.frontend_scope
+    if "if" in element.attrs:
+        return to_bool(substitute(element.attrs["if"], scope, element), element, "'if'")
+    if "unless" in element.attrs:
+        return not to_bool(substitute(element.attrs["unless"], scope, element), element, "'unless'")
+    return True
 
 
 class TextSubstitution(Substitution):

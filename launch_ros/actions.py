@@ -7,9 +7,10 @@ from typing import Any
 
 from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
-from launch.actions import ExecuteProcess
+from launch.actions import ExecuteProcess, command_words, frontend_attr
 from launch.frontend.expose import expose_action
 from launch_ros.utilities import (
+    frontend_node_parts,
     node_parameters,
     node_remaps,
     parameter_value,
@@ -26,6 +27,7 @@ __all__ = [
 ]  # fmt: skip
 
 
+@expose_action("node")
 class Node(ExecuteProcess):
     """A ROS node of a package: its name, namespace, parameters, remaps and arguments become
     the standard ROS arguments (launcher/plan.py)."""
@@ -52,6 +54,26 @@ class Node(ExecuteProcess):
         self.ros_arguments = list(normalize(ros_arguments)) if ros_arguments else []
         self.arguments = list(arguments or [])
 
+    @classmethod
+    def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
+        """<node>: what <executable> has (ExecuteProcess.parse) but its command, and the
+        node's own attributes; its <param>s and <remap>s are its parameters and remappings."""
+        from launch.substitutions import FrontendWords, split_words
+
+        _, kwargs = super().parse(entity, parser, ignore=("cmd",))
+        kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"), optional=False)
+        kwargs["executable"] = frontend_attr(entity, "exec", _not_blank("exec"), optional=False)
+        for attr in ("name", "namespace", "exec_name"):
+            value = frontend_attr(entity, attr)
+            if value is not None:
+                kwargs[attr] = value
+        for attr, key in (("args", "arguments"), ("ros_args", "ros_arguments")):
+            value = frontend_attr(entity, attr, split_words(attr), FrontendWords)
+            if value is not None:
+                kwargs[key] = [value]
+        kwargs["parameters"], kwargs["remappings"] = frontend_node_parts(entity)
+        return cls, kwargs
+
     def process_decl(self, context: LaunchContext) -> NodeDecl:
         if self.package is None:
             raise self.error("Node needs a package= here (a program by path: ExecuteProcess)")
@@ -69,21 +91,39 @@ class Node(ExecuteProcess):
             executable=perform(self.executable, context),
             name=name,
             namespace=namespace,
-            args=[perform(arg, context) for arg in self.arguments],
-            ros_args=[perform(arg, context) for arg in self.ros_arguments],
+            args=command_words(self.arguments, context),
+            ros_args=command_words(self.ros_arguments, context),
             remaps=remaps,
             params=params,
             params_files=files,
         )
         self.fill(decl, context)
         if self.name is not None:  # exec_name: the output prefix
-            decl.label = perform(self.name, context)
+            decl.label = perform(self.name, context) or decl.label
         return decl
 
 
+def _not_blank(attr: str) -> Any:
+    def check(text: str, element: Any) -> str:
+        if not text.strip():
+            raise element.error(f"<node {attr}> is empty")
+        return text
+
+    return check
+
+
+@expose_action("node_container")
 class ComposableNodeContainer(Node):
     """A component container with its components: planned and shown (--print); not started,
     as rclcpp_components is not on PyPI (the launch says so in one line)."""
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
+        """<node_container>: a <node> with its <composable_node>s."""
+        _, kwargs = super().parse(entity, parser)
+        kwargs.setdefault("namespace", "")
+        kwargs["composable_node_descriptions"] = _parse_components(entity, parser)
+        return cls, kwargs
 
     def __init__(self, *, name: Any, namespace: Any, composable_node_descriptions: Any = None,
                  **kwargs: Any) -> None:  # fmt: skip
@@ -107,8 +147,17 @@ class ComposableNodeContainer(Node):
         context.sink.add_container(container)
 
 
+@expose_action("load_composable_node")
 class LoadComposableNodes(Action):
     """Components for a container (``target_container``: its action or its name)."""
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        """<load_composable_node target=...> with its <composable_node>s."""
+        _, kwargs = super().parse(entity, parser)
+        kwargs["target_container"] = frontend_attr(entity, "target", optional=False)
+        kwargs["composable_node_descriptions"] = _parse_components(entity, parser)
+        return cls, kwargs
 
     def __init__(self, *, composable_node_descriptions: Any, target_container: Any,
                  **kwargs: Any) -> None:  # fmt: skip
@@ -127,6 +176,20 @@ class LoadComposableNodes(Action):
         nodes = self.composable_node_descriptions
         container.components = _components(nodes, context, context.ros_namespace)
         context.sink.add_container(container)
+
+
+def _parse_components(entity: Any, parser: Any) -> list[Any]:
+    """The <composable_node>s of a front-end's container tag, each by ComposableNode.parse."""
+    from launch.frontend.entity import Entity
+    from launch_ros.descriptions import ComposableNode
+
+    found = []
+    for item in entity.get_attr("composable_node", data_type=list[Entity], optional=True) or []:
+        node_type, kwargs = ComposableNode.parse(parser, item)
+        node = node_type(**kwargs)
+        node.where = item.where
+        found.append(node)
+    return found
 
 
 def _components(nodes: list[Any], context: LaunchContext, namespace: str) -> list[ComponentDecl]:

@@ -2,8 +2,8 @@
 
 Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
 line (its attributes, where it may stand, the signs of its format) on the handler that reads
-it. A ROS 2 tag's handler builds its action (launch/, launch_ros/), by the parse method the
-action exposed (launch.frontend) or from the attributes it reads, and executes it in the
+it. A ROS 2 tag's handler has its action (launch/, launch_ros/) built by the parse method
+the action exposed (launch.frontend; ``<reset>`` is still read here) and executes it in the
 file's scope (``run``): what the tag does is the action's. ROS 1's rules are its handlers':
 - ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
@@ -46,7 +46,6 @@ from launcher.naming import (
     namespace_under,
     remap_problem,
     valid_name,
-    yaml_parameter,
 )
 from launcher.parse import YAML_SUFFIXES, Element, parse_file
 from launcher.substitutions import (
@@ -350,52 +349,7 @@ def _typed_value(text: str, kind: str | None, element: Element) -> Any:
     return text
 
 
-# launch's type names for a ROS 2 <param type=...>: the type, and whether it is a list of it.
-ROS2_TYPES: dict[str, tuple[type | None, bool]] = {
-    "str": (str, False), "int": (int, False), "float": (float, False), "bool": (bool, False),
-    "list_of_str": (str, True), "list_of_int": (int, True), "list_of_float": (float, True),
-    "list_of_bool": (bool, True), "yaml": (None, False),
-}  # fmt: skip
 PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep", "allow_substs"})
-
-
-def _ros2_scalar(text: str, kind: type | None, element: Element) -> Any:
-    """One value of a ROS 2 parameter as launch's coerce_to_type reads it."""
-    if kind is None:
-        return yaml_parameter(text)
-    if kind is str:
-        return text
-    if kind is bool and text in ("1", "0"):  # launch takes 1 and 0 for true and false
-        text = {"1": "true", "0": "false"}[text]
-    try:
-        value = kind(text) if kind in (int, float) else yaml_parameter(text)
-    except ValueError:
-        value = None
-    if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
-        name = element.attrs.get("name", "")
-        raise element.error(f"param {name!r}: {text!r} is not {kind.__name__}")
-    return value
-
-
-def _ros2_typed(texts: str | list[str], type_name: str | None, element: Element) -> Any:
-    """A ROS 2 parameter's value from its text (or texts, split by value-sep) and type."""
-    if type_name is not None and type_name not in ROS2_TYPES:
-        known = ", ".join(ROS2_TYPES)
-        raise element.error(f"unknown parameter type {type_name!r}; use one of {known}")
-    kind, is_list = ROS2_TYPES[type_name] if type_name else (None, False)
-    if isinstance(texts, list):
-        if type_name is not None and not is_list and kind is not None:
-            raise element.error(f"value-sep makes a list: use type='list_of_{type_name}'")
-        return [_ros2_scalar(text, kind, element) for text in texts]
-    if not is_list:
-        return _ros2_scalar(texts, kind, element)
-    items = yaml_parameter(texts)
-    if not isinstance(items, list) or not all(
-        isinstance(item, kind) and not (kind is int and isinstance(item, bool)) for item in items
-    ):
-        name = element.attrs.get("name", "")
-        raise element.error(f"param {name!r}: {texts!r} is not a list of {kind.__name__}")
-    return items
 
 
 def _load_yaml(text: str, element: Element) -> Any:
@@ -426,18 +380,6 @@ def describe_container(container: ContainerDecl) -> str:
         for c in container.components
     )
     return f"{what} with {names}" if names else f"{what} (no components)"
-
-
-def _as_typed(value: Any) -> Any:
-    """A value a front-end typed already, as launch_ros's Node takes it: text stays text
-    (ParameterValue of str), not read as YAML again."""
-    from launch_ros.parameter_descriptions import ParameterValue
-
-    if isinstance(value, str):
-        return ParameterValue(value, value_type=str)
-    if isinstance(value, list):
-        return [_as_typed(item) for item in value]
-    return value
 
 
 def _short(text: str, limit: int = 60) -> str:
@@ -879,10 +821,14 @@ class Resolver:
         ns = self.namespace(element, "ns", scope) if "ns" in element.attrs else scope.namespace
         self.resolve_scope(element, scope.child(namespace=ns))
 
-    @tag("ros2", "group", {"scoped"}, marks={"scoped"})
+    @tag("ros2", "group", {"scoped", "forwarding"}, marks={"scoped", "forwarding"})
     @tag("ros2", "timer", {"period"})
     def on_nested(self, element: Element, scope: Scope) -> None:
-        """GroupAction and TimerAction, built by their parse methods, one level deeper."""
+        """GroupAction and TimerAction, built by their parse methods, one level deeper (a
+        group's <keep>s are its parse method's; the other children are read when reached)."""
+        for child in element.children:
+            if element.tag == "group" and child.tag == "keep":
+                _check_tag(child, {"keep": {"name", "value"}}, scope, "group")
         self.run_nested(self.parse(element), element, scope)
 
     @tag("ros1", "include", {"file", "ns", "pass_all_args", "clear_params"},
@@ -970,59 +916,7 @@ class Resolver:
     @tag("ros2", "param", PARAM_ATTRS, under={"node", "composable_node"}, marks={"value_sep"})
     @tag("ros2", "remap", {"from", "to"}, under={"node", "composable_node"})
     def on_node_part(self, element: Element, scope: Scope) -> None:
-        """Read by on_process() and composable_node() into their action's parameters and
-        remappings."""
-
-    def ros2_parameters(self, element: Element, scope: Scope, prefix: str = "") -> list[Any]:
-        """A <param> as launch_ros's Node takes its parameters: ``{name: value}``, typed as
-        launch_xml types it (by YAML, or by its ``type``; ``value-sep`` makes a list), or a
-        ParameterFile (``from``); ``<param name="group">`` holds ``<param>``s."""
-        from launch_ros.parameter_descriptions import ParameterFile
-
-        if "from" in element.attrs:
-            path = Path(self.text(element, "from", scope))
-            path = path if path.is_absolute() else scope.file.parent / path
-            substs = self.flag(element, "allow_substs", scope)
-            parameter_file = ParameterFile(str(path), allow_substs=substs)
-            parameter_file.where = element.where
-            return [parameter_file]
-        if "allow_substs" in element.attrs:
-            raise element.error("allow_substs is for a parameters file (<param from=...>)")
-        name = prefix + self.text(element, "name", scope)
-        if element.children:  # a group of parameters: their names start with its own
-            if {"value", "type"} & element.attrs.keys():
-                raise element.error("<param> holds either a value or <param>s, not both")
-            found = []
-            for child in element.children:
-                _check_tag(child, {"param": PARAM_ATTRS - {"from"}}, scope, "param")
-                if self.enabled(child, scope):
-                    found += self.ros2_parameters(child, scope, name + ".")
-            return found
-        if "value_sep" in element.attrs:  # each item substituted and typed on its own
-            separator = element.attrs["value_sep"]
-            items = element.attrs.get("value", "").split(separator) if separator else []
-            texts: str | list[str] = [substitute(item, scope, element) for item in items]
-        else:
-            texts = self.text(element, "value", scope)
-        value = _ros2_typed(texts, element.attrs.get("type"), element)
-        _check_params(element, None, name, value)  # at the <param>'s own line
-        return [{name: _as_typed(value)}]
-
-    def node_parts(self, element: Element, scope: Scope) -> tuple[list[Any], list[Any]]:
-        """The parameters and remappings a ROS 2 <node> or <composable_node> gives its action
-        (its <param> and <remap> children; the others are read in the node's scope)."""
-        parameters: list[Any] = []
-        remappings: list[tuple[str, str]] = []
-        for child in element.children:
-            if child.tag == "param" and self.enabled(child, scope):
-                parameters += self.ros2_parameters(child, scope)
-            elif child.tag == "remap" and self.enabled(child, scope):
-                pair = (self.text(child, "from", scope), self.text(child, "to", scope))
-                for name, side in zip(pair, ("from", "to"), strict=True):
-                    if remap_problem(name, side):  # at its own line (launch_ros checks it too)
-                        raise child.error(remap_problem(name, side) or "")
-                remappings.append(pair)
-        return parameters, remappings
+        """Read by Node.parse and ComposableNode.parse into their parameters and remappings."""
 
     # ROS 1 parameters go to the parameter server, under the namespace of their scope (inside
     # <node>: the node's private namespace).
@@ -1157,63 +1051,19 @@ class Resolver:
          marks={"exec", "namespace"})  # fmt: skip
     @tag("ros2", "load_composable_node", {"target"})
     def on_container(self, element: Element, scope: Scope) -> None:
-        """ComposableNodeContainer with its components, or LoadComposableNodes for one
-        (``target``)."""
-        from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
-
-        nodes = []
+        """ComposableNodeContainer with its components, or LoadComposableNodes for a container
+        (``target``), built by their parse methods."""
         for child in element.children:
             _check_tag(child, allowed_tags("ros2", "node_container"), scope, element.tag)
-            if self.enabled(child, scope):
-                nodes.append(self.composable_node(child, scope))
-        action: Any
-        if element.tag == "load_composable_node":
-            target = self.text(element, "target", scope)
-            action = LoadComposableNodes(
-                composable_node_descriptions=nodes, target_container=target
-            )
-        else:
-            action = ComposableNodeContainer(
-                package=self.text(element, "pkg", scope),
-                executable=self.text(element, "exec", scope),
-                name=self.text(element, "name", scope),
-                namespace=self.text(element, "namespace", scope, ""),
-                arguments=self.words(element, "args", scope),
-                output=self.text(element, "output", scope, "log"),
-                composable_node_descriptions=nodes,
-            )
-        self.run(action, element, scope)
+            self.check_children(child, scope)
+        self.run(self.parse(element), element, scope)
 
     @tag(
         "ros2", "composable_node", {"pkg", "plugin", "name", "namespace"}, under={"node_container"}
     )
-    def composable_node(self, element: Element, scope: Scope) -> Any:
-        """launch_ros's ComposableNode, for the container's action."""
-        from launch_ros.descriptions import ComposableNode
-
-        extra = []
-        for child in element.children:
-            _check_tag(child, allowed_tags("ros2", "composable_node"), scope, element.tag)
-            if child.tag == "extra_arg" and self.enabled(child, scope):
-                extra.append({self.text(child, "name", scope): self.text(child, "value", scope)})
-        parameters, remappings = self.node_parts(element, scope)
-        node = ComposableNode(
-            package=self.text(element, "pkg", scope),
-            plugin=self.text(element, "plugin", scope),
-            name=self.text(element, "name", scope, "") or None,
-            namespace=(
-                self.text(element, "namespace", scope) if "namespace" in element.attrs else None
-            ),
-            parameters=parameters,
-            remappings=remappings,
-            extra_arguments=extra,
-        )
-        node.where = element.where
-        return node
-
     @tag("ros2", "extra_arg", {"name", "value"}, under={"composable_node"})
-    def on_extra_arg(self, element: Element, scope: Scope) -> None:
-        """Read by composable_node() itself."""
+    def on_component_part(self, element: Element, scope: Scope) -> None:
+        """Read by ComposableNode.parse (its container's parse method)."""
 
     @tag("ros1", "test", {"pkg", "type", "name", "test_name", "args", "ns", "clear_params",
                           "cwd", "launch_prefix", "retry", "time_limit"})  # fmt: skip
@@ -1222,105 +1072,81 @@ class Resolver:
         name = element.attrs.get("test_name") or element.attrs.get("name") or "<test>"
         self.tests.append(f"{name} ({element.where})")
 
-    @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
-                          "required", "launch_prefix", "clear_params"},
-         marks={"type", "ns", "clear_params"})  # fmt: skip
     @tag("ros2", "node", {"pkg", "exec", "name", "namespace", "ros_args", "exec_name"}
          | PROCESS_ATTRS,
          marks={"exec", "namespace", "ros_args"})  # fmt: skip
     @tag("ros2", "executable", {"cmd", "name", "cwd"} | PROCESS_ATTRS)
-    def on_process(self, element: Element, scope: Scope) -> None:
-        """<node> (both formats) and <executable>: the one place a NodeDecl is filled.
+    def on_ros2_process(self, element: Element, scope: Scope) -> None:
+        """launch_ros's Node or launch's ExecuteProcess, built by their parse methods (their
+        <param>, <remap> and <env> children read into the action), in a scope of its own."""
+        self.check_children(element, scope)
+        self.run(self.parse(element), element, scope.child(in_node=True))
 
-        Each attribute is read the same way for every tag: one the tag does not allow was
-        refused already (its @tag attributes), so here it reads as its default.
-        """
-        ros1 = scope.fmt == "ros1"
-        package = executable = cmd = name = None
-        if element.tag == "executable":
-            cmd = self.words(element, "cmd", scope)
-            if not cmd:
-                raise element.error("<executable> needs a non-empty 'cmd'")
-            name = self.text(element, "name", scope, "") or None
-        else:
-            self.clear_params(element, scope)
-            package = self.text(element, "pkg", scope)
-            executable = self.text(element, "type" if ros1 else "exec", scope)
-            for attr, value in (("pkg", package), ("type" if ros1 else "exec", executable)):
-                if not value.strip():
-                    raise element.error(f"<node {attr}> is empty")
-            if ros1 or "name" in element.attrs:  # a ROS 1 node must be named
-                name = self.text(element, "name", scope)
-                if not valid_name(name):
-                    raise element.error(f"invalid node name {name!r}")
-        ns_attr = "ns" if ros1 else "namespace"
+    def check_children(self, element: Element, scope: Scope) -> None:
+        """The children a <node>, <executable> or <composable_node> may hold, and the
+        <param>s a group of parameters holds (their parse methods read them)."""
+        for child in element.children:
+            _check_tag(child, allowed_tags("ros2", element.tag), scope, element.tag)
+            if child.tag == "param":
+                self.check_param_group(child, scope)
+
+    def check_param_group(self, element: Element, scope: Scope) -> None:
+        for child in element.children:
+            _check_tag(child, {"param": PARAM_ATTRS - {"from"}}, scope, "param")
+            self.check_param_group(child, scope)
+
+    @tag("ros1", "node", {"pkg", "type", "name", "ns", "args", "output", "respawn", "respawn_delay",
+                          "required", "launch_prefix", "clear_params"},
+         marks={"type", "ns", "clear_params"})  # fmt: skip
+    def on_ros1_node(self, element: Element, scope: Scope) -> None:
+        """roslaunch's <node>: launch_ros's Node in the node's private scope (where its
+        <param>s go, to the parameter server; its parameters are given in finish())."""
+        self.clear_params(element, scope)
+        package = self.text(element, "pkg", scope)
+        executable = self.text(element, "type", scope)
+        for attr, value in (("pkg", package), ("type", executable)):
+            if not value.strip():
+                raise element.error(f"<node {attr}> is empty")
+        name = self.text(element, "name", scope)  # a ROS 1 node must be named
+        if not valid_name(name):
+            raise element.error(f"invalid node name {name!r}")
         namespace = scope.namespace
-        if ns_attr in element.attrs:
-            namespace = self.namespace(element, ns_attr, scope)
-        cwd = self.text(element, "cwd", scope, "") or None
+        if "ns" in element.attrs:
+            namespace = self.namespace(element, "ns", scope)
         args = self.words(element, "args", scope)
         output = self.text(element, "output", scope, "log")
-        outputs = ("screen", "log") if ros1 else ("screen", "log", "both")
-        if output not in outputs:
-            raise element.error(f"output={output!r}; use one of {', '.join(outputs)}")
+        if output not in ("screen", "log"):
+            raise element.error(f"output={output!r}; use one of screen, log")
         respawn = self.flag(element, "respawn", scope)
         respawn_delay = self.number(element, "respawn_delay", scope) or 0.0
-        retries = self.number(element, "respawn_max_retries", scope, int)
         launch_prefix = self.words(element, "launch_prefix", scope)
-        ros_args = self.words(element, "ros_args", scope)
-        on_exit = self.text(element, "on_exit", scope, "")
-        if on_exit not in ("", "shutdown"):
-            raise element.error(f"on_exit={on_exit!r} is not supported; use 'shutdown'")
-        required = self.flag(element, "required", scope) or on_exit == "shutdown"
+        required = self.flag(element, "required", scope)
         if required and respawn:
-            raise element.error(
-                "a node cannot be both respawn and required"
-                if ros1
-                else "a process cannot both respawn and shut the launch down on exit"
-            )
-        sigterm_timeout = self.number(element, "sigterm_timeout", scope)
-        sigkill_timeout = self.number(element, "sigkill_timeout", scope)
-        # The children (<param>, <remap>, <env>) apply to a scope of the node's own, as anywhere
-        # else. In ROS 1 its namespace is the node's private one, where its <param>s go, and its
-        # parameters come from the parameter server only (finish()), not from a ROS 2 includer.
+            raise element.error("a node cannot be both respawn and required")
+        # The children (<param>, <remap>, <env>) apply to a scope of the node's own, its
+        # private namespace, where its <param>s go; the ~params written before it in its scope
+        # go there first.
         private = f"{namespace.rstrip('/')}/{name}"
-        if ros1:  # the ~params written before it in its scope, then its own <param>s
-            for key, value, where in scope.private:
-                for full, item in flatten(value, "/", f"{private}/{key}"):
-                    self.param_server[full] = item
-                    self.param_origin[full] = ("~" + key, where)
-                self.private_given[(key, where)] = True
-        node_scope = scope.child(namespace=private, params=[], in_node=True) if ros1 else (
-            scope.child(in_node=True))  # fmt: skip
+        for key, value, where in scope.private:
+            for full, item in flatten(value, "/", f"{private}/{key}"):
+                self.param_server[full] = item
+                self.param_origin[full] = ("~" + key, where)
+            self.private_given[(key, where)] = True
+        node_scope = scope.child(namespace=private, params=[], in_node=True)
         self.resolve_children(element, node_scope, element.tag)
-        # launch_ros's Node or launch's ExecuteProcess, in the node's own scope (both formats)
-        from launch.actions import ExecuteProcess, Shutdown
+        from launch.actions import Shutdown
         from launch_ros.actions import Node
 
-        process: dict[str, Any] = {
-            "output": output, "respawn": respawn, "respawn_delay": respawn_delay,
-            "respawn_max_retries": retries, "sigterm_timeout": sigterm_timeout,
-            "sigkill_timeout": sigkill_timeout, "prefix": shlex.join(launch_prefix) or None,
-            "cwd": cwd, "on_exit": Shutdown() if required else None,
-        }  # fmt: skip
-        if cmd is not None:
-            action: Any = ExecuteProcess(cmd=cmd + args, name=name, **process)
-        else:
-            # ROS 1: the node's namespace is absolute already (its scope's is its private one,
-            # where its <param>s went); its parameters come from the parameter server at the
-            # end (finish()), its remaps are its scope's (the last of a name won).
-            parameters, remappings = ([], []) if ros1 else self.node_parts(element, scope)
-            given_ns = ros1 or ns_attr in element.attrs
-            action = Node(
-                package=package, executable=executable, name=name,
-                namespace=namespace if given_ns else None,
-                exec_name=self.text(element, "exec_name", scope, "") or None,
-                parameters=parameters, remappings=remappings,
-                arguments=args, ros_arguments=ros_args, **process,
-            )  # fmt: skip
+        # Its namespace is absolute already (its scope's is its private one); its parameters
+        # come from the parameter server at the end (finish()), its remaps are its scope's (the
+        # last of a name won).
+        action = Node(
+            package=package, executable=executable, name=name, namespace=namespace,
+            arguments=args, output=output, respawn=respawn, respawn_delay=respawn_delay,
+            prefix=shlex.join(launch_prefix) or None, on_exit=Shutdown() if required else None,
+        )  # fmt: skip
         self.run(action, element, node_scope)
-        if ros1:
-            self.ros1_nodes.append(self.nodes[-1])
+        self.ros1_nodes.append(self.nodes[-1])
 
 
 def resolve(path: Path, args: dict[str, str], options: Options | None = None) -> Launch:

@@ -139,6 +139,94 @@ def test_what_no_parse_method_reads_is_refused_at_its_line(text, message):
         load(text, "bad.launch.xml")
 
 
+def test_node_and_executable_as_launch_xmls_and_launch_ross_tests():  # test_executable, test_node
+    from launch.actions import ExecuteProcess
+    from launch_ros.actions import Node
+
+    ld = load("""\
+        <launch>
+            <let name="who" value="talker"/>
+            <node pkg="ros_tutorials_topic" exec="talker" name="$(var who)" namespace="ns"
+                  args="-a 'b c'" respawn="true" respawn_delay="2">
+                <param name="rate" value="2.5"/>
+                <param name="group"><param name="x" value="1"/></param>
+                <remap from="chatter" to="talk"/>
+                <remap from="a" to="b" if="false"/>
+                <env name="A" value="$(var who)"/>
+            </node>
+            <executable cmd="echo hi" args="there" name="say" cwd="/tmp" output="screen"
+                        on_exit="shutdown"/>
+        </launch>
+        """)
+    let, node, executable = ld.entities
+    assert type(node) is Node and type(executable) is ExecuteProcess
+    context = LaunchContext()
+    let.execute(context)
+    decl = node.process_decl(context)
+    assert (decl.name, decl.namespace, decl.args) == ("talker", "/ns", ["-a", "b c"])
+    assert decl.params == [("rate", 2.5), ("group.x", 1)] and decl.remaps == [("chatter", "talk")]
+    assert decl.env == {"A": "talker"} and decl.respawn and decl.respawn_delay == 2.0
+    decl = executable.process_decl(context)
+    assert (decl.cmd, decl.label, decl.cwd, decl.output) == (
+        ["echo", "hi", "there"], "say", "/tmp", "screen")  # fmt: skip
+    assert decl.required
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('<node pkg="a" exec="b" respawn_delay="soon"/>',
+         ":2: 'respawn_delay' must be a non-negative number, not 'soon'"),
+        ('<node pkg="a" exec="b" colour="red"/>', ":2: unknown attribute 'colour' on <node>"),
+        ('<node pkg="a" exec=" "/>', ":2: <node exec> is empty"),
+        ("<executable cmd=\"echo 'a\"/>", ":2: cmd=\"echo 'a\": No closing quotation"),
+        ('<executable name="x"/>', ":2: <executable> needs a non-empty 'cmd'"),
+        ('<executable cmd="x" output=""/>', ":2: output=''; use one of screen, log, both"),
+        ('<load_composable_node><composable_node pkg="p" plugin="p::X"/></load_composable_node>',
+         ":2: <load_composable_node> needs a 'target' attribute"),
+        ('<executable cmd="sleep 1" on_exit="restart"/>',
+         ":2: on_exit='restart' is not supported; use 'shutdown'"),
+    ],
+)  # fmt: skip
+def test_node_and_executable_attributes_are_checked_at_their_line(text, message):
+    with pytest.raises(LaunchError, match=message):
+        ld = load(f"<launch>\n{text}\n</launch>\n", "bad.launch.xml")
+        ld.entities[0].process_decl(LaunchContext())
+
+
+def test_container_tags_build_launch_ros_containers():  # launch_ros's test_composable_node
+    from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes
+
+    ld = load("""\
+        <launch>
+            <node_container pkg="rclcpp_components" exec="component_container" name="box"
+                            namespace="ns">
+                <composable_node pkg="demo" plugin="demo::Talker" name="talker">
+                    <param name="rate" value="2"/>
+                    <remap from="chatter" to="talk"/>
+                    <extra_arg name="use_intra_process_comms" value="true"/>
+                </composable_node>
+                <composable_node pkg="demo" plugin="demo::Off" unless="true"/>
+            </node_container>
+            <load_composable_node target="/ns/box">
+                <composable_node pkg="demo" plugin="demo::Listener"/>
+            </load_composable_node>
+        </launch>
+        """)
+    container, load_nodes = ld.entities
+    assert isinstance(container, ComposableNodeContainer)
+    assert isinstance(load_nodes, LoadComposableNodes)
+    talker, off = container.composable_node_descriptions
+    context = LaunchContext()
+    decl = talker.component_decl(context, "/ns")
+    assert (decl.name, decl.namespace, decl.plugin) == ("talker", "/ns", "demo::Talker")
+    assert decl.params == [("rate", 2)] and decl.remaps == [("chatter", "talk")]
+    assert decl.extra_args == [("use_intra_process_comms", "true")]
+    assert not off.condition.evaluate(context)
+    (listener,) = load_nodes.composable_node_descriptions
+    assert listener.component_decl(context, "/").plugin == "demo::Listener"
+
+
 def test_a_tag_is_exposed_once():
     from launch.frontend.expose import action_parse_methods
 

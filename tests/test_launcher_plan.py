@@ -394,6 +394,33 @@ def test_ros2_namespaces_scoped_groups_and_settings(tmp_path):
     assert tail == ["--params-file", str(tmp_path / "p.yaml"), "--log-level", "debug"]
 
 
+def test_ros2_group_forwarding_and_keep_as_in_ros2_launch(tmp_path):
+    # GroupAction(forwarding=False): the group starts with only its <keep>s' configurations.
+    xml = (
+        '<launch>\n<let name="who" value="outer"/><let name="other" value="x"/>\n'
+        '<group scoped="true" forwarding="false">\n'
+        '<keep name="who" value="$(var who)_kept"/>\n' + node2("$(var who)") + "\n"
+        "$BODY</group>\n" + node2("$(var who)_after") + "</launch>"
+    )
+    inside, after = plan(tmp_path, xml.replace("$BODY", ""), "t.launch.xml")
+    assert (inside.label, after.label) == ("outer_kept", "outer_after")
+    message = error(tmp_path, xml.replace("$BODY", node2("$(var other)")), "t.launch.xml")
+    assert ":6: argument 'other' is not declared here (declared: who)" in message
+    forwarded = xml.replace('forwarding="false"', 'forwarding="true"')
+    inside, _, after = plan(tmp_path, forwarded.replace("$BODY", node2("$(var other)")),
+                            "t.launch.xml")  # fmt: skip
+    assert (inside.label, after.label) == ("outer_kept", "outer_after")
+    yaml_text = (
+        "launch:\n- let: {name: who, value: outer}\n"
+        "- group:\n    forwarding: false\n    keep: [{name: who, value: $(var who)_y}]\n"
+        "    children:\n    - node: {pkg: ros_tutorials_topic, exec: publisher, name: $(var who)}\n"
+    )
+    assert plan(tmp_path, yaml_text, "t.launch.yaml")[0].label == "outer_y"
+    bad = xml.replace('<keep name="who"', '<keep colour="red" name="who"').replace("$BODY", "")
+    message = error(tmp_path, bad, "t.launch.xml")
+    assert ":4: unknown attribute 'colour' on <keep>; allowed: if, name, unless, value" in message
+
+
 def test_ros2_include_is_scoped(tmp_path):
     (tmp_path / "inner.launch.xml").write_text(
         '<launch><arg name="who"/><set_env name="LEAK" value="1"/>'
