@@ -114,8 +114,10 @@ class DeclareLaunchArgument(Action):
             raise self.error(f"argument {self.name!r} is {value!r}; choose one of {self.choices}")
 
 
-@expose_action("let")
-class SetLaunchConfiguration(Action):
+class NameValueAction(Action):
+    """An action that sets NAME to VALUE (`<let>`, `<set_env>`, launch_ros's `<set_parameter>`):
+    their one constructor and front-end parse; each says in execute what setting means."""
+
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
         super().__init__(**kw)
         self.name, self.value = name, value
@@ -127,6 +129,9 @@ class SetLaunchConfiguration(Action):
         kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
         return cls, kwargs
 
+
+@expose_action("let")
+class SetLaunchConfiguration(NameValueAction):
     def execute(self, context: LaunchContext) -> None:
         context.launch_configurations[perform(self.name, context)] = perform(self.value, context)
 
@@ -149,18 +154,7 @@ def env_name(action: Any, context: LaunchContext) -> str:
 
 
 @expose_action("set_env")
-class SetEnvironmentVariable(Action):
-    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, **kw: Any):
-        super().__init__(**kw)
-        self.name, self.value = name, value
-
-    @classmethod
-    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
-        _, kwargs = super().parse(entity, parser)
-        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
-        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
-        return cls, kwargs
-
+class SetEnvironmentVariable(NameValueAction):
     def execute(self, context: LaunchContext) -> None:
         context.set_env(env_name(self, context), perform(self.value, context))
 

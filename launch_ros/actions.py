@@ -7,7 +7,7 @@ from typing import Any
 
 from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
-from launch.actions import ExecuteProcess, command_words, frontend_attr
+from launch.actions import ExecuteProcess, NameValueAction, command_words, frontend_attr
 from launch.frontend.expose import expose_action
 from launch_ros.utilities import (
     frontend_node_parts,
@@ -228,18 +228,7 @@ PushROSNamespace = PushRosNamespace
 
 
 @expose_action("set_parameter")
-class SetParameter(Action):
-    def __init__(self, name: Any, value: Any, **kw: Any) -> None:
-        super().__init__(**kw)
-        self.name, self.value = name, value
-
-    @classmethod
-    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
-        _, kwargs = super().parse(entity, parser)
-        kwargs["name"] = parser.parse_substitution(entity.get_attr("name"))
-        kwargs["value"] = parser.parse_substitution(entity.get_attr("value"))
-        return cls, kwargs
-
+class SetParameter(NameValueAction):
     def execute(self, context: LaunchContext) -> None:
         name = perform(self.name, context)
         value = parameter_value(self.value, context, self.where)
