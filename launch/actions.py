@@ -44,8 +44,9 @@ from launcher.declarations import (
 __all__ = [
     "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
     "GroupAction", "IncludeLaunchDescription", "LogInfo", "OpaqueFunction",
-    "RegisterEventHandler", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
-    "TimerAction", "UnsetEnvironmentVariable", "UnsetLaunchConfiguration",
+    "RegisterEventHandler", "ResetLaunchConfigurations", "SetEnvironmentVariable",
+    "SetLaunchConfiguration", "Shutdown", "TimerAction", "UnsetEnvironmentVariable",
+    "UnsetLaunchConfiguration",
 ]  # fmt: skip
 
 
@@ -143,6 +144,36 @@ class UnsetLaunchConfiguration(Action):
 
     def execute(self, context: LaunchContext) -> None:
         context.launch_configurations.pop(perform(self.name, context), None)
+
+
+@expose_action("reset")
+class ResetLaunchConfigurations(Action):
+    """Forget every launch configuration but the ones given (`<reset>` with `<keep>`s); the
+    kept values are performed before anything is forgotten, as in ros2/launch."""
+
+    def __init__(self, launch_configurations: dict | None = None, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.launch_configurations = dict(launch_configurations or {})
+
+    @classmethod
+    def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
+        _, kwargs = super().parse(entity, parser)
+        keep = entity.get_attr("keep", data_type=list[Entity], optional=True) or []
+        kwargs["launch_configurations"] = {
+            tuple(parser.parse_substitution(item.get_attr("name"))): parser.parse_substitution(
+                item.get_attr("value")
+            )
+            for item in keep
+        }
+        return cls, kwargs
+
+    def execute(self, context: LaunchContext) -> None:
+        kept = {
+            perform(name, context): perform(value, context)
+            for name, value in self.launch_configurations.items()
+        }
+        context.launch_configurations.clear()
+        context.launch_configurations.update(kept)
 
 
 def env_name(action: Any, context: LaunchContext) -> str:

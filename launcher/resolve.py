@@ -3,7 +3,7 @@
 Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
 line (its attributes, where it may stand, the signs of its format) on the handler that reads
 it. A ROS 2 tag's handler has its action (launch/, launch_ros/) built by the parse method
-the action exposed (launch.frontend; ``<reset>`` is still read here) and executes it in the
+the action exposed (launch.frontend) and executes it in the
 file's scope (``run``): what the tag does is the action's. ROS 1's rules are its handlers':
 - ``<param>`` writes to a parameter server, as roslaunch does: names are relative to the
   namespace of their group, the last value written wins, wherever it is written. At the end
@@ -899,13 +899,10 @@ class Resolver:
 
     @tag("ros2", "reset", set())
     def on_reset(self, element: Element, scope: Scope) -> None:
-        """Forget every launch configuration but the <keep>s (values read before forgetting)."""
-        kept = {}
+        """ResetLaunchConfigurations, built by its parse (its <keep>s checked here first)."""
         for child in element.children:
             _check_tag(child, {"keep": {"name", "value"}}, scope, "reset")
-            kept[self.text(child, "name", scope)] = self.text(child, "value", scope)
-        scope.args.clear()
-        scope.args.update(kept)
+        self.on_exposed(element, scope)
 
     @tag("ros2", "set_parameter", {"name", "value"})
     def on_set_parameter(self, element: Element, scope: Scope) -> None:

@@ -15,6 +15,7 @@ import pytest
 from launch.actions import (
     AppendEnvironmentVariable,
     LogInfo,
+    ResetLaunchConfigurations,
     SetEnvironmentVariable,
     SetLaunchConfiguration,
     UnsetEnvironmentVariable,
@@ -40,6 +41,27 @@ def write(tmp_path: Path, name: str, text: str) -> Path:
     path = tmp_path / name
     path.write_text(textwrap.dedent(text))
     return path
+
+
+def test_reset_keeps_what_it_is_told_as_launch_xmls_test():  # launch_xml's test_reset.py
+    ld = load("""\
+        <launch>
+            <let name="foo" value="FOO"/>
+            <let name="bar" value="BAR"/>
+            <reset>
+                <keep name="bar" value="$(var bar)"/>
+                <keep name="baz" value="BAZ"/>
+            </reset>
+        </launch>
+        """)
+    assert isinstance(ld.entities[2], ResetLaunchConfigurations)
+    context = LaunchContext()
+    for entity in ld.entities:
+        entity.execute(context)
+    assert context.launch_configurations == {"bar": "BAR", "baz": "BAZ"}
+    # The Python API's spelling of the same action.
+    ResetLaunchConfigurations({"baz": "again"}).execute(context)
+    assert context.launch_configurations == {"baz": "again"}
 
 
 def test_let_and_var_as_launch_xmls_test():  # launch_xml/test/launch_xml/test_let_var.py
