@@ -1,5 +1,8 @@
 """launch.actions: what a Python launch file's LaunchDescription holds.
 
+(About 800 lines: every action of launch.actions, about twenty small classes, in the one
+module launch files import them from; ros2/launch keeps one file per action.)
+
 Each action's ``execute`` adds to the launcher's plan: a process (ExecuteProcess, and
 launch_ros's Node), a step (LogInfo, EmitEvent(Shutdown)), or a change to the scope the
 following actions see (DeclareLaunchArgument, SetEnvironmentVariable, GroupAction, ...).

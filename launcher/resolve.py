@@ -1,5 +1,9 @@
 """Resolve a launch file: arguments, conditions, substitutions and scopes -> node declarations.
 
+(About 1 150 lines: the markup front-ends' one table of tags, the scope every handler reads,
+and the ROS 1 dialect's rules, about 300 lines of it, which need both; what a ROS 2 tag does is
+its action's, in launch/ and launch_ros/.)
+
 Both XML formats and YAML are read here, each detected per file. Each tag has its ``@tag``
 line (its attributes, where it may stand, the signs of its format) on the handler that reads
 it. A ROS 2 tag's handler has its action (launch/, launch_ros/) built by the parse method

@@ -1,5 +1,8 @@
 """Supervise: start the planned processes, show their output, respawn them, shut them down.
 
+(About 690 lines: one event loop, whose starting, output, respawn, steps and stopping share its
+state and are read together; the guardian is guardian.py, the plan plan.py.)
+
 How nothing is left behind:
 - the launcher runs under its guardian (launcher/guardian.py), the process the user started:
   it passes signals on, is a child subreaper above the launcher, and when the launcher has

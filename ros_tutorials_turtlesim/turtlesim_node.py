@@ -1,5 +1,9 @@
 """turtlesim_node: the turtle simulator of the seeds' first ROS demo, on rclpy.
 
+(About 730 lines: the node's whole ROS side in one class, as turtlesim's own node has it,
+per-turtle endpoints, node services, the rotate action, parameters and snapshots; the physics
+is simulation.py's and the drawing canvas.py's.)
+
     turtlesim_node                                   # a window if there is a display
     turtlesim_node --ros-args -p headless:=true      # never a window
     turtlesim_node --ros-args -p snapshot_on_exit:=true -p snapshot_path:=/tmp/trail.png

@@ -1,5 +1,8 @@
 """viewer: the running ROS system in a browser, for machines where no window can open.
 
+(About 560 lines: the web server's routes, its guard of who may look, and its streams, read
+together; the ROS side is watch.py.)
+
     ros2 run ros_tutorials_web viewer              # http://127.0.0.1:8080/ (or a free port)
     ros2 run ros_tutorials_web viewer --port 9000  # exactly this port
     ros2 run ros_tutorials_web viewer --host 0.0.0.0   # reachable from other machines too

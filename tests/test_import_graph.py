@@ -253,3 +253,22 @@ def test_the_launch_model_knows_the_launcher_only_through_its_interface():
         if ".resolver" in line or "context.scope" in line
     ]
     assert not pokes, "the launch model reads the resolver's internals:\n" + "\n".join(pokes)
+
+
+# Over this many lines, a module of the toolkit says at its top why it is one module.
+LONG_MODULE = 550
+LESSON_PACKAGES = {"ros_tutorials_topic", "ros_tutorials_service", "ros_tutorials_parameter",
+                   "ros_tutorials_action"}  # fmt: skip
+
+
+def test_a_long_toolkit_module_says_why_at_its_top():
+    """Issue 37's rule: no file of the toolkit above about 500 lines without a reason written
+    at its top, as "(About N lines: ...)" in its docstring."""
+    unexplained = []
+    for name, path in project_modules(ROOT).items():
+        if name.split(".")[0] in LESSON_PACKAGES:
+            continue  # the lessons have their own, stricter rule (test_lessons.py)
+        text = path.read_text()
+        if text.count("\n") > LONG_MODULE and "(About " not in text[:1500]:
+            unexplained.append(f"{path.relative_to(ROOT)}: {text.count(chr(10))} lines")
+    assert not unexplained, "long modules without a reason at their top:\n" + "\n".join(unexplained)
