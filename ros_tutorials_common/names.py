@@ -13,6 +13,8 @@ TOKEN = r"[A-Za-z_][A-Za-z0-9_]*"  # one part of a node, namespace, topic or par
 RULE = "letters, digits and underscores, not starting with a digit"
 _REMAP_NAME = re.compile(rf"(~/|/)?{TOKEN}(/{TOKEN})*")
 _FROM_PREFIXES = ("rostopic://", "rosservice://")
+# A service's introspection topic is SERVICE + this (rcl's RCL_SERVICE_INTROSPECTION_TOPIC_POSTFIX).
+SERVICE_EVENT_SUFFIX = "/_service_event"
 
 
 def valid_remap_name(name: str, side: str) -> bool:

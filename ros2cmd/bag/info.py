@@ -13,6 +13,7 @@ import time
 
 from ros2cmd.bag.metadata import NS, TopicInfo
 from ros2cmd.bag.reader import Bag, BagReader
+from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
 
 
 def _stamp(nanoseconds: int) -> tuple[str, str, str]:
@@ -34,9 +35,6 @@ def file_size(size: float, units: tuple[str, ...] = ("B", "KiB", "MiB", "GiB", "
         size /= 1024
         index += 1
     return f"{size:.{0 if index == 0 else 1}f} {units[index]}"
-
-
-SERVICE_EVENT_SUFFIX = "/_service_event"  # rcl's RCL_SERVICE_INTROSPECTION_TOPIC_POSTFIX
 
 
 def is_service_event_topic(name: str, type_name: str) -> bool:

@@ -34,7 +34,7 @@ from rclpy.qos import HistoryPolicy, QoSProfile
 
 from ros2cmd.bag import definitions
 from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.info import is_service_event_topic, ros1_info, service_type
+from ros2cmd.bag.info import is_service_event_topic, ros1_info, service_name, service_type
 from ros2cmd.bag.keyboard import Keyboard
 from ros2cmd.bag.loss import LossCount
 from ros2cmd.bag.metadata import TopicInfo
@@ -127,7 +127,7 @@ class TopicFilter:
         else:
             if not (o.all_services or o.services or o.regex):
                 return False
-            service = topic[: -len("/_service_event")]
+            service = service_name(topic)
             if (
                 not o.all_services
                 and topic not in o.services

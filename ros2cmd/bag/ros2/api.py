@@ -10,11 +10,11 @@ import os
 import sys
 
 from ros2cmd.errors import ToolError
+from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
 
 STORAGES = ["mcap", "sqlite3"]  # what a Jazzy install registers
 MCAP_PRESETS = ["none", "fastwrite", "zstd_fast", "zstd_small"]  # rosbag2_storage_mcap's
 LOG_LEVELS = ["debug", "info", "warn", "error", "fatal"]
-SERVICE_EVENT_SUFFIX = "/_service_event"
 
 
 def print_error(text: str) -> str:

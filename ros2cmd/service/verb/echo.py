@@ -19,10 +19,10 @@ from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.messages import MessageDumper, message_to_csv, message_to_ordered
 from ros2cmd.service.api import wait_for_types
 from ros2cmd.typenames import load_type
+from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
 
 HELP = "Echo a service"
 DEFAULT_TRUNCATE_LENGTH = 128  # longer strings and arrays are shortened
-EVENT_SUFFIX = "/_service_event"  # rclpy's (and rcl's) introspection topic: SERVICE + this
 EVENT_TYPES = {
     getattr(ServiceEventInfo, name): name
     for name in ("REQUEST_SENT", "REQUEST_RECEIVED", "RESPONSE_SENT", "RESPONSE_RECEIVED")
@@ -81,7 +81,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
         if type_name is None:
             type_name = wait_for_types(graph, service)[0]
         event_type = load_type(type_name, ("srv",)).Event
-        topic = service + EVENT_SUFFIX
+        topic = service + SERVICE_EVENT_SUFFIX
         received: deque = deque()
         subscription = graph.node.create_subscription(
             event_type, topic, lambda event: received.append(event), qos_profile_services_default
