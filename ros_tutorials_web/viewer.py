@@ -223,9 +223,11 @@ class Guard:
                     f"Origin {page[:100]!r} is not this viewer's page (a proxy's page is allowed "
                     "with --allow-origin ORIGIN)"
                 )
-        if request.path.startswith("/static/"):
+        if request.path.startswith("/static/") and "/.." not in request.path:
             return None  # the page's own files: nothing in them to hide
-        if not hmac.compare_digest(self.given_token(request).encode(), self.token.encode()):
+        # Header bytes that are not UTF-8 come as lone surrogates: compared as they came.
+        given = self.given_token(request).encode("utf-8", "surrogateescape")
+        if not hmac.compare_digest(given, self.token.encode()):
             return "token", "no valid token: open the link the viewer printed (with ?token=)"
         return None
 

@@ -355,6 +355,33 @@ class TestViewer:
 
         asyncio.run(check())
 
+    def test_a_crafted_token_or_path_is_refused_in_one_line(self, viewer: str) -> None:
+        """A token of bytes that are not UTF-8 (a header or a cookie) and a path that climbs
+        out of /static/: each a 403 like any wrong token, never a 500."""
+        port = int(re.search(r":(\d+)/", viewer).group(1))
+        for header in (
+            b"Authorization: token \xff\xfe",
+            b"Cookie: ros_viewer_token_%d=\xff" % port,
+        ):
+            with socket.create_connection(("127.0.0.1", port), timeout=30) as sock:
+                sock.sendall(
+                    b"GET /api/log HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n%s\r\n"
+                    b"Connection: close\r\n\r\n" % (port, header)
+                )
+                answer = b""
+                while chunk := sock.recv(65536):
+                    answer += chunk
+            assert answer.startswith(b"HTTP/1.1 403"), answer[:200]
+            assert b"no valid token" in answer
+
+        async def check() -> None:
+            async with aiohttp.ClientSession() as client:
+                page = viewer.split("?token=")[0]
+                async with client.get(page + "static/../api/log") as got:
+                    assert got.status != 200
+
+        asyncio.run(check())
+
 
 def test_a_forwarded_port_is_allowed_by_name(own_domain, node_process) -> None:
     """A cloud editor shows the page from an origin of its own (its forwarded port), and its
