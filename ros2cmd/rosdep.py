@@ -122,7 +122,10 @@ def installed_packages(names: Sequence[str]) -> dict[str, object]:
 
 def keys(package: object, types: Sequence[str]) -> list[str]:
     """The package's rosdep keys of those dependency types, their conditions evaluated."""
-    package.evaluate_conditions({**os.environ, "ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"})
+    try:
+        package.evaluate_conditions({**os.environ, "ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"})
+    except ValueError as error:  # a condition="..." catkin_pkg cannot read
+        raise ToolError(f"package {package.name}: {' '.join(str(error).split())}") from None
     names = []
     for kind in types:
         for depend in getattr(package, f"{kind}_depends"):

@@ -39,6 +39,7 @@ class SequentialReader:
     def open_uri(self, uri: str) -> None:
         if self._close is not None:
             self._close()
+            self._reader = self._close = self._next = None  # closed, until a bag opens
         try:
             reader = BagReader(uri)
         except BagError as error:

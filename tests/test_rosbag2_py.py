@@ -189,3 +189,9 @@ def test_what_rosbag2_refuses_is_a_runtime_error(tmp_path):
     reader = rosbag2_py.SequentialReader()
     with pytest.raises(RuntimeError, match="does not exist"):
         reader.open_uri(str(tmp_path / "nothing"))
+    # A reader whose second bag would not open is closed, not reading the first bag's file.
+    reader.open_uri(str(tmp_path / "y"))
+    with pytest.raises(RuntimeError, match="does not exist"):
+        reader.open_uri(str(tmp_path / "nothing"))
+    with pytest.raises(RuntimeError, match="Bag is not open"):
+        reader.has_next()

@@ -141,3 +141,9 @@ def test_conditions_are_evaluated_and_a_broken_package_xml_is_one_line(tmp_path)
     assert result.returncode == 1 and result.stdout == ""
     assert result.stderr.startswith("error: Error(s) in package 'src/conditional/package.xml'")
     assert result.stderr.count("\n") == 1
+    # A condition catkin_pkg cannot read: one line naming the package, not a traceback.
+    manifest.write_text(MANIFEST.replace('condition="', 'condition="$ROS_VERSION == ', 1))
+    result = run(tmp_path, *PAGES_LINE)
+    assert result.returncode == 1 and "Traceback" not in result.stderr, result.stderr
+    assert result.stderr.startswith("error: package conditional: ")
+    assert result.stderr.count("\n") == 1
