@@ -158,7 +158,7 @@ def normalize(value: Any, where: str = "") -> list[Substitution | str]:
         items = list(value)
     except TypeError:
         raise LaunchError(
-            f"{where}: expected text or substitutions, got {type(value).__name__}"
+            f"{where or caller_where()}: expected text or substitutions, got {type(value).__name__}"
         ) from None
     out: list[Substitution | str] = []
     for item in items:

@@ -263,7 +263,7 @@ class LogInfo(Action):
         return cls, kwargs
 
     def execute(self, context: LaunchContext) -> None:
-        parts = normalize(self.msg)
+        parts = normalize(self.msg, self.where)
         plain = all(isinstance(p, str) for p in parts)
         if context.locals.get("runtime") and (not plain or "once" in context.locals):
             # In an event handler: performed when the event happens, as ros2 launch does
@@ -275,7 +275,8 @@ class LogInfo(Action):
 
     def step_when_returned(self, when: When, context: LaunchContext) -> Step:
         text = "".join(
-            part if isinstance(part, str) else part.perform(context) for part in normalize(self.msg)
+            part if isinstance(part, str) else part.perform(context)
+            for part in normalize(self.msg, self.where)
         )
         return Step(when, "log", text)
 

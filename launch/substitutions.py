@@ -153,7 +153,7 @@ class PythonExpression(Substitution):
     def perform(self, context: LaunchContext) -> str:
         text = perform(self.expression, context)
         names: dict[str, Any] = {}
-        for module in normalize(self.python_modules):
+        for module in normalize(self.python_modules, self.where):
             name = perform(module, context)
             imported = __import__(name)
             names[name] = imported
@@ -189,7 +189,7 @@ class Command(Substitution):
     def perform(self, context: LaunchContext) -> str:
         from launcher.substitutions import run_command
 
-        words = [perform(part, context) for part in normalize(self.command)]
+        words = [perform(part, context) for part in normalize(self.command, self.where)]
         text = " ".join(words) if len(words) > 1 else words[0]
         return run_command(
             text, self.error, f"Command {text!r}", context.environment, self.on_stderr

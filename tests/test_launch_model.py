@@ -472,6 +472,22 @@ def generate_launch_description():
     assert "cancel_on_shutdwn" in str(raised.value)
 
 
+def test_a_value_that_is_no_text_is_refused_at_the_files_line(tmp_path):
+    path = write(
+        tmp_path,
+        "t.launch.py",
+        """from launch import LaunchDescription
+from launch.actions import LogInfo
+
+def generate_launch_description():
+    return LaunchDescription([LogInfo(msg=None)])
+""",
+    )
+    with pytest.raises(LaunchError) as raised:
+        resolve(path, {}, Options())
+    assert str(raised.value) == f"{path}:5: expected text or substitutions, got NoneType"
+
+
 def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
     # A 125 KB file: a 1 MB argument, made by repetition, used by 3000 <param>s.
     params = "".join(f'<param name="p{i}" value="$(var b)"/>\n' for i in range(3000))
