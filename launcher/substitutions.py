@@ -14,13 +14,17 @@ unless the user passes --allow-code; so is an $(eval) that needs code to compute
 from __future__ import annotations
 
 import atexit
+import contextlib
 import math
 import os
 import re
+import selectors
 import shlex
 import shutil
+import signal
 import subprocess
 import tempfile
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
@@ -35,6 +39,7 @@ TRUE_WORDS = ("true", "1")
 _ESCAPE = re.compile(r"\\(.)", re.DOTALL)
 MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 MAX_SUBSTITUTED = 1024 * 1024  # characters one attribute's substitutions may expand to
+COMMAND_SECONDS = 60.0  # how long a command of $(command), Command or <param command> may run
 # Characters all the substitutions of one launch may expand to: each attribute within its cap,
 # a large argument used in thousands of attributes would still fill the memory.
 MAX_LAUNCH_SUBSTITUTED = 64 * 1024 * 1024
@@ -328,24 +333,31 @@ def run_command(
         raise error(f"{shown}: {problem}") from None
     if not command:
         raise error(f"{shown}: no command")
-    # Its output is read with the same limit as a file (1 MiB); stderr goes to a file, so
-    # neither pipe can fill up and block it, nor fill the launcher's memory.
+    # Its output is read with the same limit as a file (1 MiB), within COMMAND_SECONDS in all;
+    # stderr goes to a file, so neither pipe can fill up and block it, nor fill the launcher's
+    # memory. No terminal input (a command that reads stdin ends at once), and a session of its
+    # own, so that one kill reaches what it left running in the background too.
+    deadline = time.monotonic() + COMMAND_SECONDS
     with tempfile.TemporaryFile() as errors:
         try:
-            process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=errors, env=env)
+            process = subprocess.Popen(
+                command, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=errors,
+                env=env, start_new_session=True,
+            )  # fmt: skip
         except OSError as problem:
             raise error(f"{shown} failed: {problem}") from None
-        with process:
-            assert process.stdout is not None
-            out = process.stdout.read(MAX_INPUT_BYTES + 1)
-            if len(out) > MAX_INPUT_BYTES:
-                process.kill()
-                raise error(f"{shown} printed more than 1 MiB")
+        try:
+            out = _read_until(process, deadline, error, shown)
             try:
-                code = process.wait(timeout=60)
+                code = process.wait(timeout=max(0.0, deadline - time.monotonic()))
             except subprocess.TimeoutExpired:
-                process.kill()
-                raise error(f"{shown} failed: still running after 60 s") from None
+                raise error(f"{shown} failed: still running after {COMMAND_SECONDS:g} s") from None
+        finally:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(process.pid, signal.SIGKILL)  # ended: what it left behind
+            process.wait()
+            assert process.stdout is not None
+            process.stdout.close()
         errors.seek(0)
         stderr = errors.read(64 * 1024).decode(errors="replace")
     if code != 0 or (stderr.strip() and on_stderr == "fail"):
@@ -356,6 +368,28 @@ def run_command(
     except UnicodeDecodeError:
         raise error(f"{shown} printed something that is not UTF-8 text") from None
     return text + stderr if on_stderr == "capture" else text
+
+
+def _read_until(
+    process: subprocess.Popen, deadline: float, error: Callable[[str], Exception], shown: str
+) -> bytes:
+    """A command's stdout until it closes, at most MAX_INPUT_BYTES, before the deadline."""
+    assert process.stdout is not None
+    out = bytearray()
+    with selectors.DefaultSelector() as selector:
+        selector.register(process.stdout, selectors.EVENT_READ)
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise error(f"{shown} failed: still running after {COMMAND_SECONDS:g} s")
+            if not selector.select(min(left, 1.0)):
+                continue
+            chunk = os.read(process.stdout.fileno(), 65536)
+            if not chunk:
+                return bytes(out)
+            out += chunk
+            if len(out) > MAX_INPUT_BYTES:
+                raise error(f"{shown} printed more than 1 MiB")
 
 
 def _file_content(words: list[str], _context: Context, element: Element) -> str:

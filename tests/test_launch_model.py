@@ -488,6 +488,29 @@ def generate_launch_description():
     assert str(raised.value) == f"{path}:5: expected text or substitutions, got NoneType"
 
 
+def test_a_command_ends_or_is_ended_within_its_time(tmp_path, monkeypatch):
+    """$(command) (as Command and <param command>): no terminal input, so `cat` ends at once;
+    a command that leaves a child holding its output is ended at its time limit, child too."""
+    import launcher.substitutions
+
+    monkeypatch.setattr(launcher.substitutions, "COMMAND_SECONDS", 3.0)
+    reads = write(tmp_path, "reads.launch.xml", '<launch><let name="x" value="[$(command cat)]"/>'
+                  '<log message="got $(var x)"/></launch>')  # fmt: skip
+    assert resolve(reads, {}, Options(allow_code=True)).messages == ["got []"]
+    marker = tmp_path / "child.pid"
+    leaves = write(
+        tmp_path,
+        "leaves.launch.xml",
+        '<launch><let name="x" value="$(command \'sh -c &quot;sleep 600 &amp; echo $! > '
+        f"{marker}; echo hi&quot;')\"/></launch>",
+    )
+    with pytest.raises(LaunchError, match=r":1: \$\(command sh -c .*\) failed: still running"):
+        resolve(leaves, {}, Options(allow_code=True))
+    stat = Path(f"/proc/{int(marker.read_text())}/stat")
+    # Gone, or a zombie its new parent has not reaped yet: not running.
+    assert not stat.exists() or stat.read_text().rsplit(")", 1)[1].split()[0] == "Z"
+
+
 def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
     # A 125 KB file: a 1 MB argument, made by repetition, used by 3000 <param>s.
     params = "".join(f'<param name="p{i}" value="$(var b)"/>\n' for i in range(3000))
