@@ -521,6 +521,34 @@ def test_overlapping_chunks_are_read_in_log_time_order_from_the_start(tmp_path) 
     assert times == [20, 30, 40]
 
 
+def test_chunks_overlapping_without_end_are_refused_not_held(tmp_path, monkeypatch) -> None:
+    """Chunks that each span the whole bag (a crafted file can claim it) would keep every
+    message waiting to be put in order: refused once what waits passes the chunk limit."""
+    from mcap.writer import Writer
+
+    from ros2cmd.bag import mcap_file
+
+    path = tmp_path / "spans.mcap"
+    with open(path, "wb") as stream:
+        writer = Writer(stream, chunk_size=60)  # two messages a chunk
+        writer.start(profile="ros2", library="test")
+        schema = writer.register_schema("std_msgs/msg/String", "ros2msg", b"string data")
+        channel = writer.register_channel("/chatter", "cdr", schema)
+        for k in range(1, 51):  # chunk k holds log times k and 101 - k: all of them overlap
+            for log_time in (k, 101 - k):
+                data = serialize_message(String(data="x"))
+                writer.add_message(channel, log_time, data, log_time)
+        writer.finish()
+    bag = mcap_file.McapFile(path)
+    try:
+        assert len(list(bag.messages(None))) == 100  # under the limit: all, in order
+        monkeypatch.setattr(mcap_file, "MAX_CHUNK_BYTES", 200)  # 50 wait, 10 bytes each
+        with pytest.raises(mcap_file.BagError, match="chunks overlap in time so that more than"):
+            list(bag.messages(None))
+    finally:
+        bag.close()
+
+
 # Crafted files: a chunk's declared size is checked before it is decompressed
 
 MCAP_MAGIC = b"\x89MCAP0\r\n"

@@ -281,9 +281,17 @@ class McapFile:
             key=lambda index: (index.message_start_time, index.chunk_start_offset),
         )
         waiting: list[tuple[int, int, int, Message]] = []  # (log time, chunk, place, message)
+        held = 0  # bytes of the messages waiting: bounded, whatever the chunk index claims
+
+        def given() -> BagMessage:
+            nonlocal held
+            message = heapq.heappop(waiting)[3]
+            held -= len(message.data)
+            return self._bag_message(summary.channels, message)
+
         for position, index in enumerate(chunks):
             while waiting and waiting[0][0] < index.message_start_time:
-                yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
+                yield given()
             self.stream.seek(index.chunk_start_offset + 1 + 8)
             chunk = Chunk.read(ReadDataStream(self.stream))
             found = [
@@ -304,8 +312,15 @@ class McapFile:
                 heapq.heappush(
                     waiting, (message.log_time, index.chunk_start_offset, place, message)
                 )
+                held += len(message.data)
+            if held > MAX_CHUNK_BYTES:
+                raise ChunkTooLarge(
+                    f"{self.path}: its chunks overlap in time so that more than "
+                    f"{MAX_CHUNK_BYTES // (1024 * 1024)} MiB of messages would be held to give "
+                    "them in order; refusing it"
+                )
         while waiting:
-            yield self._bag_message(summary.channels, heapq.heappop(waiting)[3])
+            yield given()
 
     @staticmethod
     def _bag_message(channels: dict[int, Channel], message: Message) -> BagMessage:
