@@ -17,7 +17,7 @@ import random
 import re
 import socket
 import tempfile
-from collections.abc import Mapping, MutableMapping
+from collections.abc import Mapping, MutableMapping, Sequence
 from pathlib import Path
 from typing import IO
 
@@ -137,15 +137,16 @@ def apply_dds_defaults(env: MutableMapping[str, str] | None = None) -> MutableMa
     return env
 
 
-def claim_private_domain_id() -> tuple[int, IO[str]]:
+def claim_private_domain_id(ids: Sequence[int] = PRIVATE_DOMAIN_IDS) -> tuple[int, IO[str]]:
     """Claim a ROS_DOMAIN_ID no other test run or benchmark on this machine holds.
 
     Each id has a lock file; the returned handle holds the lock until it is closed (or the
-    process ends), so concurrent runs never see each other's nodes.
+    process ends), so concurrent runs never see each other's nodes. ``ids``: where to look
+    (1 to 101 unless a test needs an id above them).
     """
     lock_dir = Path(tempfile.gettempdir()) / "ros_tutorials_domains"
     lock_dir.mkdir(exist_ok=True)
-    candidates = list(PRIVATE_DOMAIN_IDS)
+    candidates = list(ids)
     random.shuffle(candidates)
     for domain_id in candidates:
         handle = open(lock_dir / f"{domain_id}.lock", "w")  # noqa: SIM115 - held by the caller
@@ -155,4 +156,6 @@ def claim_private_domain_id() -> tuple[int, IO[str]]:
             handle.close()
             continue
         return domain_id, handle
-    raise RuntimeError("no free ROS_DOMAIN_ID: every id in 1..101 is held by another run")
+    raise RuntimeError(
+        f"no free ROS_DOMAIN_ID: every id in {min(ids)}..{max(ids)} is held by another run"
+    )
