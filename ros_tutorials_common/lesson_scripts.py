@@ -20,11 +20,49 @@ Here too, not in the lessons: rclpy's shutdown race on Ctrl-C (docs/lesson-files
 from __future__ import annotations
 
 import importlib
+import os
+import sys
 from collections.abc import Callable
+from typing import Any
 
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
-SHUT_DOWN_WHILE_PUBLISHING = "publisher's context is invalid"
+# rclpy's race on Ctrl-C/SIGTERM: its signal handler shuts ROS down in its own thread, and a
+# timer's publish, or the spin's next wait, then fails on the shut-down context (RCLError
+# "publisher's context is invalid", "the given context is not valid"). That is the stop.
+SHUT_DOWN_CONTEXT = ("context is invalid", "context is not valid")
+
+
+def is_shutdown_race(error: BaseException) -> bool:
+    return isinstance(error, RuntimeError) and any(m in str(error) for m in SHUT_DOWN_CONTEXT)
+
+
+def take_shutdown_race_for_the_stop() -> None:
+    """For a lesson started as ``python -m PKG.MODULE`` (ros2 run, rosrun, the launcher): the
+    race above ends the process with status 0 and no traceback, as the console scripts' run()
+    does. Called by the lesson packages' __init__, which such a start imports first (a lesson
+    file stays plain rclpy); only while Python is locating a -m module."""
+    if sys.argv[:1] != ["-m"]:
+        return
+    previous, previous_unraisable = sys.excepthook, sys.unraisablehook
+
+    def hook(kind: type[BaseException], error: BaseException, trace: Any) -> None:
+        if not is_shutdown_race(error):
+            previous(kind, error, trace)
+            return
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(0)
+
+    def unraisable(what: Any) -> None:
+        # The Ctrl-C landed in a __del__ (rclpy's Future's), where Python only prints it:
+        # rclpy's handler has shut ROS down all the same, which ends the spin (hook above).
+        if not isinstance(what.exc_value, KeyboardInterrupt):
+            previous_unraisable(what)
+
+    sys.excepthook, sys.unraisablehook = hook, unraisable
+
+
 # The packages whose modules a script may name (the lessons and the demo nodes).
 LESSON_PACKAGE_PREFIX = "ros_tutorials_"
 
@@ -47,9 +85,7 @@ def run(module: str) -> int | None:
     try:
         return importlib.import_module(module).main()
     except RuntimeError as error:
-        # rclpy's race: its Ctrl-C/SIGTERM handler shut ROS down in its own thread while a
-        # timer published (RCLError "publisher's context is invalid"). That is the stop.
-        if SHUT_DOWN_WHILE_PUBLISHING not in str(error):
+        if not is_shutdown_race(error):
             raise
         return 0
 

@@ -7,7 +7,9 @@ test_take_home.py runs them in a package of one's own."""
 from __future__ import annotations
 
 import ast
+import os
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -166,3 +168,40 @@ def test_the_console_scripts_take_rclpys_shutdown_race_for_the_stop(monkeypatch,
     monkeypatch.setattr(racing_lesson, "MESSAGE", "another error")
     with pytest.raises(RuntimeError, match="another error"):
         lesson_scripts.run("racing_lesson")
+
+
+@pytest.mark.parametrize(
+    ("raised", "status"),
+    [
+        ('RuntimeError("failed to initialize wait set: the given context is not valid")', 0),
+        ('RuntimeError("Failed to publish: publisher\'s context is invalid")', 0),
+        ('RuntimeError("another error")', 1),
+    ],
+)
+def test_a_lesson_started_with_python_m_takes_the_race_for_the_stop(tmp_path, raised, status):
+    """`ros2 run` and the launcher start a lesson as `python -m PKG.MODULE`, which imports the
+    lesson package first: its __init__ takes rclpy's shutdown race for the stop there (status
+    0, nothing printed), and a Ctrl-C that Python lost in a __del__ is not printed either;
+    any other error stays one."""
+    package = tmp_path / "racing"
+    package.mkdir()
+    (package / "__init__.py").write_text(
+        "from ros_tutorials_common.lesson_scripts import take_shutdown_race_for_the_stop\n"
+        "take_shutdown_race_for_the_stop()\n"
+    )
+    (package / "lesson.py").write_text(
+        "class Late:\n"
+        "    def __del__(self):\n"
+        "        raise KeyboardInterrupt\n"
+        "Late()\n"
+        f"raise {raised}\n"
+    )
+    env = {**os.environ, "PYTHONPATH": f"{tmp_path}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    result = subprocess.run(
+        [sys.executable, "-m", "racing.lesson"], capture_output=True, text=True, env=env, timeout=60
+    )
+    assert result.returncode == status, result.stderr
+    if status == 0:
+        assert result.stdout == result.stderr == ""
+    else:
+        assert "another error" in result.stderr
