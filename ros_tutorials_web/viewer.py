@@ -464,7 +464,8 @@ def make_app(hub: Hub, guard: Guard, say: Callable[[str], None]) -> web.Applicat
             async for message in ws:
                 if message.type != WSMsgType.TEXT:
                     continue
-                with contextlib.suppress(ValueError, TypeError, AttributeError):
+                # Anything but {"watch": "/topic" or null} is ignored (a tab's bug, not ours).
+                with contextlib.suppress(ValueError, TypeError, AttributeError, KeyError):
                     topic = json.loads(message.data)["watch"]
                     if topic is None or (isinstance(topic, str) and topic.startswith("/")):
                         hub.watch(tab, topic)

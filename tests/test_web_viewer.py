@@ -263,7 +263,9 @@ class TestViewer:
                     await ws.send_str(junk)
                 await ws.send_bytes(b"\x00" * 1000)
                 await ws.send_str(json.dumps({"watch": "/turtle1/pose"}))
-                await ws.receive(timeout=TIMEOUT)
+                await asyncio.sleep(1.0)  # the junk is read (a close would come within it)
+                reply = await ws.receive(timeout=TIMEOUT)
+                assert reply.type == aiohttp.WSMsgType.TEXT, f"junk closed the tab: {reply}"
                 # Gone without a goodbye, in the middle of the stream.
                 assert ws._response.connection is not None
                 ws._response.connection.transport.abort()
