@@ -513,10 +513,10 @@ class ExecuteProcess(Action):
                 kwargs["name"] = name
         checks: dict[str, Callable[[str, Any], str] | None] = {
             "cwd": None, "output": _output_check, "respawn": _flag_check("respawn"),
-            "respawn_delay": _number_check("respawn_delay"),
-            "respawn_max_retries": _number_check("respawn_max_retries", int),
-            "sigterm_timeout": _number_check("sigterm_timeout"),
-            "sigkill_timeout": _number_check("sigkill_timeout"),
+            "respawn_delay": number_check("respawn_delay"),
+            "respawn_max_retries": number_check("respawn_max_retries", int),
+            "sigterm_timeout": number_check("sigterm_timeout"),
+            "sigkill_timeout": number_check("sigkill_timeout"),
         }  # fmt: skip
         for attr, check in checks.items():
             value = frontend_attr(entity, attr, check)
@@ -680,7 +680,7 @@ def _flag_check(name: str) -> Callable[[str, Any], str]:
     return check
 
 
-def _number_check(name: str, kind: type = float) -> Callable[[str, Any], str]:
+def number_check(name: str, kind: type = float) -> Callable[[str, Any], str]:
     """A front-end's number: not negative (an int may be -1: for ever), at most a day."""
 
     def check(text: str, element: Any) -> str:

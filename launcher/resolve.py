@@ -36,7 +36,6 @@ from launch_xml import Entity, Parser
 from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
-    MAX_SECONDS,
     ArgInfo,
     ContainerDecl,
     Launch,
@@ -696,20 +695,11 @@ class Resolver:
         return to_bool(self.text(element, name, scope, "false"), element, f"{name!r}")
 
     def number(self, element: Element, name: str, scope: Scope, kind: type = float) -> Any:
-        text = self.text(element, name, scope, "")
-        if not text:
-            return None
-        try:
-            value = kind(text)
-        except ValueError:
-            value = None
-        # nan and inf would make the supervisor's deadlines unreachable: refuse them too.
-        bad = value is None or not math.isfinite(value) or value < 0
-        if bad and not (kind is int and value == -1):
-            raise element.error(f"{name!r} must be a non-negative number, not {text!r}")
-        if kind is float and value > MAX_SECONDS:
-            raise element.error(f"{name!r} is {text} s; at most {MAX_SECONDS:.0f} s (a day)")
-        return value
+        """A ROS 1 attribute's number, by the rule ExecuteProcess's front-end parse keeps."""
+        from launch.actions import number_check
+
+        text = number_check(name, kind)(self.text(element, name, scope, ""), element)
+        return kind(text) if text else None
 
     def clear_params(self, element: Element, scope: Scope) -> None:
         """roslaunch's clear_params: checked as roslaunch checks it, and otherwise nothing to do:
