@@ -7,10 +7,14 @@ environment's index, share/<pkg>/ linking to their package.xml, launch/ and conf
 (tools/register_packages.py). ``share_directory()`` and ``prefix()`` answer `$(find-pkg-share)`
 and `$(find-pkg-prefix)`; ``package_folder()`` answers ROS 1's `rospack find` and `$(find)`.
 
-A tutorial package is one of those whose Python package can be imported. Its executables are
-found, never listed by hand, so a lesson merged later is picked up with no change here:
-- each module of the package that defines a top-level ``main()`` (``publisher``), and
-- each console script whose entry point lives in the package (``topic_publisher``).
+A tutorial package is one of those whose Python package can be imported; a stand-in is a ROS
+package PyPI lacks that this project provides as a top-level folder with a package.xml (tf2_ros,
+ament_copyright). Their executables are found, never listed by hand, so a lesson or a stand-in
+merged later is picked up with no change here:
+- each module of the package that defines a top-level ``main()`` (``publisher``,
+  ``tf2_ros.tf2_echo``), and
+- for a tutorial package, each console script whose entry point lives in the package
+  (``topic_publisher``); a stand-in's console script is a command on PATH, as in ROS's bin/.
 Both run as ``python -m <module>``; this is the one place that decides that: ``command()``
 turns (package, executable) into a command line for the launcher and for ``rosrun``.
 
@@ -103,14 +107,30 @@ class UnknownPackage(LookupError):
 
 @cache
 def package_dirs() -> dict[str, Path]:
-    """This project's packages in the ament index, and the folder of each one's Python code."""
+    """This project's packages in the ament index, and the folder of each one's Python code.
+
+    A package is this project's when its share/PKG/package.xml links to the package.xml in the
+    folder of its Python package (tools/register_packages.py links them so): the tutorial
+    packages and the stand-ins (tf2_ros, ...). A learner's package built with
+    `--symlink-install` keeps its Python package one folder deeper, an interface package
+    (turtlesim) has its Python code generated elsewhere: neither is one."""
     found = {}
-    for name in ament.packages():
-        if name.startswith(PACKAGE_PREFIX):
-            spec = importlib.util.find_spec(name)
-            if spec and spec.submodule_search_locations:
-                found[name] = Path(next(iter(spec.submodule_search_locations)))
+    for name, prefix in ament.packages().items():
+        manifest = prefix / "share" / name / "package.xml"
+        tutorial = name.startswith(PACKAGE_PREFIX)  # shadowed by an overlay, still ours
+        if not tutorial and not manifest.is_symlink():
+            continue
+        spec = importlib.util.find_spec(name)
+        if spec and spec.submodule_search_locations:
+            folder = Path(next(iter(spec.submodule_search_locations)))
+            if tutorial or manifest.resolve().parent == folder.resolve():
+                found[name] = folder
     return found
+
+
+def stand_in(package: str) -> bool:
+    """A ROS package PyPI lacks that this project provides (tf2_ros), not a tutorial package."""
+    return package in package_dirs() and not package.startswith(PACKAGE_PREFIX)
 
 
 def _has_main(source_file: Path) -> bool:
@@ -159,17 +179,26 @@ def executables_declaring(parameter: str) -> list[tuple[str, str]]:
 
 @cache
 def executables(package: str) -> dict[str, list[str]]:
-    """Executable name -> command line, for one tutorial package ({} if unknown)."""
+    """Executable name -> command line, for one package of this project ({} if unknown).
+
+    The same rule for a tutorial package and a stand-in: the modules that define main(). A
+    stand-in's console script (`ament_copyright`) is a command on PATH, as ROS installs it in
+    bin/, so neither it nor the module it runs is an executable of the package."""
     directory = package_dirs().get(package)
     if directory is None:
         return {}
+    scripts = {name: target for name, target in console_scripts().items()
+               if target.startswith(f"{package}.")}  # fmt: skip
+    on_path = {target.partition(":")[0] for target in scripts.values()} if stand_in(package) else ()
     found = {}
     for module in pkgutil.iter_modules([str(directory)]):
-        if not module.ispkg and _has_main(directory / f"{module.name}.py"):
-            found[module.name] = [sys.executable, "-m", f"{package}.{module.name}"]
-    for name, target in console_scripts().items():
-        if target.startswith(f"{package}."):
-            found[name] = _script_command(target)
+        qualified = f"{package}.{module.name}"
+        if module.ispkg or qualified in on_path:
+            continue
+        if _has_main(directory / f"{module.name}.py"):
+            found[module.name] = [sys.executable, "-m", qualified]
+    if not stand_in(package):
+        found.update((name, _script_command(target)) for name, target in scripts.items())
     return dict(sorted(found.items()))
 
 

@@ -21,6 +21,8 @@ from ros_tutorials_common import ament, packages
 ROOT = Path(__file__).resolve().parent.parent
 VENV_SHARE = Path(sys.prefix) / "share"
 LESSONS = sorted(path.parent.name for path in ROOT.glob("ros_tutorials_*/package.xml"))
+STAND_INS = [path.parent.name for path in ROOT.glob("*/package.xml")
+             if not path.parent.name.startswith("ros_tutorials_")]  # fmt: skip
 
 
 def run_tool(args: list[str], ament_prefix_path: str | None) -> subprocess.CompletedProcess:
@@ -150,8 +152,9 @@ def test_register_packages_writes_the_index_and_removes_what_it_registered_befor
         result = subprocess.run(tool, capture_output=True, text=True, timeout=TIMEOUT)
         assert result.returncode == 0, result.stderr
         registered = sorted(path.name for path in index.iterdir())
-        # ament_copyright, rosbag2_py: ROS packages PyPI lacks, this project's own
-        assert registered == sorted([*LESSONS, "ament_copyright", "rosbag2_py", "other"])
+        # ament_copyright, rosbag2_py, tf2_ros ...: ROS packages PyPI lacks, this project's own
+        assert registered == sorted([*LESSONS, *STAND_INS, "other"])
+        assert {"ament_copyright", "rosbag2_py"} <= set(STAND_INS)
     assert not gone.exists() and (tmp_path / "share" / "other" / "package.xml").is_file()
     launch = tmp_path / "share" / "ros_tutorials_topic" / "launch"
     assert launch.is_symlink() and (launch / "union.launch").is_file()

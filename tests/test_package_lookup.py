@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -58,6 +59,47 @@ def test_an_executable_named_with_its_suffix_is_looked_up_by_that_name_first():
     assert packages.command("rospy_tutorials", "listener.py") == table["listener"]
     with pytest.raises(packages.UnknownExecutable, match=re.escape("no executable 'nothing.py'")):
         packages.command("rospy_tutorials", "nothing.py")
+
+
+def test_a_stand_ins_executables_are_its_modules_with_a_main(tmp_path, monkeypatch):
+    # A stand-in as tools/register_packages.py registers one: share/PKG/package.xml links to
+    # the package.xml beside its Python code (here in a prefix of its own, put first).
+    source = tmp_path / "src" / "tf2_stand_in"
+    source.mkdir(parents=True)
+    (source / "package.xml").write_text("<package format='3'><name>tf2_stand_in</name></package>")
+    (source / "__init__.py").write_text("")
+    (source / "echo.py").write_text("def main():\n    return 0\n")
+    (source / "buffer.py").write_text("class Buffer:\n    pass\n")  # a library module
+    (source / "main.py").write_text("def main():\n    return 0\n")
+    prefix = tmp_path / "prefix"
+    (prefix / "share" / "tf2_stand_in").mkdir(parents=True)
+    (prefix / "share" / "tf2_stand_in" / "package.xml").symlink_to(source / "package.xml")
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True)
+    (index / "tf2_stand_in").touch()
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(prefix))
+    monkeypatch.syspath_prepend(str(source.parent))
+    monkeypatch.setattr(packages, "console_scripts", lambda: {"stand_in": "tf2_stand_in.main:main"})
+    for cached in (packages.package_dirs, packages.executables):
+        cached.cache_clear()
+    try:
+        assert packages.stand_in("tf2_stand_in") and not packages.stand_in("ros_tutorials_topic")
+        # main.py is what its console script runs: a command on PATH, not `ros2 run`'s.
+        assert packages.executable_commands("tf2_stand_in") == {
+            "echo": [sys.executable, "-m", "tf2_stand_in.echo"]
+        }
+        assert "tf2_stand_in" in packages.runnable_packages()
+    finally:
+        for cached in (packages.package_dirs, packages.executables):
+            cached.cache_clear()
+
+
+def test_the_stand_ins_console_scripts_stay_commands_on_path():
+    # ament_copyright's `ament_copyright` is on PATH (ROS installs it in bin/), not ros2 run's.
+    assert packages.stand_in("ament_copyright")
+    assert packages.executable_commands("ament_copyright") == {}
+    assert "ros_tutorials_topic" in packages.package_dirs()
+    assert "turtlesim" not in packages.package_dirs()  # an interface package, not a stand-in
 
 
 # -- xacro -------------------------------------------------------------------------------------

@@ -3,9 +3,9 @@
 colcon installs a ROS 2 Python package as: the ament index marker
 share/ament_index/resource_index/packages/PKG, and share/PKG/ with its package.xml and data
 (launch/, config/). This does the same for every folder ros_tutorials_*/ that has a package.xml
-(and for the stand-ins ament_copyright/ and rosbag2_py/), the way `colcon build --symlink-install`
-does: share/PKG/package.xml, share/PKG/launch and share/PKG/config are links to the source, so an
-edited or new launch file is used at once.
+(and for the stand-ins: every other top-level folder with one, tf2_ros/ ...), the way
+`colcon build --symlink-install` does: share/PKG/package.xml, share/PKG/launch and
+share/PKG/config are links to the source, so an edited or new launch file is used at once.
 The Python code itself is installed by pip (editable), not copied to share/.
 
 The interface packages in interfaces/ are installed by tools/build_interfaces.py (colcon copies
@@ -35,9 +35,12 @@ ROOT = Path(__file__).resolve().parent.parent
 INTERFACES = ROOT / "interfaces"
 DATA_FOLDERS = ("launch", "config")  # what the lessons' setup.py would list in data_files
 INDEX = Path("share", "ament_index", "resource_index", "packages")
-# ROS 2 Python packages PyPI lacks, which this project provides: ament_copyright (the template
-# tests of ros2 pkg create) and rosbag2_py's API.
-STAND_INS = [ROOT / "ament_copyright" / "package.xml", ROOT / "rosbag2_py" / "package.xml"]
+# ROS 2 Python packages PyPI lacks, which this project provides (ament_copyright, rosbag2_py,
+# tf2_ros, ...): every other top-level folder with a package.xml. Their executables are their
+# modules with a main() (ros_tutorials_common/packages.py), as the tutorial packages' are.
+STAND_INS = sorted(
+    path for path in ROOT.glob("*/package.xml") if not path.parent.name.startswith("ros_tutorials_")
+)
 
 
 def manifest_name(manifest: Path) -> str:
