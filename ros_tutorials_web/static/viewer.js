@@ -230,7 +230,7 @@ function drawPlot() {
 
 const TURTLESIM_PIXELS = 500; // turtlesim's canvas: 500 px, 45 px a metre, y up, origin low left
 const TURTLESIM_METER = 45;
-const AXIS_PIXELS = 30; // an axis's length on the screen, whatever the scale
+const AXIS_PIXELS = 40; // an axis's length on the grid, whatever its scale (on turtlesim: 1 m)
 
 function askFrames() {
   send({ tf: { fixed: $("tf-fixed").value } });
@@ -336,31 +336,35 @@ function requestFrames() {
   }
 }
 
-function drawAxes(ctx, frames, toScreen) {
-  ctx.lineWidth = 2;
+function drawAxes(ctx, frames, toScreen, length) {
   ctx.font = "12px monospace";
+  ctx.lineCap = "round";
   for (const frame of frames) {
     if (!frame.pose || frame.pose.xyz.includes(null)) continue;
     const [x, y] = toScreen(frame.pose.xyz[0], frame.pose.xyz[1]);
-    for (const [axis, colour] of [[frame.pose.x_axis, "#e02020"], [frame.pose.y_axis, "#10a010"]]) {
+    for (const [axis, colour] of [[frame.pose.x_axis, "#e8141c"], [frame.pose.y_axis, "#12b312"]]) {
       if (axis.includes(null)) continue;
-      ctx.strokeStyle = colour;
-      ctx.beginPath();
-      ctx.moveTo(x, y);
-      ctx.lineTo(x + axis[0] * AXIS_PIXELS, y - axis[1] * AXIS_PIXELS); // screen y points down
-      ctx.stroke();
+      // A white edge under the colour: seen on turtlesim's blue and on the white grid alike.
+      for (const [style, width] of [["#fff", 5], [colour, 3]]) {
+        ctx.strokeStyle = style;
+        ctx.lineWidth = width;
+        ctx.beginPath();
+        ctx.moveTo(x, y);
+        ctx.lineTo(x + axis[0] * length, y - axis[1] * length); // screen y points down
+        ctx.stroke();
+      }
     }
     ctx.fillStyle = "#000";
     ctx.strokeStyle = "#fff";
     ctx.lineWidth = 3;
-    ctx.strokeText(frame.name, x + 4, y + 14);
-    ctx.fillText(frame.name, x + 4, y + 14);
-    ctx.lineWidth = 2;
+    const below = y + 14 < ctx.canvas.height ? y + 14 : y - 6; // a frame on the lower edge
+    ctx.strokeText(frame.name, x + 4, below);
+    ctx.fillText(frame.name, x + 4, below);
   }
 }
 
 function niceStep(span) {
-  const rough = span / 6;
+  const rough = span / 8;
   const power = 10 ** Math.floor(Math.log10(rough));
   return [1, 2, 5, 10].map((m) => m * power).find((step) => step >= rough);
 }
@@ -398,9 +402,12 @@ function drawGrid(canvas, frames, fixed) {
     ctx.beginPath(); ctx.moveTo(0, sy); ctx.lineTo(width, sy); ctx.stroke();
     ctx.fillText(`${+gy.toPrecision(6)}`, 2, sy - 2);
   }
+  const caption = `grid ${+step.toPrecision(6)} m, seen from above (${fixed}: x right, y up)`;
+  ctx.fillStyle = "#fffd";
+  ctx.fillRect(0, 0, ctx.measureText(caption).width + 8, 16);
   ctx.fillStyle = "#555";
-  ctx.fillText(`grid ${+step.toPrecision(6)} m, seen from above (${fixed}: x right, y up)`, 4, 12);
-  drawAxes(ctx, frames, toScreen);
+  ctx.fillText(caption, 4, 12);
+  drawAxes(ctx, frames, toScreen, AXIS_PIXELS);
 }
 
 function drawFrames() {
@@ -417,7 +424,7 @@ function drawFrames() {
     if (onCanvas && isTurtlesim(picture)) {
       const pixels = (overlay.width / TURTLESIM_PIXELS) * TURTLESIM_METER;
       const high = overlay.height - overlay.height / TURTLESIM_PIXELS; // y = 0 m: the last row
-      drawAxes(ctx, frames, (x, y) => [x * pixels, high - y * pixels]);
+      drawAxes(ctx, frames, (x, y) => [x * pixels, high - y * pixels], pixels);
     }
   }
   $("tf-on-canvas").hidden = !onCanvas;
