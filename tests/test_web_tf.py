@@ -279,7 +279,7 @@ class TestBadInput:
         process, link = start_viewer(node_process)
         node = spinning("tf_test_bad")
         publisher = node.create_publisher(TFMessage, "/tf", 100)
-        now = node.get_clock().now().to_msg()
+        now = node.get_clock().now()
         bad = [
             transform("world", "ok", (1.0, 0.0, 0.0)),
             transform("loop_b", "loop_a", (1.0, 0.0, 0.0)),
@@ -293,7 +293,7 @@ class TestBadInput:
             transform("world", "past", (1.0, 0.0, 0.0)),
         ]
         for t in bad:
-            t.header.stamp = now
+            t.header.stamp = now.to_msg()  # a message of its own: set below for two of them
         bad[-2].header.stamp.sec += 3600
         bad[-1].header.stamp.sec = 1
 
@@ -304,7 +304,7 @@ class TestBadInput:
             def everything(item: Any) -> Any:
                 if time.monotonic() < deadline:
                     publisher.publish(TFMessage(transforms=bad))  # until discovery joined us
-                return tf_with({"ok", "twice"})(item)
+                return tf_with({"ok", "twice", "future", "past"})(item)
 
             return await tab.until(everything, "the good frames among the bad")
 
@@ -315,6 +315,8 @@ class TestBadInput:
                 assert frames[name]["loop"] and frames[name]["pose"] is None
                 assert frames[name]["error"]
         assert frames["twice"]["parent"] in ("world", "ok")
+        # tf2 keeps a stamp an hour ahead or from 1970: the page gets their ages to show.
+        assert frames["future"]["age"] < -3000 and frames["past"]["age"] > 1e9
         for name in ("nan", "nan_xyz"):
             assert (
                 name not in frames
