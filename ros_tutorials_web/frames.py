@@ -137,23 +137,46 @@ def pose(transform: Any) -> dict[str, Any]:
     }
 
 
-def default_fixed(roots: dict[str, int]) -> str | None:
+def default_fixed(roots: dict[str, int], frames: dict[str, Frame]) -> str | None:
     """The fixed frame of a tab that names none: world, else the root with most frames."""
-    if PREFERRED_FIXED in roots:
+    if PREFERRED_FIXED in roots or PREFERRED_FIXED in frames:
         return PREFERRED_FIXED
     return min(roots, key=lambda root: (-roots[root], root), default=None)
 
 
-def snapshot(buffer: Any, fixed: str, now: float) -> dict[str, Any]:
-    """The tf message for tabs whose fixed frame is ``fixed`` (AUTO: the viewer chooses),
-    at ROS time ``now`` (s): the tree, each frame's rate and age, and its pose."""
-    from tf2_ros import TransformException
-
+def snapshots(buffer: Any, wanted: list[str], now: float) -> dict[str, dict[str, Any]]:
+    """The tf message for the tabs of each fixed frame wanted (AUTO: the viewer chooses), at
+    ROS time ``now`` (s): the tree, each frame's rate and age, and its pose."""
     frames = parse_frames(buffer.all_frames_as_yaml())
     roots, order, looped = tree_order(frames)
-    used = fixed or default_fixed(roots)
     shown = order[:MAX_FRAMES]
-    entries = []
+    messages = {}
+    for fixed in wanted:
+        used = fixed or default_fixed(roots, frames)
+        messages[fixed] = {
+            "type": "tf",
+            "fixed": used,
+            "asked": fixed,
+            "stamp": finite(now, 3),
+            "total": len(order),
+            "capped": len(order) > len(shown),
+            "frames": entries(buffer, frames, shown, looped, used, now),
+        }
+    return messages
+
+
+def entries(
+    buffer: Any,
+    frames: dict[str, Frame],
+    shown: list[str],
+    looped: set[str],
+    fixed: str | None,
+    now: float,
+) -> list[dict[str, Any]]:
+    """What the page shows of each frame: view_frames' figures and the pose in ``fixed``."""
+    from tf2_ros import TransformException
+
+    found = []
     for name in shown:
         entry: dict[str, Any] = {"name": name, "parent": None, "loop": name in looped}
         frame = frames.get(name)
@@ -169,22 +192,14 @@ def snapshot(buffer: Any, fixed: str, now: float) -> dict[str, Any]:
                 buffer_length=finite(frame.buffer_length, 3),
                 age=None if static else finite(now - frame.most_recent, 3),
             )
-        if used is not None:
+        if fixed is not None:
             try:
-                entry["pose"] = pose(buffer.lookup_transform(used, name, Time()))
+                entry["pose"] = pose(buffer.lookup_transform(fixed, name, Time()))
             except TransformException as error:
                 entry["pose"] = None
                 entry["error"] = (str(error).splitlines() or [type(error).__name__])[0][:300]
-        entries.append(entry)
-    return {
-        "type": "tf",
-        "fixed": used,
-        "asked": fixed,
-        "stamp": finite(now, 3),
-        "total": len(order),
-        "capped": len(order) > len(shown),
-        "frames": entries,
-    }
+        found.append(entry)
+    return found
 
 
 class FrameWatch:
@@ -235,8 +250,8 @@ class FrameWatch:
             return
         now = self.node.get_clock().now().nanoseconds / 1e9
         try:
-            for fixed in list(self.wanted):
-                self._on_tf(fixed, json.dumps(snapshot(self.buffer, fixed, now)))
+            for fixed, message in snapshots(self.buffer, list(self.wanted), now).items():
+                self._on_tf(fixed, json.dumps(message))
         except Exception as error:  # a callback must not end the viewer
             if not self._failed:
                 self._failed = True

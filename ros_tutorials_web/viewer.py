@@ -118,7 +118,7 @@ def origin(text: str) -> str:
 
 def parse_args(argv: Sequence[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
-        prog="viewer", description="The running ROS system in a browser: turtlesim, graph, log"
+        prog="viewer", description="The running ROS system in a browser: turtlesim, graph, log, tf"
     )
     parser.add_argument(
         "--port",
