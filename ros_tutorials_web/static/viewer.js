@@ -265,7 +265,8 @@ function showFrames(message) {
 function frameText(frame) {
   if (frame.parent === null) return frame.loop ? "" : "(root)";
   if (frame.static) return `static, ${frame.broadcaster}`;
-  const age = frame.age === null ? "?" : frame.age < 0 ? `${(-frame.age).toFixed(2)} s in the future` : `${frame.age.toFixed(2)} s old`;
+  const seconds = (value) => value.toFixed(value < 1000 ? 2 : 0);
+  const age = frame.age === null ? "?" : frame.age < 0 ? `${seconds(-frame.age)} s in the future` : `${seconds(frame.age)} s old`;
   return `${frame.rate} Hz, ${age}, ${frame.broadcaster}`;
 }
 
@@ -276,24 +277,39 @@ function frameItem(frame) {
   name.textContent = frame.name;
   const about = document.createElement("span");
   about.className = "about";
+  const problem = document.createElement("div");
+  problem.className = "problem";
+  item.append(name, about, problem);
+  fillFrameItem(item, frame);
+  return item;
+}
+
+function fillFrameItem(item, frame) {
+  const [, about, problem] = item.children;
   about.textContent = " " + frameText(frame);
-  item.append(name, about);
   if (frame.parent !== null) {
     // What view_frames writes on the frame's edge.
     item.title = `Broadcaster: ${frame.broadcaster}\nAverage rate: ${frame.rate}\n` +
       `Buffer length: ${frame.buffer_length}\nMost recent transform: ${frame.most_recent}\n` +
       `Oldest transform: ${frame.oldest}`;
   }
-  if (frame.error) {
-    const problem = document.createElement("div");
-    problem.className = "problem";
-    problem.textContent = frame.error;
-    item.append(problem);
-  }
-  return item;
+  problem.textContent = frame.error || "";
+  problem.hidden = !frame.error;
 }
 
+let treeShape = null; // the frames and their parents the tree shows: rebuilt only when they change
+
 function showTree(frames) {
+  const shape = JSON.stringify(frames.map((frame) => [frame.name, frame.parent, frame.loop]));
+  const tree = $("tf-tree");
+  if (shape === treeShape) {
+    // The same tree: new figures in place (a reader's hover and selection stay).
+    const items = tree.querySelectorAll("li");
+    const byName = new Map(frames.map((frame) => [frame.name, frame]));
+    for (const item of items) fillFrameItem(item, byName.get(item.dataset.frame));
+    return;
+  }
+  treeShape = shape;
   const children = new Map();
   const byName = new Map(frames.map((frame) => [frame.name, frame]));
   for (const frame of frames) {
@@ -314,7 +330,6 @@ function showTree(frames) {
   };
   // Roots first (and frames whose parent is past the cap), then the frames caught in a loop.
   const tops = frames.filter((frame) => !frame.loop && (frame.parent === null || !byName.has(frame.parent)));
-  const tree = $("tf-tree");
   tree.replaceChildren(list(tops));
   const looped = frames.filter((frame) => frame.loop);
   if (looped.length) {
