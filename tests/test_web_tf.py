@@ -8,6 +8,7 @@ Chromium where it is installed.
 from __future__ import annotations
 
 import asyncio
+import importlib.util
 import json
 import math
 import re
@@ -31,6 +32,8 @@ from tf2_msgs.msg import TFMessage
 from ros_tutorials_web.frames import MAX_FRAMES, parse_frames, tree_order
 
 SQRT_HALF = math.sqrt(0.5)
+TURTLE1 = (5.544445, 5.544445)  # where turtlesim puts turtle1
+FOLLOW_TIMEOUT = 90.0  # the demo's turtle2 is steered once a second; slow on a loaded machine
 
 
 def transform(parent: str, child: str, xyz: tuple, yaw: float = 0.0, q: tuple | None = None):
@@ -269,6 +272,39 @@ class TestFrames:
                     assert error.value.status == 403
 
         asyncio.run(check())
+
+
+def test_the_follow_demo_in_the_viewer(own_domain, node_process) -> None:
+    """The official tf2 demo (turtle2 follows turtle1) as the page gets it: turtle1 where
+    turtlesim put it, turtle2 seen moving until it is next to turtle1."""
+    if importlib.util.find_spec("turtle_tf2_py") is None:
+        pytest.skip("needs turtle_tf2_py, the official tf2 tutorials' demo package")
+    _, link = start_viewer(node_process)
+    seen: list[tuple[float, float]] = []  # turtle2's positions, as the page got them
+
+    def near(item: Any) -> Any:
+        found = tf_with({"turtle1", "turtle2"}, "world")(item)
+        if not found:
+            return None
+        turtle1, turtle2 = (
+            by_name(found)[name]["pose"]["xyz"][:2] for name in ("turtle1", "turtle2")
+        )
+        if not seen or seen[-1] != tuple(turtle2):
+            seen.append(tuple(turtle2))
+        return found if len(seen) > 1 and math.dist(turtle1, turtle2) < 1.0 else None
+
+    async def check(tab: Tab) -> dict:
+        await tab.ws.send_str(json.dumps({"tf": {"fixed": ""}}))
+        launch = ("launch", "turtle_tf2_py", "turtle_tf2_demo.launch.py")
+        await asyncio.to_thread(node_process, str(BIN / "ros2"), *launch, env=HEADLESS)
+        return await tab.until(near, "turtle2 next to turtle1 in the view", FOLLOW_TIMEOUT)
+
+    message = with_tab(link, check)
+    assert message["fixed"] == "world"
+    frames = by_name(message)
+    assert frames["turtle1"]["parent"] == frames["turtle2"]["parent"] == "world"
+    assert frames["turtle1"]["pose"]["xyz"] == pytest.approx([*TURTLE1, 0], abs=1e-3)
+    assert frames["turtle1"]["rate"] > 0 and frames["turtle2"]["rate"] > 0
 
 
 class TestBadInput:
