@@ -325,6 +325,10 @@ class TestBadInput:
             transform("world", "nan", (1.0, 0.0, 0.0), q=(math.nan, 0.0, 0.0, 1.0)),
             transform("world", "not_unit", (1.0, 0.0, 0.0), q=(0.0, 0.0, 2.0, 2.0)),
             transform("world", "nan_xyz", (math.nan, 0.0, 0.0)),
+            transform("world", "inf_xyz", (math.inf, 0.0, 0.0)),
+            transform("", "no_parent", (1.0, 0.0, 0.0)),
+            transform("world", "", (1.0, 0.0, 0.0)),
+            transform("world", "world", (1.0, 0.0, 0.0)),
             transform("world", "future", (1.0, 0.0, 0.0)),
             transform("world", "past", (1.0, 0.0, 0.0)),
         ]
@@ -346,19 +350,19 @@ class TestBadInput:
 
         message = with_tab(link, check)
         frames = by_name(message)
-        for name in ("loop_a", "loop_b"):
-            if name in frames:  # the loop is shown, without a pose and with tf2's reason
-                assert frames[name]["loop"] and frames[name]["pose"] is None
-                assert frames[name]["error"]
+        for name in ("loop_a", "loop_b"):  # the loop is shown, without a pose, with tf2's reason
+            assert frames[name]["loop"] and frames[name]["pose"] is None
+            assert frames[name]["error"] == "The tf tree is invalid because it contains a loop."
         assert frames["twice"]["parent"] in ("world", "ok")
         # tf2 keeps a stamp an hour ahead or from 1970: the page gets their ages to show.
         assert frames["future"]["age"] < -3000 and frames["past"]["age"] > 1e9
-        for name in ("nan", "nan_xyz"):
-            assert (
-                name not in frames
-                or frames[name]["pose"] is None
-                or all(v is not None for v in frames[name]["pose"]["xyz"])
-            )
+        # tf2 refuses NaN, a quaternion far from unit length and a frame without a name, each
+        # with its line in the viewer's terminal; an infinity (which tf2 takes) is null.
+        for name in ("nan", "nan_xyz", "not_unit", "no_parent", ""):
+            assert name not in frames
+        assert frames["inf_xyz"]["pose"]["xyz"][0] is None
+        process.wait_for_text('TF_NAN_INPUT: Ignoring transform for child_frame_id "nan"')
+        process.wait_for_text("TF_SELF_TRANSFORM")
         assert "Traceback" not in process.output
         # Still serving: the other streams and the API.
         with_tab(link, lambda tab: tab.until(lambda i: i.get("type") == "graph", "the graph"))
