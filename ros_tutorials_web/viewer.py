@@ -1,7 +1,7 @@
 """viewer: the running ROS system in a browser, for machines where no window can open.
 
-(About 560 lines: the web server's routes, its guard of who may look, and its streams, read
-together; the ROS side is watch.py.)
+(About 600 lines: the web server's routes, its guard of who may look, and its streams, read
+together; the ROS side is watch.py, and frames.py for tf.)
 
     ros2 run ros_tutorials_web viewer              # http://127.0.0.1:8080/ (or a free port)
     ros2 run ros_tutorials_web viewer --port 9000  # exactly this port
@@ -10,9 +10,10 @@ together; the ROS side is watch.py.)
 
 One page shows, live: every turtlesim's canvas (its ~/_canvas/compressed topic, any
 sensor_msgs/msg/CompressedImage topic in fact), the graph as rqt_graph draws it, the /rosout
-log with level and node filters, and any topic's newest message with a plot of one of its
-numbers over time. The viewer is an ordinary ROS 2 node (``web_viewer``, watch.py) and only
-subscribes: it changes nothing in the graph.
+log with level and node filters, any topic's newest message with a plot of one of its
+numbers over time, and the tf2 frames: their tree, and each frame's axes drawn on turtlesim's
+canvas (fixed frame ``world``) or on a grid. The viewer is an ordinary ROS 2 node
+(``web_viewer``, watch.py) and only subscribes: it changes nothing in the graph.
 
 The web side is aiohttp (HTTP and WebSockets on asyncio); the page is static files in
 static/. Each browser tab gets, per stream, only the newest value it has not sent yet: a
@@ -35,10 +36,15 @@ HTTP: ``/`` the page, ``/static/...`` its files, ``/ws`` the WebSocket,
 WebSocket, server to browser: text frames are JSON objects with a ``type``: ``graph``
 (``svg``, ``topics``: the visible ones and their types, ``pictures``: the picture
 topics), ``log`` (``entries``: time, level, node, msg), ``topic`` (``topic``,
-``type_name``, ``count``, ``yaml``, ``numbers``: each numeric field by its dotted path);
+``type_name``, ``count``, ``yaml``, ``numbers``: each numeric field by its dotted path),
+``tf`` (``fixed``: the frame the poses are in, ``total``, ``capped``, ``frames``: each with
+``name``, ``parent``, ``broadcaster``, ``rate``, ``age``, ``static``, ``pose``: ``xyz``,
+``q``, ``yaw``, ``x_axis``, ``y_axis``, or ``error``; frames.py);
 binary frames are pictures: a 4-byte big-endian length, that many bytes of JSON (``topic``,
 ``mime``, ``stamp``, ``count``), then the image file's bytes. Browser to server: JSON
-``{"watch": TOPIC}`` (or ``null``) chooses the topic whose messages this tab gets.
+``{"watch": TOPIC}`` (or ``null``) chooses the topic whose messages this tab gets;
+``{"tf": {"fixed": FRAME}}`` (``""``: the viewer chooses, ``world`` if there is one) asks for
+the frames, ``{"tf": null}`` stops them.
 """
 
 from __future__ import annotations
@@ -72,6 +78,7 @@ from rclpy.signals import SignalHandlerOptions
 
 from ros2cmd.messages import message_to_ordered, message_to_yaml
 from ros_tutorials_common.ros import init, user_args
+from ros_tutorials_web.frames import AUTO, MAX_NAME
 from ros_tutorials_web.watch import LOG_KEEP, Feed, LogFeed, Watcher
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -111,7 +118,7 @@ def origin(text: str) -> str:
 
 def parse_args(argv: Sequence[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
-        prog="viewer", description="The running ROS system in a browser: turtlesim, graph, log"
+        prog="viewer", description="The running ROS system in a browser: turtlesim, graph, log, tf"
     )
     parser.add_argument(
         "--port",
@@ -283,6 +290,7 @@ class Tab:
     def __init__(self, ws: web.WebSocketResponse) -> None:
         self.ws = ws
         self.watching: str | None = None
+        self.tf: str | None = None  # the fixed frame of the tf frames this tab gets (AUTO: any)
         self._pending: dict[str, str | bytes] = {}
         self._logs: deque[dict] = deque(maxlen=LOG_KEEP)
         self._ready = asyncio.Event()
@@ -325,6 +333,7 @@ class Hub:
         self.log: deque[dict] = deque(maxlen=LOG_KEEP)
         self.pictures: dict[str, bytes] = {}  # topic -> its newest frame, for new tabs
         self.topic_payloads: dict[str, str] = {}
+        self.tf_payloads: dict[str, str] = {}  # fixed frame -> the newest tf message
         self._sent_at: dict[str, float] = {}
 
     # Called on the ROS thread: hand over, nothing more.
@@ -336,6 +345,9 @@ class Hub:
 
     def log_from_ros(self, feed: LogFeed) -> None:
         self.loop.call_soon_threadsafe(self._log, feed)
+
+    def tf_from_ros(self, fixed: str, payload: str) -> None:
+        self.loop.call_soon_threadsafe(self._tf, fixed, payload)
 
     # On the event loop.
     def _graph(self, svg: str, topics: dict[str, list[str]], pictures: list[str]) -> None:
@@ -353,6 +365,14 @@ class Hub:
         self.log.extend(entries)
         for tab in self.tabs:
             tab.offer_logs(entries)
+
+    def _tf(self, fixed: str, payload: str) -> None:
+        if not any(tab.tf == fixed for tab in self.tabs):
+            return  # the tabs that asked have gone meanwhile
+        self.tf_payloads[fixed] = payload
+        for tab in self.tabs:
+            if tab.tf == fixed:
+                tab.offer("tf", payload)
 
     def _feed(self, feed: Feed) -> None:
         # At most STREAM_HZ a second per stream: a faster topic is sampled (its newest wins).
@@ -432,8 +452,25 @@ class Hub:
             if topic in self.topic_payloads:
                 tab.offer("topic", self.topic_payloads[topic])
 
+    def show_tf(self, tab: Tab, fixed: str | None) -> None:
+        """The tab gets the tf frames with poses in ``fixed`` (AUTO: the viewer chooses), or
+        none (None)."""
+        assert self.watcher is not None
+        old, tab.tf = tab.tf, fixed
+        if old == fixed:
+            return
+        if old is not None:
+            self.ros(self.watcher.frames.want, old, -1)
+            if not any(other.tf == old for other in self.tabs):
+                self.tf_payloads.pop(old, None)
+        if fixed is not None:
+            self.ros(self.watcher.frames.want, fixed, 1)
+            if fixed in self.tf_payloads:
+                tab.offer("tf", self.tf_payloads[fixed])
+
     def remove(self, tab: Tab) -> None:
         self.watch(tab, None)
+        self.show_tf(tab, None)
         self.tabs.discard(tab)
         assert self.watcher is not None
         self.ros(self.watcher.set_viewers, len(self.tabs))
@@ -464,9 +501,16 @@ def make_app(hub: Hub, guard: Guard, say: Callable[[str], None]) -> web.Applicat
             async for message in ws:
                 if message.type != WSMsgType.TEXT:
                     continue
-                # Anything but {"watch": "/topic" or null} is ignored (a tab's bug, not ours).
+                # Anything but {"watch": "/topic" or null} or {"tf": {"fixed": "frame"} or
+                # null} is ignored (a tab's bug, not ours).
                 with contextlib.suppress(ValueError, TypeError, AttributeError, KeyError):
-                    topic = json.loads(message.data)["watch"]
+                    asked = json.loads(message.data)
+                    if "tf" in asked:
+                        fixed = None if asked["tf"] is None else asked["tf"].get("fixed") or AUTO
+                        if fixed is None or (isinstance(fixed, str) and len(fixed) <= MAX_NAME):
+                            hub.show_tf(tab, fixed)
+                        continue
+                    topic = asked["watch"]
                     if topic is None or (isinstance(topic, str) and topic.startswith("/")):
                         hub.watch(tab, topic)
         finally:
@@ -511,7 +555,9 @@ async def serve(sock: socket.socket, guard: Guard) -> None:
     for signum in (signal.SIGINT, signal.SIGTERM):
         loop.add_signal_handler(signum, stop.set)
     hub = Hub(loop)
-    watcher = hub.watcher = Watcher(hub.graph_from_ros, hub.feed_from_ros, hub.log_from_ros)
+    watcher = hub.watcher = Watcher(
+        hub.graph_from_ros, hub.feed_from_ros, hub.log_from_ros, hub.tf_from_ros
+    )
     executor = SingleThreadedExecutor()
     executor.add_node(watcher)
     spinning = threading.Event()

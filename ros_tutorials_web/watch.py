@@ -1,5 +1,6 @@
 """The web viewer's ROS side: one ordinary rclpy node, spun in a thread of its own, that
-watches the graph, /rosout, the picture topics and the topics the browsers ask for.
+watches the graph, /rosout, the picture topics, the topics the browsers ask for and, while a
+browser shows them, the tf2 frames (frames.py).
 
 Its callbacks never queue: each subscription keeps only its newest message, serialized (a
 ``Feed``), and wakes the web server's event loop once (``wake``, which the server makes
@@ -29,6 +30,7 @@ from ros2cmd.graph_view.model import model_from_snapshot
 from ros2cmd.graph_view.render import to_svg
 from ros2cmd.qos import qos_for
 from ros2cmd.typenames import load_type
+from ros_tutorials_web.frames import FrameWatch
 
 IMAGE_TYPE = "sensor_msgs/msg/CompressedImage"
 GRAPH_PERIOD = 1.0  # s between looks at the graph (nodes and topics coming and going)
@@ -103,14 +105,15 @@ class NodeGraph(Graph):
 
 
 class Watcher(Node):
-    """The viewer's node. ``on_graph``, ``on_feed`` and ``on_log`` are called on the ROS
-    thread and must only hand over (call_soon_threadsafe)."""
+    """The viewer's node. ``on_graph``, ``on_feed``, ``on_log`` and ``on_tf`` are called on
+    the ROS thread and must only hand over (call_soon_threadsafe)."""
 
     def __init__(
         self,
         on_graph: Callable[[str, dict[str, list[str]], list[str]], None],
         on_feed: Callable[[Feed], None],
         on_log: Callable[[LogFeed], None],
+        on_tf: Callable[[str, str], None],
     ) -> None:
         super().__init__("web_viewer")
         self._on_graph = on_graph
@@ -124,6 +127,7 @@ class Watcher(Node):
         self.images: dict[str, Feed] = {}
         self.topics: dict[str, Feed] = {}
         self.log = LogFeed(on_log)
+        self.frames = FrameWatch(self, on_tf)
         self.create_subscription(Log, "/rosout", self.log.put, ROSOUT_QOS)
         self.create_timer(GRAPH_PERIOD, self.look)
 

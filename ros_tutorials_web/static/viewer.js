@@ -1,4 +1,4 @@
-// The web viewer's page: one WebSocket (/ws, protocol in ros_tutorials_web/viewer.py), four
+// The web viewer's page: one WebSocket (/ws, protocol in ros_tutorials_web/viewer.py), five
 // panels. Plain JavaScript, no build step, nothing loaded from elsewhere.
 "use strict";
 
@@ -8,7 +8,7 @@ const LEVELS = ["DEBUG", "INFO", "WARN", "ERROR", "FATAL"];
 
 const $ = (id) => document.getElementById(id);
 // What the page shows, for a reader (and for the browser test) to look at.
-const state = { frames: {}, pictures: {}, logs: [], topic: null, plot: [], connected: false };
+const state = { frames: {}, pictures: {}, logs: [], topic: null, plot: [], connected: false, tf: null };
 window.viewerState = state;
 let socket = null;
 
@@ -26,6 +26,7 @@ function connect() {
     state.connected = true;
     setStatus("live", true);
     if (state.topic) send({ watch: state.topic });
+    askFrames();
   };
   socket.onclose = () => {
     state.connected = false;
@@ -38,6 +39,7 @@ function connect() {
       if (message.type === "graph") showGraph(message);
       else if (message.type === "log") addLogs(message.entries);
       else if (message.type === "topic") showTopic(message);
+      else if (message.type === "tf") showFrames(message);
     } else {
       showPicture(event.data);
     }
@@ -69,13 +71,18 @@ function showPicture(buffer) {
 function addPicture(topic) {
   $("no-pictures").hidden = true;
   const figure = document.createElement("figure");
+  const stack = document.createElement("div");
+  stack.className = "stack";
   const canvas = document.createElement("canvas");
   canvas.dataset.topic = topic;
+  const overlay = document.createElement("canvas"); // the tf frames' axes, over the picture
+  overlay.className = "overlay";
+  stack.append(canvas, overlay);
   const caption = document.createElement("figcaption");
   caption.textContent = topic;
-  figure.append(canvas, caption);
+  figure.append(stack, caption);
   $("pictures").append(figure);
-  return { topic, canvas, caption, busy: false, waiting: null };
+  return { topic, canvas, overlay, caption, busy: false, waiting: null };
 }
 
 async function drawPicture(picture) {
@@ -91,6 +98,7 @@ async function drawPicture(picture) {
       bitmap.close();
       state.frames[header.topic] = { count: header.count, stamp: header.stamp, shown: Date.now() / 1000 };
       picture.caption.textContent = `${header.topic} (frame ${header.count})`;
+      if (isTurtlesim(picture)) requestFrames(); // its size may have changed
     } catch (error) {
       picture.caption.textContent = `${header.topic}: cannot show this picture (${error})`;
     }
@@ -101,7 +109,7 @@ async function drawPicture(picture) {
 function forgetPictures(pictures) {
   for (const topic of Object.keys(state.pictures)) {
     if (!pictures.includes(topic)) {
-      state.pictures[topic].canvas.parentElement.remove();
+      state.pictures[topic].canvas.closest("figure").remove();
       delete state.pictures[topic];
       delete state.frames[topic];
     }
@@ -218,6 +226,227 @@ function drawPlot() {
   ctx.stroke();
 }
 
+// --- tf: the frame tree, and each frame's axes ------------------------------------------
+
+const TURTLESIM_PIXELS = 500; // turtlesim's canvas: 500 px, 45 px a metre, y up, origin low left
+const TURTLESIM_METER = 45;
+const AXIS_PIXELS = 40; // an axis's length on the grid, whatever its scale (on turtlesim: 1 m)
+
+function askFrames() {
+  send({ tf: { fixed: $("tf-fixed").value } });
+}
+
+function isTurtlesim(picture) {
+  return picture.topic.endsWith("/_canvas/compressed") && picture.canvas.width > 0;
+}
+
+function showFrames(message) {
+  state.tf = message;
+  const select = $("tf-fixed");
+  const chosen = select.value;
+  const names = message.frames.map((frame) => frame.name).sort();
+  const known = [...select.options].map((option) => option.value).slice(1);
+  if (known.join("\n") !== names.join("\n")) {
+    select.replaceChildren(new Option("automatic", ""));
+    for (const name of names) select.append(new Option(name, name));
+    if (chosen && !names.includes(chosen)) select.append(new Option(`${chosen} (not there)`, chosen));
+    select.value = chosen;
+  }
+  select.options[0].textContent = message.fixed && !chosen ? `automatic: ${message.fixed}` : "automatic";
+  const info = $("tf-info");
+  if (!message.total) info.textContent = "no tf data received";
+  else if (message.capped) info.textContent = `${message.total} frames: only the first ${message.frames.length} are shown`;
+  else info.textContent = `${message.total} frames, poses in ${message.fixed}`;
+  info.classList.toggle("capped", message.capped);
+  showTree(message.frames);
+  requestFrames();
+}
+
+function frameText(frame) {
+  if (frame.parent === null) return frame.loop ? "" : "(root)";
+  if (frame.static) return `static, ${frame.broadcaster}`;
+  const seconds = (value) => value.toFixed(value < 1000 ? 2 : 0);
+  const age = frame.age === null ? "?" : frame.age < 0 ? `${seconds(-frame.age)} s in the future` : `${seconds(frame.age)} s old`;
+  return `${frame.rate} Hz, ${age}, ${frame.broadcaster}`;
+}
+
+function frameItem(frame) {
+  const item = document.createElement("li");
+  item.dataset.frame = frame.name;
+  const name = document.createElement("b");
+  name.textContent = frame.name;
+  const about = document.createElement("span");
+  about.className = "about";
+  const problem = document.createElement("div");
+  problem.className = "problem";
+  item.append(name, about, problem);
+  fillFrameItem(item, frame);
+  return item;
+}
+
+function fillFrameItem(item, frame) {
+  const [, about, problem] = item.children;
+  about.textContent = " " + frameText(frame);
+  if (frame.parent !== null) {
+    // What view_frames writes on the frame's edge.
+    item.title = `Broadcaster: ${frame.broadcaster}\nAverage rate: ${frame.rate}\n` +
+      `Buffer length: ${frame.buffer_length}\nMost recent transform: ${frame.most_recent}\n` +
+      `Oldest transform: ${frame.oldest}`;
+  }
+  problem.textContent = frame.error || "";
+  problem.hidden = !frame.error;
+}
+
+let treeShape = null; // the frames and their parents the tree shows: rebuilt only when they change
+
+function showTree(frames) {
+  const shape = JSON.stringify(frames.map((frame) => [frame.name, frame.parent, frame.loop]));
+  const tree = $("tf-tree");
+  if (shape === treeShape) {
+    // The same tree: new figures in place (a reader's hover and selection stay).
+    const items = tree.querySelectorAll("li");
+    const byName = new Map(frames.map((frame) => [frame.name, frame]));
+    for (const item of items) fillFrameItem(item, byName.get(item.dataset.frame));
+    return;
+  }
+  treeShape = shape;
+  const children = new Map();
+  const byName = new Map(frames.map((frame) => [frame.name, frame]));
+  for (const frame of frames) {
+    if (frame.parent !== null && byName.has(frame.parent) && !frame.loop) {
+      if (!children.has(frame.parent)) children.set(frame.parent, []);
+      children.get(frame.parent).push(frame);
+    }
+  }
+  const list = (level) => {
+    const ul = document.createElement("ul");
+    for (const frame of level) {
+      const item = frameItem(frame);
+      const below = children.get(frame.name);
+      if (below) item.append(list(below));
+      ul.append(item);
+    }
+    return ul;
+  };
+  // Roots first (and frames whose parent is past the cap), then the frames caught in a loop.
+  const tops = frames.filter((frame) => !frame.loop && (frame.parent === null || !byName.has(frame.parent)));
+  tree.replaceChildren(list(tops));
+  const looped = frames.filter((frame) => frame.loop);
+  if (looped.length) {
+    const note = document.createElement("div");
+    note.className = "problem";
+    note.textContent = "in a loop, no root above them:";
+    tree.append(note, list(looped));
+  }
+}
+
+let framesRequested = false;
+function requestFrames() {
+  if (!framesRequested) {
+    framesRequested = true;
+    requestAnimationFrame(() => {
+      framesRequested = false;
+      drawFrames();
+    });
+  }
+}
+
+function drawAxes(ctx, frames, toScreen, length) {
+  ctx.font = "12px monospace";
+  ctx.lineCap = "round";
+  for (const frame of frames) {
+    if (!frame.pose || frame.pose.xyz.includes(null)) continue;
+    const [x, y] = toScreen(frame.pose.xyz[0], frame.pose.xyz[1]);
+    for (const [axis, colour] of [[frame.pose.x_axis, "#e8141c"], [frame.pose.y_axis, "#12b312"]]) {
+      if (axis.includes(null)) continue;
+      // A white edge under the colour: seen on turtlesim's blue and on the white grid alike.
+      for (const [style, width] of [["#fff", 5], [colour, 3]]) {
+        ctx.strokeStyle = style;
+        ctx.lineWidth = width;
+        ctx.beginPath();
+        ctx.moveTo(x, y);
+        ctx.lineTo(x + axis[0] * length, y - axis[1] * length); // screen y points down
+        ctx.stroke();
+      }
+    }
+    ctx.fillStyle = "#000";
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = 3;
+    const below = y + 14 < ctx.canvas.height ? y + 14 : y - 6; // a frame on the lower edge
+    ctx.strokeText(frame.name, x + 4, below);
+    ctx.fillText(frame.name, x + 4, below);
+  }
+}
+
+function niceStep(span) {
+  const rough = span / 8;
+  const power = 10 ** Math.floor(Math.log10(rough));
+  return [1, 2, 5, 10].map((m) => m * power).find((step) => step >= rough);
+}
+
+function drawGrid(canvas, frames, fixed) {
+  const width = canvas.width, height = canvas.height;
+  const ctx = canvas.getContext("2d");
+  ctx.clearRect(0, 0, width, height);
+  // Auto-scaled: every frame and the fixed frame's origin in view, a metre as wide as high.
+  const points = frames.filter((f) => f.pose && !f.pose.xyz.includes(null)).map((f) => f.pose.xyz);
+  let [left, right, bottom, top] = [0, 0, 0, 0];
+  for (const [x, y] of points) {
+    left = Math.min(left, x); right = Math.max(right, x);
+    bottom = Math.min(bottom, y); top = Math.max(top, y);
+  }
+  const margin = Math.max(0.5, 0.1 * Math.max(right - left, top - bottom));
+  left -= margin; right += margin; bottom -= margin; top += margin;
+  const scale = Math.min(width / (right - left), height / (top - bottom));
+  const cx = (left + right) / 2, cy = (bottom + top) / 2;
+  const toScreen = (x, y) => [width / 2 + (x - cx) * scale, height / 2 - (y - cy) * scale];
+  const step = niceStep(Math.max(width, height) / scale);
+  ctx.font = "10px monospace";
+  ctx.fillStyle = "#999";
+  ctx.lineWidth = 1;
+  const [x0, y0] = [cx - width / 2 / scale, cy - height / 2 / scale];
+  for (let gx = Math.ceil(x0 / step) * step; gx <= x0 + width / scale; gx += step) {
+    const [sx] = toScreen(gx, 0);
+    ctx.strokeStyle = Math.abs(gx) < step / 1e6 ? "#888" : "#e4e4e4";
+    ctx.beginPath(); ctx.moveTo(sx, 0); ctx.lineTo(sx, height); ctx.stroke();
+    ctx.fillText(`${+gx.toPrecision(6)}`, sx + 2, height - 3);
+  }
+  for (let gy = Math.ceil(y0 / step) * step; gy <= y0 + height / scale; gy += step) {
+    const [, sy] = toScreen(0, gy);
+    ctx.strokeStyle = Math.abs(gy) < step / 1e6 ? "#888" : "#e4e4e4";
+    ctx.beginPath(); ctx.moveTo(0, sy); ctx.lineTo(width, sy); ctx.stroke();
+    ctx.fillText(`${+gy.toPrecision(6)}`, 2, sy - 2);
+  }
+  const caption = `grid ${+step.toPrecision(6)} m, seen from above (${fixed}: x right, y up)`;
+  ctx.fillStyle = "#fffd";
+  ctx.fillRect(0, 0, ctx.measureText(caption).width + 8, 16);
+  ctx.fillStyle = "#555";
+  ctx.fillText(caption, 4, 12);
+  drawAxes(ctx, frames, toScreen, AXIS_PIXELS);
+}
+
+function drawFrames() {
+  const tf = state.tf;
+  const frames = tf ? tf.frames : [];
+  const turtlesims = Object.values(state.pictures).filter(isTurtlesim);
+  const onCanvas = tf !== null && tf.fixed === "world" && turtlesims.length > 0;
+  for (const picture of Object.values(state.pictures)) {
+    const overlay = picture.overlay;
+    if (overlay.width !== picture.canvas.width) overlay.width = picture.canvas.width;
+    if (overlay.height !== picture.canvas.height) overlay.height = picture.canvas.height;
+    const ctx = overlay.getContext("2d");
+    ctx.clearRect(0, 0, overlay.width, overlay.height);
+    if (onCanvas && isTurtlesim(picture)) {
+      const pixels = (overlay.width / TURTLESIM_PIXELS) * TURTLESIM_METER;
+      const high = overlay.height - overlay.height / TURTLESIM_PIXELS; // y = 0 m: the last row
+      drawAxes(ctx, frames, (x, y) => [x * pixels, high - y * pixels], pixels);
+    }
+  }
+  $("tf-on-canvas").hidden = !onCanvas;
+  $("tf-view").hidden = onCanvas || !tf || !tf.total;
+  if (!$("tf-view").hidden) drawGrid($("tf-view"), frames, tf.fixed);
+}
+
 // --- the log -----------------------------------------------------------------------------
 
 const logNodes = new Set();
@@ -269,6 +498,7 @@ $("field-select").addEventListener("change", () => {
   state.plot = [];
   drawPlot();
 });
+$("tf-fixed").addEventListener("change", askFrames);
 $("log-level").addEventListener("change", showLogs);
 $("log-node").addEventListener("change", showLogs);
 $("log-clear").addEventListener("click", () => {
