@@ -1,0 +1,88 @@
+"""tf2_ros.TransformListener: fills a Buffer from the /tf and /tf_static topics.
+
+Subscribes with tf2's QoS: /tf keep-last 100, volatile; /tf_static keep-last 100, transient
+local (so a late listener still gets every latched static transform). Its callbacks are in a
+reentrant group, so a lookup with a timeout in another callback of the node can be answered
+while it waits (with a multi-threaded executor). ``spin_thread=True`` spins the node in a
+thread of the listener's own, as tf2_ros does, so a lookup with a timeout works in a program
+that does not spin.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from threading import Thread
+
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+from tf2_msgs.msg import TFMessage
+
+from tf2_ros.buffer import Buffer
+
+__all__ = ["TransformListener"]
+
+AUTHORITY = "default_authority"  # what tf2_ros's listener records as each frame's broadcaster
+
+
+class TransformListener:
+    """Feeds BUFFER with what NODE receives on /tf and /tf_static."""
+
+    def __init__(
+        self,
+        buffer: Buffer,
+        node: Node,
+        *,
+        spin_thread: bool = False,
+        qos: QoSProfile | int | None = None,
+        static_qos: QoSProfile | int | None = None,
+    ) -> None:
+        if qos is None:
+            qos = QoSProfile(
+                depth=100, durability=DurabilityPolicy.VOLATILE, history=HistoryPolicy.KEEP_LAST
+            )
+        if static_qos is None:
+            static_qos = QoSProfile(
+                depth=100,
+                durability=DurabilityPolicy.TRANSIENT_LOCAL,
+                history=HistoryPolicy.KEEP_LAST,
+            )
+        self.buffer = buffer
+        self.node = node
+        self.group = ReentrantCallbackGroup()
+        self.tf_sub = node.create_subscription(
+            TFMessage, "/tf", self.callback, qos, callback_group=self.group
+        )
+        self.tf_static_sub = node.create_subscription(
+            TFMessage, "/tf_static", self.static_callback, static_qos, callback_group=self.group
+        )
+        if spin_thread:
+            self.executor = SingleThreadedExecutor(context=node.context)
+            self.dedicated_listener_thread = Thread(
+                target=self._spin, name="tf2_listener", daemon=True
+            )
+            self.dedicated_listener_thread.start()
+
+    def _spin(self) -> None:
+        self.executor.add_node(self.node)
+        with contextlib.suppress(ExternalShutdownException):  # rclpy shut down: work over
+            self.executor.spin()
+
+    def __del__(self) -> None:
+        executor = getattr(self, "executor", None)
+        if executor is not None:
+            executor.shutdown()
+
+    def unregister(self) -> None:
+        """Stop listening: destroy the two subscriptions."""
+        self.node.destroy_subscription(self.tf_sub)
+        self.node.destroy_subscription(self.tf_static_sub)
+
+    def callback(self, data: TFMessage) -> None:
+        for transform in data.transforms:
+            self.buffer.set_transform(transform, AUTHORITY)
+
+    def static_callback(self, data: TFMessage) -> None:
+        for transform in data.transforms:
+            self.buffer.set_transform_static(transform, AUTHORITY)
