@@ -2,6 +2,7 @@
 
 python -m benchmarks [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
+    tf2_follow
     (default: all)
 """
 
@@ -23,6 +24,7 @@ from benchmarks import (
     memory,
     service,
     setup_time,
+    tf2_follow,
     topic,
     turtlesim,
     web,
@@ -44,6 +46,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
+    "tf2_follow": [tf2_follow.follow_loop],
 }
 
 

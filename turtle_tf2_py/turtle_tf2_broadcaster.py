@@ -9,8 +9,9 @@ import rclpy
 from geometry_msgs.msg import TransformStamped
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
-from tf2_ros import TransformBroadcaster
 from turtlesim.msg import Pose
+
+from tf2_ros import TransformBroadcaster
 
 
 class FramePublisher(Node):

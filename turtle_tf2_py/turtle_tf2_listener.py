@@ -11,10 +11,11 @@ from geometry_msgs.msg import Twist
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.time import Time
+from turtlesim.srv import Spawn
+
 from tf2_ros import TransformException
 from tf2_ros.buffer import Buffer
 from tf2_ros.transform_listener import TransformListener
-from turtlesim.srv import Spawn
 
 
 class FrameListener(Node):
