@@ -22,7 +22,7 @@ from rclpy.executors import SingleThreadedExecutor
 from tf2_msgs.srv import FrameGraph
 
 from ros2cmd.errors import ToolError
-from ros2cmd.graph_view.model import GraphModel
+from ros2cmd.graph_view.model import MAX_VERTICES, GraphModel
 from ros2cmd.graph_view.render import write
 from ros2cmd.wait import spin_until
 from ros_tutorials_common import ctrl_c
@@ -119,7 +119,12 @@ def view_frames(node: rclpy.node.Node, args: argparse.Namespace) -> int:
         Path(name + ".gv").write_text(to_dot(frames, sec + nanosec / 1e9))
     except OSError as error:
         raise ToolError(f"cannot write '{name}.gv': {error.strerror or error}") from None
-    write(to_model(frames, sec + nanosec / 1e9), picture)
+    model = to_model(frames, sec + nanosec / 1e9)
+    if len(model.vertices) > MAX_VERTICES:  # the layout's limit of a readable picture
+        raise ToolError(
+            f"{len(frames)} frames are too many to draw readably; {name}.gv has them all"
+        )
+    write(model, picture)
     return 0
 
 
