@@ -73,6 +73,7 @@ class TransformListener:
         executor = getattr(self, "executor", None)
         if executor is not None:
             executor.shutdown()
+            self.dedicated_listener_thread.join()
 
     def unregister(self) -> None:
         """Stop listening: destroy the two subscriptions."""

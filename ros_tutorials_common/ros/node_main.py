@@ -31,6 +31,7 @@ import rclpy
 from rclpy.context import Context
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
+from rclpy.impl.rcutils_logger import RcutilsLogger
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 from rclpy.utilities import remove_ros_args
@@ -42,6 +43,9 @@ from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 # rclpy.impl.implementation_singleton too), so this is the project's one import of a private
 # rclpy module: everything else takes RCLError from ros_tutorials_common.ros.
 RCLError = _rclpy.RCLError
+# The logger with no name, which C++'s RCUTILS_LOG_* macros write with ("[ERROR] [...] []: ...",
+# tf2's core): rclpy.logging.get_logger refuses an empty name; its root logger is this class's.
+UNNAMED_LOGGER = RcutilsLogger()
 
 
 def user_args(argv: Sequence[str] | None = None) -> list[str]:
