@@ -11,9 +11,9 @@ PY := $(VENV)/bin/python
 INSTALLED := $(VENV)/.installed
 INTERFACES := $(VENV)/.interfaces
 PACKAGES := $(VENV)/.packages
-# A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again.
-PACKAGE_SOURCES := $(wildcard ros_tutorials_*/package.xml ros_tutorials_*/launch ros_tutorials_*/config \
-	ament_copyright/package.xml rosbag2_py/package.xml)
+# A new package.xml, or a launch/ or config/ folder gained or changed, registers the packages again
+# (the lessons' and the stand-ins': every top-level folder with a package.xml).
+PACKAGE_SOURCES := $(wildcard */package.xml */launch */config)
 HOLD_REMOVED := $(VENV)/.ctrl_c_hold_removed
 ENVIRONMENT := $(VENV)/.ros_environment
 INTERFACE_SOURCES := $(wildcard interfaces/cmake/*.cmake interfaces/*/CMakeLists.txt \

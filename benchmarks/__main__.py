@@ -2,7 +2,7 @@
 
 python -m benchmarks [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
-    tf2_follow
+    tf2
     (default: all)
 """
 
@@ -24,6 +24,7 @@ from benchmarks import (
     memory,
     service,
     setup_time,
+    tf2,
     tf2_follow,
     topic,
     turtlesim,
@@ -46,7 +47,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
-    "tf2_follow": [tf2_follow.follow_loop],
+    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
 }
 
 

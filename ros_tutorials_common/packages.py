@@ -116,14 +116,19 @@ def package_dirs() -> dict[str, Path]:
     (turtlesim) has its Python code generated elsewhere: neither is one."""
     found = {}
     for name, prefix in ament.packages().items():
-        manifest = prefix / "share" / name / "package.xml"
         tutorial = name.startswith(PACKAGE_PREFIX)  # shadowed by an overlay, still ours
-        if not tutorial and not manifest.is_symlink():
-            continue
+        source = None
+        if not tutorial:
+            manifest = prefix / "share" / name / "package.xml"
+            if not manifest.is_symlink():
+                continue
+            source = manifest.resolve().parent
+            if not (source / "__init__.py").is_file():  # an interface package's folder
+                continue
         spec = importlib.util.find_spec(name)
         if spec and spec.submodule_search_locations:
             folder = Path(next(iter(spec.submodule_search_locations)))
-            if tutorial or manifest.resolve().parent == folder.resolve():
+            if source is None or folder.resolve() == source:
                 found[name] = folder
     return found
 

@@ -132,6 +132,7 @@ def test_tf2_monitor_reports_the_frames_it_sees(node_process):
          "Failed to convert rate argument 'fast' to a floating-point number"),
         (["tf2_echo", "a", "b", "1.0x"], 3,
          "Failed to convert rate argument '1.0x' to a floating-point number"),
+        (["tf2_echo", "a", "b", "0"], 2, "The echo rate '0' must be a number greater than 0"),
         (["static_transform_publisher", "--frame-id", "a"], 1,
          "error parsing command line arguments: Child frame id must not be empty"),
         (["tf2_monitor", "only_one"], 255, "TF_Monitor: usage: tf2_monitor framea frameb"),

@@ -338,3 +338,42 @@ def test_all_frames_as_yaml():
         "  most_recent_transform: 0.000000\n  oldest_transform: 0.000000\n"
         "  buffer_length: 0.000\n"
     )
+
+
+# -- tf2/test/cache_unittest.cpp ---------------------------------------------------------------
+
+
+def entry(parent: int, x: float = 0.0):
+    return (parent, (x, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+
+
+def test_cache_repeatability_in_either_insert_order():
+    for order in (range(1, 100), range(99, 0, -1)):
+        cache = TimeCache(max_storage=10 * 10**9)
+        for step in order:
+            cache.insert(step, entry(step, x=float(step)))
+        for step in range(1, 100):
+            stamp, (parent, translation, _) = cache.get_data(step)
+            assert (stamp, parent, translation[0]) == (step, step, float(step))
+
+
+def test_cache_zero_at_front_and_duplicate_entries():
+    cache = TimeCache(max_storage=10 * 10**9)
+    for step in range(1, 101):
+        cache.insert(step, entry(step))
+    assert cache.get_data(0) == (100, entry(100))  # 0: the newest
+    cache.insert(101, entry(100))
+    assert cache.get_data(0) == (101, entry(100))
+    duplicates = TimeCache(max_storage=10 * 10**9)
+    duplicates.insert(1, entry(3))
+    duplicates.insert(1, entry(3))  # the very same: kept once
+    assert len(duplicates) == 1
+
+
+def test_cache_does_not_interpolate_across_a_new_parent():
+    cache = TimeCache(max_storage=10 * 10**9)
+    cache.insert(555, entry(4, x=1.5))
+    cache.insert(655, entry(5, x=7.25))
+    for offset in range(100):
+        _, (parent, translation, _) = cache.get_data(555 + offset)
+        assert (parent, translation[0]) == (4, 1.5)

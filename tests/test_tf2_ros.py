@@ -244,3 +244,25 @@ def test_transform_of_an_unknown_type_or_an_unknown_time():
     point.header.frame_id, point.header.stamp = "odom", Time(seconds=30).to_msg()
     with pytest.raises(TransformException, match="extrapolation"):
         buffer.transform(point, "map")
+
+
+def test_bad_transforms_on_tf_are_refused_and_the_listener_goes_on(context, executor, capfd):
+    broadcaster = TransformBroadcaster(node(context, executor, "bad_broadcaster"))
+    buffer = Buffer()
+    TransformListener(buffer, node(context, executor, "patient_listener"))
+    loop = [transform("x", "y", Time(seconds=1)), transform("y", "x", Time(seconds=1))]
+    nan = transform("world", "broken", Time(seconds=1), (math.nan, 0, 0))
+    good = transform("world", "fine", Time(seconds=1), (1, 0, 0))
+
+    def heard() -> bool:
+        broadcaster.sendTransform([*loop, nan, good])
+        return buffer.can_transform("world", "fine", Time())
+
+    spin_until(executor, heard, what="the good transform after the bad ones")
+    assert not buffer.can_transform("world", "broken", Time())
+    possible, message = buffer.can_transform("x", "world", Time(), return_debug_tuple=True)
+    assert not possible
+    assert message.startswith("The tf tree is invalid because it contains a loop.\n")
+    with pytest.raises(LookupException, match="contains a loop"):
+        buffer.lookup_transform("fine", "x", Time(seconds=1))
+    assert 'TF_NAN_INPUT: Ignoring transform for child_frame_id "broken"' in capfd.readouterr().err

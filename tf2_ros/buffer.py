@@ -94,7 +94,7 @@ class Buffer(BufferCore, BufferInterface):
         self, target_frame: str, source_frame: str, time: Time, timeout: Duration = NO_TIMEOUT
     ) -> Any:
         """The transform from SOURCE_FRAME to TARGET_FRAME at TIME; waits up to TIMEOUT."""
-        self.can_transform(target_frame, source_frame, time, timeout)
+        self._wait(timeout, lambda: self.can_transform_core(target_frame, source_frame, time)[0])
         return self.lookup_transform_core(target_frame, source_frame, time)
 
     def can_transform(
@@ -123,9 +123,8 @@ class Buffer(BufferCore, BufferInterface):
         timeout: Duration = NO_TIMEOUT,
     ) -> Any:
         """SOURCE_FRAME at SOURCE_TIME into TARGET_FRAME at TARGET_TIME, through FIXED_FRAME."""
-        self.can_transform_full(
-            target_frame, target_time, source_frame, source_time, fixed_frame, timeout
-        )
+        arguments = (target_frame, target_time, source_frame, source_time, fixed_frame)
+        self._wait(timeout, lambda: self.can_transform_full_core(*arguments)[0])
         return self.lookup_transform_full_core(
             target_frame, target_time, source_frame, source_time, fixed_frame
         )

@@ -54,7 +54,11 @@ def parse_rate(text: str) -> tuple[float | None, int]:
             f"Failed to convert rate argument '{text}' to a floating-point number", file=sys.stderr
         )
         return None, 2 if match is None else 3
-    return float(match.group()), 0
+    rate = float(match.group())
+    if not (0 < rate < math.inf):  # rclcpp::Rate refuses it too, with an exception
+        print(f"The echo rate '{text}' must be a number greater than 0", file=sys.stderr)
+        return None, 2
+    return rate, 0
 
 
 def euler_ypr(m: list[list[float]]) -> tuple[float, float, float]:
@@ -116,7 +120,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if parsed is None:
             return status
         rate = parsed
-    period = 1.0 / rate if rate > 0 else math.inf
+    period = min(1.0 / rate, 86400.0)  # Python's sleep refuses a period of 1e300 s
     source, target = args[0], args[1]
     init(argv)
     node = rclpy.create_node("tf2_echo")

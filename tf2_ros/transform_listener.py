@@ -11,6 +11,7 @@ that does not spin.
 from __future__ import annotations
 
 import contextlib
+import threading
 from threading import Thread
 
 from rclpy.callback_groups import ReentrantCallbackGroup
@@ -73,7 +74,8 @@ class TransformListener:
         executor = getattr(self, "executor", None)
         if executor is not None:
             executor.shutdown()
-            self.dedicated_listener_thread.join()
+            if threading.current_thread() is not self.dedicated_listener_thread:
+                self.dedicated_listener_thread.join()
 
     def unregister(self) -> None:
         """Stop listening: destroy the two subscriptions."""

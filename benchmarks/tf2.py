@@ -1,0 +1,195 @@
+"""tf2: a lookup through a chain of frames, and what a TransformListener costs in CPU.
+
+- ``lookup_transform`` (tf2_ros.Buffer, the tf2_py core) from the end of a 10-frame chain to
+  its root, at a time between two stamps of every frame (interpolated, slerped), p50 and p99
+  of single calls; the baseline is the floor: numpy composing the same ten 4x4 matrices.
+- A TransformListener's CPU with 100 frames at 100 Hz: a broadcaster process sends one
+  TFMessage of 100 transforms every 10 ms; the listener (a Buffer and its listener, spun) runs
+  in a process of its own, measured from /proc over 10 s after a warm-up. The baseline is a
+  bare rclpy subscription to /tf with an empty callback in the same conditions: what receiving
+  the messages costs at all.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+
+import numpy as np
+
+from benchmarks.common import Row, fmt_us, p50, p99, python, start, stop, wait_for_lines
+
+CHAIN = 10
+CALLS = 5000
+
+
+def _chain_buffer():
+    from geometry_msgs.msg import TransformStamped
+    from rclpy.time import Time
+
+    from tf2_ros.buffer import Buffer
+
+    buffer = Buffer()
+    matrices = []
+    for number in range(1, CHAIN + 1):
+        for seconds in (10, 11):
+            message = TransformStamped()
+            message.header.frame_id = f"frame{number - 1}"
+            message.child_frame_id = f"frame{number}"
+            message.header.stamp = Time(seconds=seconds).to_msg()
+            angle = 0.1 * number + 0.05 * (seconds - 10)
+            message.transform.translation.x = 1.0
+            message.transform.translation.y = 0.1 * number
+            message.transform.rotation.z = math.sin(angle / 2)
+            message.transform.rotation.w = math.cos(angle / 2)
+            buffer.set_transform(message, "bench")
+        angle = 0.1 * number + 0.025
+        matrix = np.eye(4)
+        matrix[:2, :2] = [[math.cos(angle), -math.sin(angle)], [math.sin(angle), math.cos(angle)]]
+        matrix[:3, 3] = [1.0, 0.1 * number, 0.0]
+        matrices.append(matrix)
+    return buffer, matrices
+
+
+def _timed(call, calls: int = CALLS) -> list[float]:
+    for _ in range(200):  # warm-up
+        call()
+    samples = []
+    clock = time.perf_counter
+    for _ in range(calls):
+        began = clock()
+        call()
+        samples.append(clock() - began)
+    return samples
+
+
+def lookup_chain() -> list[Row]:
+    from rclpy.time import Time
+
+    buffer, matrices = _chain_buffer()
+    when = Time(seconds=10, nanoseconds=500_000_000)
+    looked = buffer.lookup_transform("frame0", f"frame{CHAIN}", when)
+    expected = np.linalg.multi_dot(matrices)
+    t = looked.transform.translation
+    assert np.allclose([t.x, t.y, t.z], expected[:3, 3]), "the lookup disagrees with numpy"
+
+    def compose() -> np.ndarray:
+        result = matrices[0]
+        for matrix in matrices[1:]:
+            result = result @ matrix
+        return result
+
+    ours = _timed(lambda: buffer.lookup_transform("frame0", f"frame{CHAIN}", when))
+    core = _timed(lambda: buffer._lookup("frame0", f"frame{CHAIN}", when.nanoseconds))
+    floor = _timed(compose)
+    return [
+        Row(
+            f"tf2: lookup_transform, {CHAIN}-frame chain, interpolated (p50/p99)",
+            f"{fmt_us(p50(ours))} / {fmt_us(p99(ours))}",
+            f"{fmt_us(p50(floor))} / {fmt_us(p99(floor))} (numpy, 10 4x4 @)",
+            p50(ours) / p50(floor),
+        ),
+        Row(
+            "tf2: the same, the walk only (no TransformStamped built) (p50/p99)",
+            f"{fmt_us(p50(core))} / {fmt_us(p99(core))}",
+            f"{fmt_us(p50(floor))} / {fmt_us(p99(floor))} (numpy)",
+            p50(core) / p50(floor),
+        ),
+    ]
+
+
+BROADCASTER = """
+import math, rclpy
+from geometry_msgs.msg import TransformStamped
+from tf2_msgs.msg import TFMessage
+from tf2_ros import TransformBroadcaster
+rclpy.init()
+node = rclpy.create_node('bench_broadcaster')
+broadcaster = TransformBroadcaster(node)
+def tick():
+    now = node.get_clock().now().to_msg()
+    transforms = []
+    for number in range(100):
+        t = TransformStamped()
+        t.header.stamp = now
+        t.header.frame_id = 'world'
+        t.child_frame_id = f'frame{number}'
+        t.transform.translation.x = float(number)
+        t.transform.rotation.w = 1.0
+        transforms.append(t)
+    broadcaster.sendTransform(transforms)
+node.create_timer(0.01, tick)
+print('broadcasting', flush=True)
+rclpy.spin(node)
+"""
+
+LISTENER = """
+import rclpy, sys
+from rclpy.time import Time
+from tf2_ros.buffer import Buffer
+from tf2_ros.transform_listener import TransformListener
+rclpy.init()
+node = rclpy.create_node('bench_listener')
+buffer = Buffer()
+listener = TransformListener(buffer, node)
+def check():
+    if buffer.can_transform('world', 'frame99', Time()):
+        print('listening', flush=True)
+node.create_timer(0.5, check)
+rclpy.spin(node)
+"""
+
+BARE = """
+import rclpy
+from rclpy.qos import QoSProfile
+from tf2_msgs.msg import TFMessage
+rclpy.init()
+node = rclpy.create_node('bench_bare')
+seen = []
+def heard(message):
+    if not seen:
+        seen.append(1)
+        print('listening', flush=True)
+node.create_subscription(TFMessage, '/tf', heard, QoSProfile(depth=100))
+rclpy.spin(node)
+"""
+
+
+def _cpu_seconds(pid: int) -> float:
+    with open(f"/proc/{pid}/stat") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def _listener_cpu(script: str, seconds: float = 10.0) -> float:
+    """The share of one core SCRIPT's process takes while it receives the broadcaster."""
+    process = start(python("-c", script))
+    try:
+        if not wait_for_lines(process, lambda line: "listening" in line, timeout=60):
+            raise RuntimeError("the listener never received the frames")
+        time.sleep(2.0)  # warm-up: discovery settled, caches full
+        before, began = _cpu_seconds(process.pid), time.monotonic()
+        time.sleep(seconds)
+        return (_cpu_seconds(process.pid) - before) / (time.monotonic() - began)
+    finally:
+        stop(process)
+
+
+def listener_cpu() -> list[Row]:
+    broadcaster = start(python("-c", BROADCASTER))
+    try:
+        if not wait_for_lines(broadcaster, lambda line: "broadcasting" in line, timeout=60):
+            raise RuntimeError("the broadcaster did not start")
+        listener = _listener_cpu(LISTENER)
+        bare = _listener_cpu(BARE)
+    finally:
+        stop(broadcaster)
+    return [
+        Row(
+            "tf2: TransformListener CPU, 100 frames at 100 Hz (1 message / 10 ms)",
+            f"{listener * 100:.0f} % of a core",
+            f"{bare * 100:.0f} % (bare rclpy subscription to /tf)",
+            listener / bare if bare else None,
+        )
+    ]
