@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import re
+import signal
 from pathlib import Path
 
 import pytest
@@ -192,3 +193,15 @@ def test_the_dot_file_is_view_frames_own_and_the_picture_has_each_frame():
         "carrot1",
     }
     assert frames_from_yaml("[]") == {} and to_dot({}, 0.0).startswith('digraph G { "No tf')
+
+
+@pytest.mark.parametrize("stop_signal", [signal.SIGINT, signal.SIGTERM])
+def test_view_frames_ends_at_once_on_ctrl_c_and_sigterm(node_process, tmp_path, stop_signal):
+    """While it listens: Ctrl-C or SIGTERM ends it with status 130, no traceback, no files."""
+    name = tmp_path / "frames"
+    tool = ros2(node_process, "run", "tf2_tools", "view_frames", "-t", "600", "-o", str(name))
+    tool.wait_for_text("Listening to tf data for 600.0 seconds...")
+    tool.process.send_signal(stop_signal)
+    assert tool.wait() == 130, tool.output
+    assert "Traceback" not in tool.output, tool.output
+    assert not list(tmp_path.iterdir())

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import rclpy
 import yaml
-from rclpy.executors import SingleThreadedExecutor
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from tf2_msgs.srv import FrameGraph
 
 from ros2cmd.errors import ToolError
@@ -26,7 +26,8 @@ from ros2cmd.graph_view.model import MAX_VERTICES, GraphModel
 from ros2cmd.graph_view.render import write
 from ros2cmd.wait import spin_until
 from ros_tutorials_common import ctrl_c
-from ros_tutorials_common.cli import positive_seconds
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import init, user_args
 
 
@@ -139,6 +140,12 @@ def main(argv: list[str] | None = None) -> int:
     except ToolError as error:
         print(f"view_frames: {error}", file=sys.stderr)
         return 1
+    except ExternalShutdownException:  # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C
+        return EXIT_INTERRUPTED
+    except RuntimeError as error:  # the same, seen by rcl first ("context is not valid")
+        if is_shutdown_race(error):
+            return EXIT_INTERRUPTED
+        raise
     finally:
         node.destroy_node()
         rclpy.try_shutdown()
