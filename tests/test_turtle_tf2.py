@@ -205,3 +205,37 @@ def test_view_frames_ends_at_once_on_ctrl_c_and_sigterm(node_process, tmp_path, 
     assert tool.wait() == 130, tool.output
     assert "Traceback" not in tool.output, tool.output
     assert not list(tmp_path.iterdir())
+
+
+# The launch tutorials' package launch_tutorial, the Large Projects page's files among them.
+TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
+
+
+def test_launch_for_large_projects_page_runs_turtle_tf2_py(node_process, executor):
+    """The page "Using ROS 2 launch for large projects" (Intermediate > Launch): its launch
+    files as printed (tests/data/launch_tutorial/); `ros2 launch launch_tutorial
+    launch_turtlesim_launch.py` runs two turtlesims, turtle_tf2_py's broadcasters and listener
+    (turtle2 drives to carrot1), mimic (turtlesim2's turtle1 copies turtle2) and the fixed
+    frame broadcaster named after $USER; rviz2, which is not on PyPI, says so in one line and
+    the rest runs on."""
+    turtles = Turtles(executor)
+    copied: list[Pose] = []
+    turtles.node.create_subscription(Pose, "/turtlesim2/turtle1/pose", copied.append, 10)
+    env = {**HEADLESS, "AMENT_PREFIX_PATH": str(TUTORIAL_PREFIX), "USER": "learner"}
+    launch = node_process(
+        script("ros2"), "launch", "launch_tutorial", "launch_turtlesim_launch.py", env=env
+    )
+    try:
+        launch.wait_for_text("[rviz2-8] error: rviz2 is a GUI tool this project does not have")
+        carrot = (TURTLE1[0], TURTLE1[1] + 2.0)
+        turtles.until("turtle2", lambda at: math.dist(at, carrot) < 1.0, "turtle2 at carrot1")
+        spin_until(
+            executor,
+            lambda: copied and math.dist((copied[-1].x, copied[-1].y), TURTLE1) > 0.5,
+            FOLLOW_TIMEOUT,
+            "turtlesim2's turtle1 to mimic turtle2",
+        )
+        nodes = ok("ros2", "node", "list").splitlines()
+        assert {"/turtlesim2/sim", "/sim", "/mimic", "/learner_fixed_broadcaster"} <= set(nodes)
+    finally:
+        stop(launch)
