@@ -12,6 +12,7 @@ import time
 import pytest
 import rclpy
 from geometry_msgs.msg import (
+    Point,
     PointStamped,
     PoseStamped,
     PoseWithCovarianceStamped,
@@ -234,12 +235,20 @@ def test_transform_a_point_a_vector_and_poses():
     covariant.pose.covariance[0] = 4.0  # variance along odom's x
     rotated = buffer.transform(covariant, "map").pose.covariance
     assert rotated[0] == pytest.approx(0) and rotated[7] == pytest.approx(4)  # now along y
+    laser = TransformStamped(header=point.header, child_frame_id="laser")
+    laser.transform.translation.x = 2.0
+    laser.transform.rotation.w = 1.0
+    chained = buffer.transform(laser, "map")
+    assert chained.child_frame_id == "laser" and chained.header.frame_id == "map"
+    assert (chained.transform.translation.x, chained.transform.translation.y) == pytest.approx(
+        (1, 2)
+    )
 
 
 def test_transform_of_an_unknown_type_or_an_unknown_time():
     buffer = buffer_with_a_turned_frame()
     with pytest.raises(TypeException, match="is not loaded or supported"):
-        buffer.transform(TransformStamped(), "map")
+        buffer.transform(Point(), "map")
     point = PointStamped()
     point.header.frame_id, point.header.stamp = "odom", Time(seconds=30).to_msg()
     with pytest.raises(TransformException, match="extrapolation"):

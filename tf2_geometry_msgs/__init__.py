@@ -2,7 +2,8 @@
 
 ``do_transform_point``, ``do_transform_vector3`` (rotation only), ``do_transform_pose``,
 ``do_transform_pose_stamped``, ``do_transform_pose_with_covariance_stamped`` (the covariance
-rotated too) and ``do_transform_polygon_stamped`` each take the message and a
+rotated too), ``do_transform_polygon_stamped`` and ``do_transform_transform_stamped`` (as C++
+tf2_geometry_msgs covers TransformStamped) each take the message and a
 TransformStamped, and return a new message with the transform's header. Importing this module
 registers them, which makes ``Buffer.transform()`` take those types (upstream's behaviour:
 ``import tf2_geometry_msgs`` before ``buffer.transform(point_stamped, 'world')``).
@@ -30,6 +31,7 @@ __all__ = [
     "do_transform_pose",
     "do_transform_pose_stamped",
     "do_transform_pose_with_covariance_stamped",
+    "do_transform_transform_stamped",
     "do_transform_vector3",
     "transform_covariance",
 ]
@@ -141,6 +143,22 @@ def do_transform_polygon_stamped(
     return result
 
 
+def do_transform_transform_stamped(
+    transform_in: TransformStamped, transform: TransformStamped
+) -> TransformStamped:
+    """A transform from the transform's frame to TRANSFORM_IN's child (C++ tf2_geometry_msgs
+    covers TransformStamped; upstream's Python module does not)."""
+    rotation, translation = _rotation_and_translation(transform)
+    t, r = transform_in.transform.translation, transform_in.transform.rotation
+    x, y, z = rotation @ np.array([t.x, t.y, t.z]) + translation
+    result = TransformStamped(header=transform.header, child_frame_id=transform_in.child_frame_id)
+    moved = result.transform
+    moved.translation.x, moved.translation.y, moved.translation.z = float(x), float(y), float(z)
+    q = moved.rotation
+    q.x, q.y, q.z, q.w = _quaternion(rotation @ _rotation_matrix(r.x, r.y, r.z, r.w))
+    return result
+
+
 def _same_message(message: object) -> object:
     return message
 
@@ -151,6 +169,7 @@ _transforms.add(Vector3Stamped, do_transform_vector3)
 _transforms.add(PoseStamped, do_transform_pose_stamped)
 _transforms.add(PoseWithCovarianceStamped, do_transform_pose_with_covariance_stamped)
 _transforms.add(PolygonStamped, do_transform_polygon_stamped)
+_transforms.add(TransformStamped, do_transform_transform_stamped)
 _conversions = ConvertRegistration()
 for _type in (Vector3Stamped, PoseStamped, PointStamped):
     _conversions.add_to_msg(_type, _same_message)
