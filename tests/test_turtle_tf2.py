@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 import re
 import signal
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -48,22 +49,47 @@ def ros2(node_process, *args: str) -> NodeProcess:
     return node_process(script("ros2"), *args, env=HEADLESS)
 
 
+@pytest.fixture
+def launched() -> Iterator[Callable[..., NodeProcess]]:
+    """`ros2 launch ...` started cold, as tests/warm.py says the launcher must be (forked
+    from the warm-start server, it may die by SIGSEGV at exit); killed at the end."""
+    started: list[NodeProcess] = []
+
+    def launch(*args: str, env: dict[str, str] | None = None) -> NodeProcess:
+        started.append(
+            NodeProcess(script("ros2"), "launch", *args, env={**HEADLESS, **(env or {})}, cold=True)
+        )
+        return started[-1]
+
+    yield launch
+    for process in started:
+        process.kill()
+
+
 def stop(process: NodeProcess) -> None:
     assert process.interrupt() in (0, 130)
     assert "Traceback" not in process.output, process.output[-4000:]
 
 
 def test_demo_turtle2_follows_turtle1_and_view_frames_draws_the_tree(
-    node_process, executor, tmp_path
+    launched, node_process, executor, tmp_path
 ):
     turtles = Turtles(executor)
-    launch = ros2(node_process, "launch", "turtle_tf2_py", "turtle_tf2_demo.launch.py")
+    launch = launched("turtle_tf2_py", "turtle_tf2_demo.launch.py")
     try:
         launch.wait_for_text("Successfully spawned turtle2", timeout=FOLLOW_TIMEOUT)
         turtles.until(
             "turtle2", lambda at: math.dist(at, TURTLE1) < 1.0, "turtle2 to reach turtle1"
         )
         shown = run("ros2", "run", "tf2_tools", "view_frames", cwd=str(tmp_path))
+        # The page's tf2_echo: turtle1 seen from turtle2, which has just reached it.
+        echo = ros2(node_process, "run", "tf2_ros", "tf2_echo", "turtle2", "turtle1")
+        try:
+            echo.wait_for_text("- Matrix:", count=2)  # the first transform printed whole
+            near = re.search(r"- Translation: \[(\S+), (\S+), 0\.000\]", echo.output)
+            assert near and math.hypot(float(near[1]), float(near[2])) < 1.0, echo.output
+        finally:
+            stop(echo)
     finally:
         stop(launch)
     assert shown.returncode == 0, shown.stderr
@@ -84,13 +110,11 @@ def test_demo_turtle2_follows_turtle1_and_view_frames_draws_the_tree(
 
 
 @pytest.mark.parametrize("kind", ["fixed", "dynamic"])
-def test_frame_demos_turtle2_follows_the_carrot(node_process, executor, kind):
+def test_frame_demos_turtle2_follows_the_carrot(launched, executor, kind):
     """The fixed carrot is 2 m to turtle1's left (turtle1 faces +x): turtle2 drives there.
     The dynamic one jumps 10 m either side of turtle1 each second: turtle2 sets off."""
     turtles = Turtles(executor)
-    launch = ros2(
-        node_process, "launch", "turtle_tf2_py", f"turtle_tf2_{kind}_frame_demo.launch.py"
-    )
+    launch = launched("turtle_tf2_py", f"turtle_tf2_{kind}_frame_demo.launch.py")
     try:
         if kind == "fixed":
             carrot = (TURTLE1[0], TURTLE1[1] + 2.0)
@@ -211,7 +235,7 @@ def test_view_frames_ends_at_once_on_ctrl_c_and_sigterm(node_process, tmp_path, 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
 
 
-def test_launch_for_large_projects_page_runs_turtle_tf2_py(node_process, executor):
+def test_launch_for_large_projects_page_runs_turtle_tf2_py(launched, executor):
     """The page "Using ROS 2 launch for large projects" (Intermediate > Launch): its launch
     files as printed (tests/data/launch_tutorial/); `ros2 launch launch_tutorial
     launch_turtlesim_launch.py` runs two turtlesims, turtle_tf2_py's broadcasters and listener
@@ -221,10 +245,8 @@ def test_launch_for_large_projects_page_runs_turtle_tf2_py(node_process, executo
     turtles = Turtles(executor)
     copied: list[Pose] = []
     turtles.node.create_subscription(Pose, "/turtlesim2/turtle1/pose", copied.append, 10)
-    env = {**HEADLESS, "AMENT_PREFIX_PATH": str(TUTORIAL_PREFIX), "USER": "learner"}
-    launch = node_process(
-        script("ros2"), "launch", "launch_tutorial", "launch_turtlesim_launch.py", env=env
-    )
+    env = {"AMENT_PREFIX_PATH": str(TUTORIAL_PREFIX), "USER": "learner"}
+    launch = launched("launch_tutorial", "launch_turtlesim_launch.py", env=env)
     try:
         launch.wait_for_text("[rviz2-8] error: rviz2 is a GUI tool this project does not have")
         carrot = (TURTLE1[0], TURTLE1[1] + 2.0)
