@@ -25,6 +25,7 @@ from benchmarks import (
     service,
     setup_time,
     tf2,
+    tf2_follow,
     topic,
     turtlesim,
     web,
@@ -46,7 +47,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
-    "tf2": [tf2.lookup_chain, tf2.listener_cpu],
+    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
 }
 
 

@@ -114,6 +114,9 @@ SCENES: dict[str, tuple[tuple[str, str | None], ...]] = {
         ("user_record_subscriber", "Receive : Ada Lovelace, age 36, score "),
     ),
     "workspace": (),  # no process: the blocks share their folder (~/ros2_ws)
+    "tf2_demo": (
+        ("ros2 launch turtle_tf2_py turtle_tf2_demo.launch.py", "Successfully spawned turtle2"),
+    ),
 }
 
 CHECKS: dict[tuple[str, str], Check] = {
@@ -165,6 +168,9 @@ CHECKS: dict[tuple[str, str], Check] = {
     ("docs/launch.md", "source .venv/bin/activate"): Check(lines=(0, 5, 6)),
     # official-tutorials.md
     ("docs/official-tutorials.md", "rosdep init"): Check(),
+    # tf2.md
+    ("docs/tf2.md", "ros2 node list"): Check(scene="tf2_demo"),
+    ("docs/tf2.md", "ros2 pkg executables turtle_tf2_py"): Check(),
     # own-package.md
     (
         "docs/own-package.md",

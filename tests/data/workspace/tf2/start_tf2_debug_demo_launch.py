@@ -1,0 +1,43 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+
+from launch_ros.actions import Node
+
+def generate_launch_description():
+   return LaunchDescription([
+      DeclareLaunchArgument(
+         'target_frame', default_value='turtle1',
+         description='Target frame name.'
+      ),
+      Node(
+         package='turtlesim',
+         executable='turtlesim_node',
+         name='sim',
+         output='screen'
+      ),
+      Node(
+         package='learning_tf2_cpp',
+         executable='turtle_tf2_broadcaster',
+         name='broadcaster1',
+         parameters=[
+               {'turtlename': 'turtle1'}
+         ]
+      ),
+      Node(
+         package='learning_tf2_cpp',
+         executable='turtle_tf2_broadcaster',
+         name='broadcaster2',
+         parameters=[
+               {'turtlename': 'turtle2'}
+         ]
+      ),
+      Node(
+         package='learning_tf2_cpp',
+         executable='turtle_tf2_listener_debug',
+         name='listener_debug',
+         parameters=[
+               {'target_frame': LaunchConfiguration('target_frame')}
+         ]
+      ),
+   ])
