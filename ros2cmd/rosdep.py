@@ -43,6 +43,9 @@ PYTHON_KEYS = {
     "python3-serial": "pyserial",
     "python3-pil": "Pillow",
 }
+# ROS 2 keys that a package here stands for: ROS 2 has tf2_ros (C++, with tf2_echo ...) and
+# tf2_ros_py (the Python module tf2_ros) apart; here the package tf2_ros is both.
+PROVIDED_BY = {"tf2_ros_py": "tf2_ros"}
 # rosdep's commands this rosdep has no answer for.
 OTHER_COMMANDS = ("db", "resolve", "search", "what-needs", "where-defined", "fix-permissions")
 # Test dependencies of every ament_cmake package `ros2 pkg create` makes, needed only with
@@ -146,7 +149,7 @@ def python_installed(key: str) -> tuple[bool, str]:
 
 def missing_reason(key: str, index: Collection[str], workspace: Collection[str]) -> str | None:
     """None if KEY is here, else how to get it, in one line."""
-    if key in index:
+    if key in index or PROVIDED_BY.get(key) in index:
         return None
     if key in workspace:
         return (

@@ -111,6 +111,9 @@ def learning_tf2_py(workspace: Path) -> None:
     (package / "launch" / "start_tf2_debug_demo_launch.py").write_text(
         debug_launch.replace("learning_tf2_cpp", "learning_tf2_py")
     )
+    # The pages' rosdep line, before the build: every dependency is here.
+    checked = ok(activated("rosdep install -i --from-path src --rosdistro jazzy -y"), workspace)
+    assert "#All required rosdeps installed successfully" in checked
     built = ok(
         activated("colcon build --packages-select learning_tf2_py"), workspace, BUILD_TIMEOUT
     )
