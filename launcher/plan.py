@@ -16,8 +16,6 @@ import sys
 from dataclasses import dataclass, field
 from typing import Any
 
-import yaml
-
 from launcher import LaunchError
 from launcher.declarations import AT_START, ContainerDecl, Launch, NodeDecl, Step, When
 from ros_tutorials_common import packages
@@ -62,6 +60,8 @@ def command_for(package: str, executable: str, where: str) -> list[str]:
 def ros_value(value: Any) -> str:
     """A parameter value as ``-p name:=value`` needs it: rcl reads it as YAML."""
     if isinstance(value, str):
+        import yaml  # here: a launch without parameters reads no YAML
+
         try:
             plain = load_yaml(value) == value and value == value.strip()
         except (yaml.YAMLError, InputError):
