@@ -8,7 +8,6 @@ name, namespace, remaps and parameters become standard ROS arguments:
 
 from __future__ import annotations
 
-import json
 import os
 import shlex
 import shutil
@@ -68,6 +67,8 @@ def ros_value(value: Any) -> str:
             plain = False
         if plain:
             return value
+    import json
+
     return json.dumps(value)  # JSON is YAML: quoted strings, true/false, numbers, lists
 
 
