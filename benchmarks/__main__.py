@@ -62,6 +62,10 @@ def main() -> int:
     # would inherit SIGINT *ignored*, and a shell cannot trap a signal ignored on entry: the
     # Ctrl-C the benchmarks send would do nothing. Take the default back for the children.
     signal.signal(signal.SIGINT, signal.default_int_handler)
+    # Programs run as a user runs them: from bytecode Python wrote at their first start. Where
+    # the environment says PYTHONDONTWRITEBYTECODE (some shells and containers do), every
+    # start compiled the launcher and the launch model anew, which the shell script never does.
+    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
     domain = private_domain()
     print(
         f"# ros-tutorials benchmarks, {datetime.date.today()}, {platform.machine()}, "
@@ -70,7 +74,8 @@ def main() -> int:
     rows: list[Row] = []
     failed = []
     for name in args.groups or GROUPS:
-        print(f"# running {name} ...", flush=True)
+        load = ", ".join(f"{value:.1f}" for value in os.getloadavg())
+        print(f"# running {name} ... (load average {load})", flush=True)
         for step in GROUPS[name]:
             # One step failing (an error, a timeout) must not lose the other figures.
             try:

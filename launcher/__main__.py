@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import shlex
 import sys
-import traceback
 from pathlib import Path
 
 from launcher import CodeRefused, LaunchError, guardian
@@ -215,6 +214,8 @@ def main(
         specs = make_plan(launch, options.screen, options.sigterm_timeout, options.sigkill_timeout)
     except (LaunchError, RecursionError) as error:
         if options.debug:
+            import traceback
+
             traceback.print_exc()
         if isinstance(error, RecursionError):
             error = LaunchError("the launch file is nested too deeply")

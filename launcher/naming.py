@@ -7,8 +7,6 @@ from __future__ import annotations
 import re
 from typing import Any
 
-import yaml
-
 from ros_tutorials_common.bounded import InputError, load_yaml
 from ros_tutorials_common.names import TOKEN, valid_remap_name
 
@@ -69,6 +67,8 @@ def yaml_parameter(text: str) -> Any:
     no single value (a mapping, nothing, or no valid YAML)."""
     if len(text) > 1024 and _PLAIN_TEXT.fullmatch(text):  # YAML reads it as this text; its
         return text  # pure-Python scanner would take seconds for a megabyte
+    import yaml  # here: a launch without parameters reads no YAML
+
     try:
         value = load_yaml(text, "the parameter value")
     except (yaml.YAMLError, InputError):

@@ -15,18 +15,20 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 from xml.parsers import expat
-
-import yaml
 
 from launcher import LaunchError
 from ros_tutorials_common.bounded import (
     MAX_YAML_NODES,
     InputError,
-    _BoundedLoader,
     _expanded_size,
+    bounded_loader,
     read_bytes,
 )
+
+if TYPE_CHECKING:
+    import yaml
 
 
 @dataclass
@@ -65,8 +67,10 @@ def parse_file(path: Path) -> Element:
 
 def parse_yaml(data: bytes, path: Path) -> Element:
     """A launch_yaml file as the elements the XML front-end gives (see the module docstring)."""
+    import yaml  # here: an XML launch file reads no YAML
+
     try:
-        loader = _BoundedLoader(data.decode("utf-8"))
+        loader = bounded_loader(data.decode("utf-8"))
         try:
             root = loader.get_single_node()
         finally:
@@ -100,6 +104,8 @@ def _yaml_error(node: yaml.Node, path: Path, message: str) -> LaunchError:
 
 def _yaml_entities(node: yaml.Node, path: Path) -> list[Element]:
     """A list of entities: each a mapping of one tag to its attributes and children."""
+    import yaml
+
     if not isinstance(node, yaml.SequenceNode):
         raise _yaml_error(node, path, "expected a list of entities (- node: ..., - arg: ...)")
     entities = []
@@ -112,6 +118,8 @@ def _yaml_entities(node: yaml.Node, path: Path) -> list[Element]:
 
 
 def _yaml_element(tag: str, body: yaml.Node, path: Path, line: int) -> Element:
+    import yaml
+
     element = Element(tag.replace("-", "_"), {}, path, line)
     if isinstance(body, yaml.ScalarNode):
         if body.value not in ("", "~", "null"):

@@ -8,15 +8,12 @@ name, namespace, remaps and parameters become standard ROS arguments:
 
 from __future__ import annotations
 
-import json
 import os
 import shlex
 import shutil
 import sys
 from dataclasses import dataclass, field
 from typing import Any
-
-import yaml
 
 from launcher import LaunchError
 from launcher.declarations import AT_START, ContainerDecl, Launch, NodeDecl, Step, When
@@ -62,12 +59,16 @@ def command_for(package: str, executable: str, where: str) -> list[str]:
 def ros_value(value: Any) -> str:
     """A parameter value as ``-p name:=value`` needs it: rcl reads it as YAML."""
     if isinstance(value, str):
+        import yaml  # here: a launch without parameters reads no YAML
+
         try:
             plain = load_yaml(value) == value and value == value.strip()
         except (yaml.YAMLError, InputError):
             plain = False
         if plain:
             return value
+    import json
+
     return json.dumps(value)  # JSON is YAML: quoted strings, true/false, numbers, lists
 
 

@@ -9,7 +9,6 @@ lines, never the launcher's.
 
 from __future__ import annotations
 
-import traceback
 import types
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -32,6 +31,8 @@ class LaunchFileRaised(LaunchError):
 
 def _user_traceback(error: BaseException) -> tuple[str, str]:
     """The traceback lines in the launch file (and its own modules), and its last file:line."""
+    import traceback
+
     from launch._base import is_ours
 
     frames = [frame for frame in traceback.extract_tb(error.__traceback__)

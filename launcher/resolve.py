@@ -27,12 +27,10 @@ import re
 import shlex
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
+from functools import cache
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from launch_xml import Entity, Parser
 from launcher import CodeRefused, LaunchError
 from launcher.declarations import (
     AT_START,
@@ -357,6 +355,8 @@ PARAM_ATTRS = frozenset({"name", "value", "from", "type", "value_sep", "allow_su
 
 def _load_yaml(text: str, element: Element) -> Any:
     """YAML written in (or read by) a launch file, within the limits of bounded.load_yaml."""
+    import yaml  # here: a launch without parameters reads no YAML
+
     try:
         return load_yaml(text, "the YAML")
     except InputError as error:
@@ -389,16 +389,23 @@ def _short(text: str, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-class LaunchParser(Parser):
+@cache
+def _launch_parser() -> type:
     """launch.frontend's Parser for the launcher: the entities an action holds (a <group>'s,
     a <timer>'s children) are read when the action reaches them, in its scope and by the
-    tag's handler of the file's format (Resolver.deferred)."""
+    tag's handler of the file's format (Resolver.deferred). Made at its first use: launch_xml
+    brings in the whole launch model, which a file without ROS 2 actions never needs, and its
+    import was a third of the launcher's start before its first process."""
+    from launch_xml import Parser
 
-    def __init__(self, resolver: Resolver, parent: str) -> None:
-        self.resolver, self.parent = resolver, parent
+    class LaunchParser(Parser):
+        def __init__(self, resolver: Resolver, parent: str) -> None:
+            self.resolver, self.parent = resolver, parent
 
-    def parse_action(self, entity: Any) -> Any:
-        return self.resolver.deferred(entity.element, self.parent)
+        def parse_action(self, entity: Any) -> Any:
+            return self.resolver.deferred(entity.element, self.parent)
+
+    return LaunchParser
 
 
 class Resolver:
@@ -805,7 +812,9 @@ class Resolver:
     def parse(self, element: Element) -> Any:
         """``element``'s action, as launch.frontend's Parser builds it (if/unless were read
         already: enabled()); the entities it holds are read when the action reaches them."""
-        action = LaunchParser(self, element.tag).build(Entity(element))
+        from launch_xml import Entity
+
+        action = _launch_parser()(self, element.tag).build(Entity(element))
         action.condition = None
         return action
 
@@ -1007,6 +1016,8 @@ class Resolver:
                 for key, item in value.items()
             }
         if isinstance(value, list) and any(isinstance(item, list | dict) for item in value):
+            import yaml
+
             text = yaml.safe_dump(value, default_flow_style=True, width=math.inf).strip()
             self.warn(
                 f"{element.where}: param {name.lstrip('/')!r} is a list of lists, which a ROS 2 "

@@ -23,7 +23,6 @@ import shlex
 import shutil
 import signal
 import subprocess
-import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -337,6 +336,8 @@ def run_command(
     # stderr goes to a file, so neither pipe can fill up and block it, nor fill the launcher's
     # memory. No terminal input (a command that reads stdin ends at once), and a session of its
     # own, so that one kill reaches what it left running in the background too.
+    import tempfile  # here, as below: most launches run no command and substitute no file
+
     deadline = time.monotonic() + COMMAND_SECONDS
     with tempfile.TemporaryFile() as errors:
         try:
@@ -412,6 +413,8 @@ def substituted_params_file(path: Path, context: Context, element: Element) -> P
     except InputError as error:
         raise element.error(str(error)) from None
     text = substitute(text, context, element)
+    import tempfile
+
     if not _SUBSTITUTED_DIR:
         folder = Path(tempfile.mkdtemp(prefix="launch_params_"))
         atexit.register(shutil.rmtree, folder, ignore_errors=True)

@@ -10,13 +10,8 @@ rclpy.init(), which is when rcl and Fast DDS read them; the launcher passes them
 
 from __future__ import annotations
 
-import fcntl
-import ipaddress
 import os
-import random
 import re
-import socket
-import tempfile
 from collections.abc import Mapping, MutableMapping, Sequence
 from pathlib import Path
 from typing import IO
@@ -87,6 +82,8 @@ def log_dir_problem(env: Mapping[str, str] | None = None) -> str | None:
 def peer_name_ok(peer: str) -> bool:
     """An IP address or a host name, by its form only (``999.1.1.1`` is neither: a name
     cannot be all digits and dots)."""
+    import ipaddress  # here, as below: every lesson's start imports this module
+
     try:
         ipaddress.ip_address(peer)
         return True
@@ -99,6 +96,9 @@ def peer_name_ok(peer: str) -> bool:
 def static_peers_problem(env: Mapping[str, str] | None = None) -> str | None:
     """What in ROS_STATIC_PEERS would make creating a node fail (rmw_fastrtps turns each peer
     into the first IPv4 address it resolves to), as one line; None if nothing would."""
+    import ipaddress
+    import socket
+
     text = (os.environ if env is None else env).get("ROS_STATIC_PEERS", "")
     for peer in (p.strip() for p in text.split(";")):
         if not peer:
@@ -144,6 +144,10 @@ def claim_private_domain_id(ids: Sequence[int] = PRIVATE_DOMAIN_IDS) -> tuple[in
     process ends), so concurrent runs never see each other's nodes. ``ids``: where to look
     (1 to 101 unless a test needs an id above them).
     """
+    import fcntl
+    import random
+    import tempfile
+
     lock_dir = Path(tempfile.gettempdir()) / "ros_tutorials_domains"
     lock_dir.mkdir(exist_ok=True)
     candidates = list(ids)
