@@ -14,7 +14,7 @@ from launcher.naming import valid_name
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve
-from ros_tutorials_common import ament, packages
+from ros_tutorials_common import ament, completion, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 from ros_tutorials_common.dds import environment_problem
@@ -43,6 +43,7 @@ def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
         metavar="[PKG] FILE [name:=value ...]",
         help="a launch file (a path, or a file name in a package's launch/ folder) and arguments",
     )
+    completion.attach(parser, words=completion.launch_words)
     parser.add_argument("--screen", action="store_true", help="show every process's stdout too")
     parser.add_argument(
         "-p", "--print", action="store_true", help="print the processes it would start, and exit"
@@ -201,7 +202,9 @@ def main(
 ) -> int:
     """The launcher's command line. STANDALONE (default: no ARGV given) means this process is
     the launcher (`roslaunch`, `ros2 launch`): it forks its guardian before starting."""
-    options = build_parser(program).parse_intermixed_args(argv)
+    parser = build_parser(program)
+    completion.answer(parser)  # the shell asking for TAB's completions (roslaunch): ends here
+    options = parser.parse_intermixed_args(argv)
     if standalone is None:
         standalone = argv is None
     name = program or _program_name()

@@ -18,6 +18,7 @@ from action_msgs.msg import GoalStatus
 from rclpy.action import ActionClient
 from rclpy.action.graph import get_action_server_names_and_types_by_node
 
+from ros2cmd import completion
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
@@ -240,6 +241,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("info", parents=[common], help="Print information about an action")
     p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    completion.attach(p, action_name=completion.action_names)
     p.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the action type"
     )
@@ -265,6 +267,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument(
         "action_type", help="Type of the ROS action (e.g. 'turtlesim/action/RotateAbsolute')"
     )
+    completion.attach(
+        p, action_name=completion.action_names, action_type=completion.types_for_action
+    )
     given = p.add_mutually_exclusive_group()
     given.add_argument(
         "goal",
@@ -284,4 +289,5 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("type", parents=[common], help="Print a action's type")
     p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    completion.attach(p, action_name=completion.action_names)
     p.set_defaults(run=lambda graph, a: print_type(graph, a.action_name))

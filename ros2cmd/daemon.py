@@ -184,6 +184,13 @@ class DaemonAnswer(VisibleNames):
         pass
 
 
+def ask_names(timeout: float) -> dict[str, Any] | None:
+    """What the running daemon's graph holds now, complete or not (TAB completion's names:
+    ros2cmd/completion.py); None if none answers within TIMEOUT. Starts no daemon."""
+    answer = _request({"ask": "names"}, timeout=timeout)
+    return answer if answer is not None and "topics" in answer else None
+
+
 def ask_graph() -> DaemonAnswer | None:
     """The daemon's complete answer; None (the list discovers for itself) if no daemon runs,
     in which case one is started for the next list, or if it could not vouch for one."""
@@ -319,6 +326,8 @@ class Daemon:
             answer = {"stopping": True}
         elif question == "graph":
             answer = self.graph_answer()
+        elif question == "names":
+            answer = self.names_answer()
         else:
             answer = {"error": f"unknown question {question!r}"}
         with contextlib.suppress(OSError):
@@ -336,9 +345,12 @@ class Daemon:
             if final or time.monotonic() > deadline:
                 return {"complete": False, "why": why}
             time.sleep(ANSWER_POLL)
-        node = self.graph.node  # every name, hidden ones too: the client filters as asked
+        return {"complete": True, **self.names_answer()}
+
+    def names_answer(self) -> dict[str, Any]:
+        """Every name the graph holds now, hidden ones too (the client filters as asked)."""
+        node = self.graph.node
         return {
-            "complete": True,
             "nodes": node.get_node_names_and_namespaces(),
             "topics": node.get_topic_names_and_types(),
             "services": node.get_service_names_and_types(),

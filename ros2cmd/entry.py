@@ -7,6 +7,7 @@ The launcher does not use rclpy, and a launch must not load it: a process that l
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Sequence
 
@@ -15,6 +16,8 @@ from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 @exits_130_on_ctrl_c  # while rclpy loads, too
 def main(argv: Sequence[str] | None = None) -> int:
+    if "_ARGCOMPLETE" in os.environ:  # the shell asking for TAB's completions: ends here
+        _complete()
     words = list(sys.argv[1:] if argv is None else argv)
     if words[:1] == ["launch"]:
         from launcher.__main__ import main as launch
@@ -23,3 +26,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     from ros2cmd.cli import main as cli_main
 
     return cli_main(words)
+
+
+def _complete() -> None:
+    """Answer a completion of the line in COMP_LINE (argcomplete's protocol), from the
+    launcher's parser after `ros2 launch`, else from ros2's."""
+    from ros_tutorials_common import completion
+
+    if completion.line_words()[1:2] == ["launch"] and len(completion.line_words()) > 2:
+        from launcher.__main__ import build_parser as launch_parser
+
+        completion.answer(launch_parser("ros2 launch"), skip=1)
+    from ros2cmd.cli import build_parser
+
+    completion.answer(build_parser())

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import yaml
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import (
     KIND_NAMES,
@@ -260,6 +261,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     )
     _kind_flags(p, "Print out")
     p.add_argument("package", help="Name of the ROS package (e.g. 'example_interfaces')")
+    completion.attach(p, package=completion.interface_packages)
     p.set_defaults(offline=True, run=lambda _, a: package_command(a.package, a.kinds and _kinds(a)))
 
     p = sub.add_parser("packages", help="Output a list of packages that provide interfaces")
@@ -270,6 +272,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument(
         "type", help="Show an interface definition (e.g. 'example_interfaces/msg/String')"
     )
+    completion.attach(p, type=completion.all_types)
     p.add_argument("--no-quotes", action="store_true", help="if true output has no outer quotes.")
     p.set_defaults(offline=True, run=lambda _, a: proto(a.type, quotes=not a.no_quotes))
 
@@ -288,6 +291,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         help="Show an interface definition (e.g. 'example_interfaces/msg/String'). Passing '-' "
         "reads the argument from stdin (e.g. 'ros2 topic type /chatter | ros2 interface show -').",
     )
+    completion.attach(p, type=completion.all_types)
     p.set_defaults(
         offline=True,
         run=lambda _, a: show(a.type, comments=not a.no_comments, all_comments=a.all_comments),

@@ -21,6 +21,7 @@ from rclpy.action.graph import (
     get_action_server_names_and_types_by_node,
 )
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
 from ros2cmd.sub_verbs import add_count_option
 
@@ -95,6 +96,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("info", parents=[common], help="Output information about a node")
     p.add_argument("node_name", help="Node name to request information")
+    completion.attach(p, node_name=completion.node_names)
     p.add_argument(
         "--include-hidden",
         action="store_true",

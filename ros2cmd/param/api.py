@@ -37,6 +37,7 @@ from rclpy.parameter import Parameter, parameter_dict_from_yaml_file, parameter_
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
@@ -267,6 +268,7 @@ def nodes_with_parameters(graph: Graph) -> list[str]:
 
 def add_node_argument(parser: argparse.ArgumentParser, nargs: str | None = None) -> None:
     parser.add_argument("node_name", nargs=nargs, help="Name of the ROS node")
+    completion.attach(parser, node_name=completion.node_names)
     # ros2cli's option; this tool's own node is hidden and has no parameter services anyway
     parser.add_argument(
         "--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well"

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from ros2cmd import node
+from ros2cmd import completion, node
 from ros2cmd.ros1 import tool
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
@@ -18,6 +18,7 @@ def rosnode_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("info", parents=[common], help="what a node offers")
     p.add_argument("node")
+    completion.attach(p, node=completion.node_names)
     p.set_defaults(run=lambda graph, a: node.info(graph, a.node))
     tool.no_ros2_meaning("rosnode", sub)
     return parser

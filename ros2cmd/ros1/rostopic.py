@@ -24,6 +24,7 @@ from rclpy.duration import Duration
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, QoSProfile
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, print_names, until_stopped
 from ros2cmd.messages import fill_message, message_to_data, message_to_yaml
@@ -49,6 +50,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("echo", parents=[common], help="print messages")
     p.add_argument("topic", help="a topic, or /topic/field for one field (/t/stamp/sec)")
+    completion.attach(p, topic=completion.topic_names)
     p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
     p.set_defaults(run=lambda graph, a: echo(graph, a.topic, count=a.n, field_in_name=True))
 
@@ -56,6 +58,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
     p.add_argument("topic")
     p.add_argument("type")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
+    completion.attach(p, topic=completion.topic_names, type=completion.ros1_types_for_topic)
     group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
     group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
     group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
@@ -65,18 +68,22 @@ def rostopic_parser() -> argparse.ArgumentParser:
     for name, bandwidth in (("hz", False), ("bw", True)):
         p = sub.add_parser(name, parents=[common], help="")
         p.add_argument("topic")
+        completion.attach(p, topic=completion.topic_names)
         p.set_defaults(run=lambda graph, a, b=bandwidth: hz(graph, a.topic, WINDOW, b))
 
     p = sub.add_parser("info", parents=[common], help="publishers etc.")
     p.add_argument("topic")
+    completion.attach(p, topic=completion.topic_names)
     p.set_defaults(run=lambda graph, a: info(graph, a.topic, True))
 
     p = sub.add_parser("type", parents=[common], help="message type")
     p.add_argument("topic")
+    completion.attach(p, topic=completion.topic_names)
     p.set_defaults(run=lambda graph, a: print(graph.wait_for_topic_type(absolute_name(a.topic))))
 
     p = sub.add_parser("find", parents=[common], help="topics of a type")
     p.add_argument("type")
+    completion.attach(p, type=completion.ros1_message_types)
     p.set_defaults(run=lambda graph, a: find(graph, a.type))
     return parser
 

@@ -15,6 +15,7 @@ import yaml
 from rclpy.qos import qos_profile_services_default
 from service_msgs.msg import ServiceEventInfo
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.messages import MessageDumper, message_to_csv, message_to_ordered
 from ros2cmd.service.api import wait_for_types
@@ -32,6 +33,7 @@ EVENT_TYPES = {
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = parser
     p.add_argument("service_name", help="Name of the ROS service to echo (e.g. '/add_two_ints')")
+    completion.attach(p, service_name=completion.service_names)
     p.add_argument(
         "service_type",
         nargs="?",

@@ -9,6 +9,7 @@ from typing import Any
 
 from rclpy.time import Time
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.topic.api import (
@@ -26,6 +27,7 @@ HELP = "Display delay of topic from timestamp in header"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic", help="Topic name to calculate the delay for")
+    completion.attach(parser, topic=completion.topic_names)
     parser.add_argument(
         "--window",
         "-w",

@@ -12,6 +12,7 @@ from typing import Any
 
 from rclpy.event_handler import SubscriptionEventCallbacks
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, Graph, absolute_name, until_stopped
 from ros2cmd.messages import message_to_csv, message_to_yaml
@@ -86,6 +87,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "Set a timeout in seconds for waiting: for the topic to appear (default "
         f"{DEFAULT_TIMEOUT:g}) and, when given, for messages (then exit)",
     )
+    completion.attach(p, topic_name=completion.topic_names, message_type=completion.types_for_topic)
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:

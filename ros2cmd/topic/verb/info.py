@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.topic.api import add_graph_options, names_and_types, node_names_known, wait_for_types
@@ -15,6 +16,7 @@ HELP = "Print information about a topic"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic_name", help="Name of the ROS topic to get info (e.g. '/chatter')")
+    completion.attach(parser, topic_name=completion.topic_names)
     parser.add_argument(
         "--verbose",
         "-v",

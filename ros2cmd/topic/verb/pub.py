@@ -13,6 +13,7 @@ import time
 from rclpy.duration import Duration
 from rclpy.publisher import Publisher
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.messages import fill_message, parse_yaml
@@ -31,6 +32,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = parser
     p.add_argument("topic_name", help="Name of the ROS topic to publish to (e.g. '/chatter')")
     p.add_argument("message_type", help="Type of the ROS message (e.g. 'std_msgs/String')")
+    completion.attach(p, topic_name=completion.topic_names, message_type=completion.types_for_topic)
     group = p.add_mutually_exclusive_group()
     group.add_argument(
         "values",
