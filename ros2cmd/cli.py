@@ -17,15 +17,12 @@ import contextlib
 import signal
 import sys
 from collections.abc import Callable, Sequence
-
-import rclpy
-from rclpy.exceptions import NameValidationException
-from rclpy.executors import ExternalShutdownException
+from typing import Any
 
 from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
 from ros2cmd.bag import ros2 as bag
 from ros2cmd.errors import ToolError
-from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
+from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph, rclpy_error
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
@@ -66,6 +63,7 @@ LAUNCH_HELP = "Run a launch file"
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The whole `ros2` parser, every verb and its options (cheap: no rclpy, no messages)."""
     parser = argparse.ArgumentParser(
         prog="ros2",
         description="ros2 is an extensible command-line tool for ROS 2.",
@@ -98,12 +96,13 @@ def execute(
     offline: bool = False,
     timeout: float = DEFAULT_TIMEOUT,
     spin_time: float | None = None,
-    use_daemon: bool = False,
+    use_daemon: bool | dict[str, Any] = False,
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes.
 
-    With use_daemon (the lists), the daemon's complete answer stands in for the node where
-    one runs and can give it (daemon.py); otherwise the command discovers for itself.
+    With use_daemon (the lists; a dict: what else to ask, daemon.ask_graph), the daemon's
+    complete answer stands in for the node where one runs and can give it (daemon.py), and
+    holds what the command names; otherwise the command discovers for itself.
 
     Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
     DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
@@ -120,7 +119,7 @@ def _execute(
     offline: bool,
     timeout: float,
     spin_time: float | None,
-    use_daemon: bool = False,
+    use_daemon: bool | dict[str, Any] = False,
 ) -> int:
     graph = None
     status = None  # the exit status, once decided
@@ -128,30 +127,42 @@ def _execute(
         problem = None if offline else environment_problem()
         if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
             raise ToolError(problem)
-        if use_daemon and spin_time is None:
-            graph = daemon.ask_graph()
-        if not offline and graph is None:
-            graph = Graph(timeout, spin_time)
-        command(graph)
+        answered = False
+        if use_daemon is not False and spin_time is None:
+            graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
+        if graph is not None:
+            try:
+                command(graph)
+                answered = True
+            except daemon.NotInAnswer:  # before printing: the command waits for it itself
+                graph = None
+        if not answered:
+            if not offline:
+                graph = Graph(timeout, spin_time)
+            command(graph)
         status = 0
     except ToolError as error:
         print(f"{error.prefix}{error}", file=sys.stderr)
         status = 1
-    except NameValidationException as error:
+    except rclpy_error("rclpy.exceptions", "NameValidationException") as error:
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         status = 1
-    except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
+    except (
+        KeyboardInterrupt,
+        Interrupted,
+        *rclpy_error("rclpy.executors", "ExternalShutdownException"),
+    ):
         status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `ros2 topic echo /t | head`: the reader left; leave quietly too.
         stdout_closed()
         status = 0
     except Exception as error:
-        if ctrl_c.interrupted(error) and rclpy.ok():
+        if ctrl_c.interrupted(error) and _ros_ok():
             # An error a Ctrl-C caused on its way up (the KeyboardInterrupt in its context:
             # rclpy code cleaning up after it raised anew): the Ctrl-C it is.
             status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
-        elif rclpy.ok():
+        elif _ros_ok():
             raise
         else:
             # SIGTERM: rclpy's handler shut ROS down while the command was creating its node,
@@ -170,6 +181,12 @@ def _execute(
     return status
 
 
+def _ros_ok() -> bool:
+    """rclpy.ok(): False where rclpy was never loaded (nothing initialised it)."""
+    rclpy = sys.modules.get("rclpy")
+    return rclpy is not None and rclpy.ok()
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser()
@@ -186,12 +203,16 @@ def run_parsed(args: argparse.Namespace) -> int:
         offline=getattr(args, "offline", False),
         timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
         spin_time=getattr(args, "spin_time", None),
-        use_daemon=_wants_daemon(args) and daemon.use_daemon(getattr(args, "no_daemon", False)),
+        use_daemon=_wants_daemon(args)
+        if daemon.use_daemon(getattr(args, "no_daemon", False))
+        else False,
     )
 
 
-def _wants_daemon(args: argparse.Namespace) -> bool:
-    """Whether the command is a list the daemon can answer (its parser says, perhaps by
-    looking at the options: `topic list -v` counts endpoints, which only a node can)."""
+def _wants_daemon(args: argparse.Namespace) -> bool | dict[str, Any]:
+    """Whether the daemon can answer the command (its parser says, perhaps by looking at the
+    options: `topic list -v` counts endpoints, which only a node can), and what else to ask
+    it (a dict: `node info` asks for the node's endpoints, daemon.ask_graph)."""
     wants = getattr(args, "daemon", False)
-    return bool(wants(args) if callable(wants) else wants)
+    wants = wants(args) if callable(wants) else wants
+    return wants if isinstance(wants, dict) else bool(wants)

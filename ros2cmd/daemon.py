@@ -3,10 +3,14 @@
 A list that starts its own node waits for discovery every time (graph.Graph.settle). The
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
-`service list`, `action list` and `topic|service find` over a Unix socket (only this user's
-processes are answered, see below). A list starts it when none runs (and answers itself that
-time); ``--no-daemon`` bypasses it; it ends after IDLE_TIMEOUT without a question (ros2cli's
-2 hours).
+`service list`, `action list`, `topic|service find`, `node info`, `topic info` (not -v) and
+`topic type` over a Unix socket (only this user's processes are answered, see below): the
+names, and for `node info` the node's endpoints and for `topic info` the topic's, as ros2cli's
+daemon serves the graph API. A command that names a node or topic the complete graph does not
+hold discovers for itself, so that it waits for it as it does without a daemon (NotInAnswer).
+The client side loads no rclpy: a question and a JSON answer. A list starts the daemon when
+none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends after
+IDLE_TIMEOUT without a question (ros2cli's 2 hours).
 
 ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
 started or list one that is gone (ros2cli#672). This one answers only once its graph is
@@ -41,6 +45,7 @@ import subprocess
 import sys
 import time
 from collections import Counter
+from types import SimpleNamespace
 from typing import Any
 
 from ros2cmd.errors import ToolError
@@ -145,11 +150,50 @@ def spawn() -> None:
     )
 
 
+class NotInAnswer(Exception):
+    """What the command names is not in the daemon's answer: it discovers for itself."""
+
+
+def _names_and_types(entries: Any) -> list[tuple[str, list[str]]]:
+    return [(name, list(types)) for name, types in entries]
+
+
 class _Names:
-    """The daemon's names, with the methods of an rclpy node that the lists call."""
+    """The daemon's names, with the methods of an rclpy node that the commands call."""
 
     def __init__(self, answer: dict[str, Any]) -> None:
         self._answer = answer
+
+    def _node_info(self, name: str, namespace: str, kind: str) -> list[tuple[str, list[str]]]:
+        info = self._answer.get("node_info") or {}
+        if info.get("node") != [name, namespace]:
+            raise NotInAnswer(f"node {namespace}/{name}")
+        return _names_and_types(info[kind])
+
+    def get_subscriber_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "subscribers")
+
+    def get_publisher_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "publishers")
+
+    def get_service_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "service_servers")
+
+    def get_client_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "service_clients")
+
+    def _endpoints(self, topic: str, kind: str) -> list[SimpleNamespace]:
+        info = self._answer.get("topic_info") or {}
+        if info.get("topic") != topic:
+            raise NotInAnswer(f"topic {topic}")
+        return [SimpleNamespace(**endpoint) for endpoint in info[kind]]
+
+    def get_publishers_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        """Each publisher's node_name, node_namespace and topic_type (what `topic info` counts)."""
+        return self._endpoints(topic, "publishers")
+
+    def get_subscriptions_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        return self._endpoints(topic, "subscriptions")
 
     def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
         return [(name, namespace) for name, namespace in self._answer["nodes"]]
@@ -180,6 +224,20 @@ class DaemonAnswer(VisibleNames):
     def action_types(self) -> dict[str, list[str]]:
         return {name: list(types) for name, types in self._answer["actions"]}
 
+    def node_actions(self, name: str, namespace: str) -> tuple[list, list]:
+        return (
+            self.node._node_info(name, namespace, "action_servers"),
+            self.node._node_info(name, namespace, "action_clients"),
+        )
+
+    def wait_for(self, condition: Any, what: str, timeout: float | None = None) -> Any:
+        """condition()'s answer now: the graph is complete, so something it lacks is not
+        there yet, and only a command's own node can wait for it (NotInAnswer)."""
+        result = condition()
+        if not result:
+            raise NotInAnswer(what)
+        return result
+
     def close(self) -> None:
         pass
 
@@ -191,10 +249,13 @@ def ask_names(timeout: float) -> dict[str, Any] | None:
     return answer if answer is not None and "topics" in answer else None
 
 
-def ask_graph() -> DaemonAnswer | None:
+def ask_graph(about: dict[str, Any] | None = None) -> DaemonAnswer | None:
     """The daemon's complete answer; None (the list discovers for itself) if no daemon runs,
-    in which case one is started for the next list, or if it could not vouch for one."""
-    answer = _request({"ask": "graph"}, timeout=ASK_TIMEOUT)
+    in which case one is started for the next list, or if it could not vouch for one.
+
+    ``about`` asks for more: {"node": [name, namespace]} that node's endpoints (`node info`),
+    {"topic": name} the topic's publishers and subscriptions (`topic info`)."""
+    answer = _request({"ask": "graph", **(about or {})}, timeout=ASK_TIMEOUT)
     if answer is None:
         with contextlib.suppress(OSError):
             spawn()
@@ -316,7 +377,8 @@ class Daemon:
                 if not chunk:
                     break
                 data += chunk
-            question = json.loads(data).get("ask")
+            asked = json.loads(data)
+            question = asked.get("ask")
         except (OSError, ValueError, AttributeError):
             return True
         keep_going = question != "stop"
@@ -325,7 +387,7 @@ class Daemon:
         elif question == "stop":
             answer = {"stopping": True}
         elif question == "graph":
-            answer = self.graph_answer()
+            answer = self.graph_answer(asked)
         elif question == "names":
             answer = self.names_answer()
         else:
@@ -334,8 +396,9 @@ class Daemon:
             connection.sendall(json.dumps(answer).encode())
         return keep_going
 
-    def graph_answer(self) -> dict[str, Any]:
-        """The lists' names, once the graph is complete; or why it is not."""
+    def graph_answer(self, asked: dict[str, Any] | None = None) -> dict[str, Any]:
+        """The lists' names, once the graph is complete; or why it is not. With a node or a
+        topic asked about (ask_graph), its endpoints too, if the graph holds it."""
         deadline = time.monotonic() + ANSWER_WAIT
         while True:
             verdict = self.complete()
@@ -345,7 +408,16 @@ class Daemon:
             if final or time.monotonic() > deadline:
                 return {"complete": False, "why": why}
             time.sleep(ANSWER_POLL)
-        return {"complete": True, **self.names_answer()}
+        answer = {"complete": True, **self.names_answer()}
+        asked = asked or {}
+        about_node, about_topic = asked.get("node"), asked.get("topic")
+        if _is_pair_of_names(about_node) and tuple(about_node) in answer["nodes"]:
+            with contextlib.suppress(RuntimeError, ValueError):  # it has just gone
+                answer["node_info"] = self.node_info(*about_node)
+        if isinstance(about_topic, str) and about_topic in dict(answer["topics"]):
+            with contextlib.suppress(RuntimeError, ValueError):
+                answer["topic_info"] = self.topic_info(about_topic)
+        return answer
 
     def names_answer(self) -> dict[str, Any]:
         """Every name the graph holds now, hidden ones too (the client filters as asked)."""
@@ -355,6 +427,40 @@ class Daemon:
             "topics": node.get_topic_names_and_types(),
             "services": node.get_service_names_and_types(),
             "actions": sorted(self.graph.action_types().items()),
+        }
+
+    def node_info(self, name: str, namespace: str) -> dict[str, Any]:
+        """What `node info` prints of a node: its endpoints by kind, (name, types) each."""
+        node = self.graph.node
+        action_servers, action_clients = self.graph.node_actions(name, namespace)
+        return {
+            "node": [name, namespace],
+            "subscribers": node.get_subscriber_names_and_types_by_node(name, namespace),
+            "publishers": node.get_publisher_names_and_types_by_node(name, namespace),
+            "service_servers": node.get_service_names_and_types_by_node(name, namespace),
+            "service_clients": node.get_client_names_and_types_by_node(name, namespace),
+            "action_servers": action_servers,
+            "action_clients": action_clients,
+        }
+
+    def topic_info(self, topic: str) -> dict[str, Any]:
+        """What `topic info` counts of a topic: its publishers and subscriptions."""
+        node = self.graph.node
+
+        def endpoints(found: list) -> list[dict[str, str]]:
+            return [
+                {
+                    "node_name": endpoint.node_name,
+                    "node_namespace": endpoint.node_namespace,
+                    "topic_type": endpoint.topic_type,
+                }
+                for endpoint in found
+            ]
+
+        return {
+            "topic": topic,
+            "publishers": endpoints(node.get_publishers_info_by_topic(topic)),
+            "subscriptions": endpoints(node.get_subscriptions_info_by_topic(topic)),
         }
 
     def complete(self) -> tuple[bool, str] | None:
@@ -384,6 +490,10 @@ class Daemon:
 
     def close(self) -> None:
         self.graph.close()
+
+
+def _is_pair_of_names(value: Any) -> bool:
+    return isinstance(value, list) and len(value) == 2 and all(isinstance(v, str) for v in value)
 
 
 def main() -> int:

@@ -20,25 +20,19 @@ import math
 import re
 import sys
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import yaml
-from rclpy.clock import Clock
-from rosidl_parser.definition import (
-    AbstractGenericString,
-    AbstractNestedType,
-    AbstractString,
-    AbstractWString,
-    Array,
-    BasicType,
-    BoundedSequence,
-    NamespacedType,
-    UnboundedSequence,
-)
 
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import full_type_name
 from ros_tutorials_common.bounded import InputError, load_yaml
+
+if TYPE_CHECKING:
+    from rosidl_parser.definition import NamespacedType
+
+# rclpy and rosidl_parser (loaded with any message class already) are imported in the
+# functions that take a message, so that the verbs' modules load without them.
 
 # Value ranges of the integer types, by their IDL names as SLOT_TYPES spells them.
 INTEGER_RANGES: dict[str, tuple[int, int]] = {}
@@ -100,6 +94,8 @@ def fill_message(
     given as "now" get the current time; with ``stamps`` given, a setter for each such field
     is appended to it, so that a publisher can stamp every message it sends anew.
     """
+    from rclpy.clock import Clock
+
     fields = list(msg.get_fields_and_field_types())
     slot_types = dict(zip(fields, msg.SLOT_TYPES, strict=True))
     where = f"{path} ({full_type_name(type(msg))})" if path else full_type_name(type(msg))
@@ -151,8 +147,19 @@ def _field_name(key: Any, fields: list[str]) -> str:
 def _convert(
     value: Any, slot_type: Any, current: Any, path: str, stamps: list[TimeSetter] | None = None
 ) -> Any:
+    from rosidl_parser.definition import (
+        AbstractGenericString,
+        AbstractNestedType,
+        Array,
+        BasicType,
+        BoundedSequence,
+        NamespacedType,
+    )
+
     if isinstance(slot_type, NamespacedType):
         if _is_type(slot_type, "builtin_interfaces", "Time") and value == "now":
+            from rclpy.clock import Clock
+
             return Clock().now().to_msg()
         return fill_message(current, value, path, stamps)
     if isinstance(slot_type, AbstractNestedType):  # arrays and sequences
@@ -230,6 +237,8 @@ def _ros_int_name(typename: str) -> str:
 
 def _is_type(slot_type: Any, package: str, name: str) -> bool:
     """Whether a field's type is the message package/msg/name."""
+    from rosidl_parser.definition import NamespacedType
+
     return (
         isinstance(slot_type, NamespacedType)
         and tuple(slot_type.namespaces) == (package, "msg")
@@ -342,6 +351,8 @@ def _plain(
 
 def _type_name(slot_type: Any) -> str:
     """A field type's name as --no-arr shows it: 'double', 'string', 'geometry_msgs/Point'."""
+    from rosidl_parser.definition import AbstractString, AbstractWString, BasicType, NamespacedType
+
     if isinstance(slot_type, BasicType):
         return slot_type.typename
     if isinstance(slot_type, AbstractString):
@@ -354,6 +365,8 @@ def _type_name(slot_type: Any) -> str:
 
 
 def _array_summary(value: Any, slot_type: Any) -> str:
+    from rosidl_parser.definition import Array, BoundedSequence, UnboundedSequence
+
     item = _type_name(slot_type.value_type)
     if isinstance(slot_type, Array):
         return f"<array type: {item}[{slot_type.size}]>"

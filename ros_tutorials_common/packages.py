@@ -27,7 +27,6 @@ sourced workspace (an overlay: a prefix other than this environment) shadows a s
 from __future__ import annotations
 
 import ast
-import importlib.metadata
 import importlib.util
 import os
 import pkgutil
@@ -178,6 +177,8 @@ def console_scripts() -> dict[str, str]:
     """Console script name -> the ``module:function`` it runs; for a lesson's script, the
     lesson's own main (the script applies the DDS defaults first, ros_tutorials_common/
     lesson_scripts.py; `ros2 run` and the launcher apply them themselves)."""
+    import importlib.metadata  # scans every installed distribution: only when asked
+
     found = {}
     for script in importlib.metadata.entry_points(group="console_scripts"):
         module, _, function = script.value.partition(":")
@@ -273,6 +274,8 @@ def known_package_names() -> str:
 @cache
 def _tools() -> dict[str, list[str]]:
     """This project's own commands (``rqt_graph``, ...) by console script name."""
+    import importlib.metadata
+
     try:
         scripts = importlib.metadata.distribution(DISTRIBUTION).entry_points
     except importlib.metadata.PackageNotFoundError:

@@ -29,12 +29,12 @@ def rosservice_parser() -> argparse.ArgumentParser:
     )
 
     p = sub.add_parser("list", parents=[common], help="list services")
-    p.set_defaults(run=lambda graph, a: list_services(graph))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_services(graph))
 
     p = sub.add_parser("type", parents=[common], help="service type")
     p.add_argument("service")
     completion.attach(p, service=completion.service_names)
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.service))
+    p.set_defaults(daemon=True, run=lambda graph, a: print_type(graph, a.service))
 
     p = sub.add_parser("call", parents=[common], help="call a service")
     p.add_argument("service")
@@ -55,7 +55,7 @@ def rosservice_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("find", parents=[common], help="services of a type")
     p.add_argument("type")
     completion.attach(p, type=completion.ros1_service_types)
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))
     tool.no_ros2_meaning("rosservice", sub)
     return parser
 

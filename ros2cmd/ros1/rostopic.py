@@ -17,12 +17,9 @@ import sys
 import time
 from collections import deque
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import yaml
-from rclpy.duration import Duration
-from rclpy.publisher import Publisher
-from rclpy.qos import DurabilityPolicy, QoSProfile
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
@@ -35,6 +32,9 @@ from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_int, positive_rate
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
+
 DEFAULT_PUB_RATE = 1.0  # Hz
 WINDOW = 10000  # messages: hz and bw
 
@@ -46,7 +46,9 @@ def rostopic_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("list", parents=[common], help="list topics")
     p.add_argument("-v", "--verbose", action="store_true", help="with types")
-    p.set_defaults(run=lambda graph, a: print_names(graph, graph.topic_types, a.verbose))
+    p.set_defaults(
+        daemon=True, run=lambda graph, a: print_names(graph, graph.topic_types, a.verbose)
+    )
 
     p = sub.add_parser("echo", parents=[common], help="print messages")
     p.add_argument("topic", help="a topic, or /topic/field for one field (/t/stamp/sec)")
@@ -79,12 +81,15 @@ def rostopic_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("type", parents=[common], help="message type")
     p.add_argument("topic")
     completion.attach(p, topic=completion.topic_names)
-    p.set_defaults(run=lambda graph, a: print(graph.wait_for_topic_type(absolute_name(a.topic))))
+    p.set_defaults(
+        daemon=True,
+        run=lambda graph, a: print(graph.wait_for_topic_type(absolute_name(a.topic))),
+    )
 
     p = sub.add_parser("find", parents=[common], help="topics of a type")
     p.add_argument("type")
     completion.attach(p, type=completion.ros1_message_types)
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))
     return parser
 
 
@@ -257,6 +262,9 @@ def pub(
     rate=None publishes once and keeps the publisher alive until Ctrl-C (ROS 1's latching
     mode, with a transient-local publisher so late subscribers that ask for it still get it).
     """
+    from rclpy.duration import Duration
+    from rclpy.qos import DurabilityPolicy, QoSProfile
+
     topic = absolute_name(topic)
     msg_type = load_type(type_name, ("msg",))
     msg = fill_message(msg_type(), values)
@@ -314,6 +322,8 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
     transient-local subscription gets it from the publisher's history; a volatile one would
     miss it, so it is sent again for a volatile one that has joined and matched; only then,
     as every other subscriber gets that copy too (`rostopic hz` would count it)."""
+    from rclpy.qos import DurabilityPolicy
+
     publish_one(graph, publisher, msg)
     first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
     served: set[bytes] = set()  # those it was sent again for

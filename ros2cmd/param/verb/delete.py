@@ -4,9 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType, ParameterValue
-
 from ros2cmd.errors import ToolFailure
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
@@ -20,6 +17,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+    from rcl_interfaces.msg import ParameterType, ParameterValue
+
     node = graph.wait_for_node(args.node_name)
     unset = ParameterValue(type=ParameterType.PARAMETER_NOT_SET)
     result = set_each(graph, node, [ParameterMsg(name=args.parameter_name, value=unset)])[0]

@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from ros2cmd.graph import Graph
-from ros2cmd.param.api import DESCRIBED_TYPES, add_node_argument, ask, get_values
+from ros2cmd.param.api import add_node_argument, ask, described_type, get_values
 
 HELP = "Show descriptive information about declared parameters"
 
@@ -21,7 +21,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
     graph.finish()
     for descriptor in descriptors:
         print(f"Parameter name: {descriptor.name}")
-        print(f"  Type: {DESCRIBED_TYPES.get(descriptor.type, 'unknown')}")
+        print(f"  Type: {described_type(descriptor.type)}")
         if descriptor.description:
             print(f"  Description: {descriptor.description}")
         print("  Constraints:")

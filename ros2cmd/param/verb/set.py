@@ -4,15 +4,15 @@ status 1."""
 from __future__ import annotations
 
 import argparse
-
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType, ParameterValue
+from typing import TYPE_CHECKING
 
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph
-from ros2cmd.messages import parse_yaml
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
 from ros_tutorials_common.bounded import parameter_problem
+
+if TYPE_CHECKING:
+    from rcl_interfaces.msg import ParameterValue
 
 HELP = "Set parameter"
 
@@ -24,6 +24,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+
     name = args.parameter_name
     value = typed_value(name, args.value)
     node = graph.wait_for_node(args.node_name)
@@ -39,6 +41,10 @@ def typed_value(name: str, text: str) -> ParameterValue:
     rclpy's get_parameter_value does (2 an integer, 2.0 a double, true a boolean, a list of
     one of those an array); anything else, a mixed list or a mapping too, is the text itself.
     """
+    from rcl_interfaces.msg import ParameterType, ParameterValue
+
+    from ros2cmd.messages import parse_yaml
+
     try:
         value = parse_yaml(text)
     except ToolError:  # not YAML (`a: b: c`): the text, as rclpy does

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import xml.etree.ElementTree as ElementTree
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
@@ -19,6 +18,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(_graph: None, args: argparse.Namespace) -> None:
+    import xml.etree.ElementTree as ElementTree
+
     name, tag = args.package_name, args.tag
     manifest = package_prefix(name) / "share" / name / "package.xml"
     if not manifest.is_file():

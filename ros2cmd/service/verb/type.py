@@ -12,6 +12,7 @@ HELP = "Output a service's type"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.set_defaults(daemon=True)
     parser.add_argument("service_name", help="Name of the ROS service (e.g. '/clear')")
     completion.attach(parser, service_name=completion.service_names)
     add_hidden_option(parser)

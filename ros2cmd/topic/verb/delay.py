@@ -7,8 +7,6 @@ import math
 from collections import deque
 from typing import Any
 
-from rclpy.time import Time
-
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
@@ -39,6 +37,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.time import Time
+
     with until_stopped():
         delays: deque[int] = deque(maxlen=args.window)  # ns
         new = [False]

@@ -10,8 +10,6 @@ import time
 from collections import deque
 from typing import Any
 
-from rclpy.event_handler import SubscriptionEventCallbacks
-
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, Graph, absolute_name, until_stopped
@@ -96,6 +94,8 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
 
 
 def _echo(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.event_handler import SubscriptionEventCallbacks
+
     deadline = time.monotonic() + args.timeout if args.timeout_given else math.inf
     topic = absolute_name(args.topic_name)
     msg_type = single_type(graph, topic, args.message_type)

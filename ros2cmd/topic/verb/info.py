@@ -15,6 +15,8 @@ HELP = "Print information about a topic"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    # -v prints each endpoint's GID and QoS: a node of its own.
+    parser.set_defaults(daemon=lambda a: not a.verbose and {"topic": absolute_name(a.topic_name)})
     parser.add_argument("topic_name", help="Name of the ROS topic to get info (e.g. '/chatter')")
     completion.attach(parser, topic_name=completion.topic_names)
     parser.add_argument(

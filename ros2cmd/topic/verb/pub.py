@@ -9,9 +9,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import time
-
-from rclpy.duration import Duration
-from rclpy.publisher import Publisher
+from typing import TYPE_CHECKING
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
@@ -23,6 +21,9 @@ from ros2cmd.typenames import load_type
 from ros2cmd.wait import spin_until
 from ros_tutorials_common.bounded import InputError, read_text
 from ros_tutorials_common.cli import positive_rate, positive_seconds
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
 
 HELP = "Publish a message to a topic"
 WAIT_PERIOD = 0.1  # s between looks for matching subscriptions (-w)
@@ -93,6 +94,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.duration import Duration
+
     times = 1 if args.once else args.times
     wait_for = args.wait_matching_subscriptions
     if wait_for is None:

@@ -12,6 +12,7 @@ HELP = "Print a topic's type"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.set_defaults(daemon=True)
     parser.add_argument("topic_name", help="Name of the ROS topic to get type (e.g. '/chatter')")
     completion.attach(parser, topic_name=completion.topic_names)
     add_graph_options(parser)
