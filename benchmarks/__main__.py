@@ -2,6 +2,7 @@
 
 python -m benchmarks [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
+    completion
     (default: all)
 """
 
@@ -17,6 +18,7 @@ from collections.abc import Callable
 
 from benchmarks import (
     bag,
+    completion,
     daemon,
     graph,
     launch,
@@ -44,6 +46,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
+    "completion": [completion.answer_times],
 }
 
 

@@ -1,5 +1,6 @@
 """TAB completion's names of the running system and of interface types, for ros2's and the ROS 1
-tools' arguments (``arg.completer = completion.topic_names``, next to each argument).
+tools' arguments (``completion.attach(p, topic_name=completion.topic_names)`` next to each
+argument).
 
 The running system's names come from the daemon (`ros2 daemon start`; a list started once
 starts it too): one question over its socket, answered at once with what its graph holds
@@ -16,6 +17,7 @@ from collections.abc import Callable, Iterable
 from functools import cache
 from typing import Any
 
+from ros2cmd.graph import is_hidden, join_node_name
 from ros_tutorials_common import completion
 
 Completer = Callable[..., Iterable[str]]
@@ -38,14 +40,10 @@ def _daemon_names() -> dict[str, Any]:
     return daemon.ask_names(min(MAX_DAEMON_WAIT, completion.remaining())) or {}
 
 
-def _hidden(name: str) -> bool:
-    return any(part.startswith("_") for part in name.split("/"))
-
-
 def _names(kind: str, parsed_args: argparse.Namespace | None, hidden_option: str = "") -> list[str]:
     names = [entry[0] for entry in _daemon_names().get(kind, [])]
     if not (hidden_option and getattr(parsed_args, hidden_option, False)):
-        names = [name for name in names if not _hidden(name)]
+        names = [name for name in names if not is_hidden(name)]
     return sorted(set(names))
 
 
@@ -67,7 +65,7 @@ def node_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[
     found = set()
     for name, namespace in _daemon_names().get("nodes", []):
         if show_hidden or not name.startswith("_"):
-            found.add(f"{namespace.rstrip('/')}/{name}")
+            found.add(join_node_name(namespace, name))
     return sorted(found)
 
 
