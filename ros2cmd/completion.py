@@ -69,6 +69,17 @@ def node_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[
     return sorted(found)
 
 
+def parameter_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[str]:
+    """The parameters of the node named before (`ros2 param get /turtlesim <TAB>`), which the
+    daemon asks it for: the first time for a node may come too late, and complete nothing."""
+    from ros2cmd import daemon
+
+    node = getattr(parsed_args, "node_name", None)
+    if not node or not daemon.use_daemon(no_daemon=False):
+        return []
+    return daemon.ask_parameters(node, min(MAX_DAEMON_WAIT, completion.remaining()))
+
+
 def interface_types(kinds: tuple[str, ...], ros1: bool = False) -> Completer:
     """A completer of the interface types of KINDS ('msg', 'srv', 'action') in the ament index:
     pkg/msg/Name, or as the ROS 1 tools name them, pkg/Name."""

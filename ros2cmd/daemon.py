@@ -28,6 +28,12 @@ file that can be removed while the daemon lives on, a name that goes when the da
 does, and one that only one process can bind, so that binding it is the lock that lets only one
 daemon serve. An abstract socket has no file permissions: each side checks the other's user
 (SO_PEERCRED), so the daemon answers only its own user and a list asks only its user's daemon.
+
+TAB completion (ros2cmd/completion.py) asks it too: for the names its graph holds now, complete
+or not (``ask_names``), and for a node's parameter names (``ask_parameters``).
+
+(About 570 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
+whose questions and answers must change together.)
 """
 
 from __future__ import annotations
@@ -59,6 +65,10 @@ ANSWER_WAIT = 2.0
 ANSWER_POLL = 0.02
 ASK_TIMEOUT = ANSWER_WAIT + 3.0  # what a list waits for the daemon's answer, at most
 START_TIMEOUT = 10.0  # `ros2 daemon start|stop` (ros2cli: 10 s)
+# A node's parameter names (TAB completion): the longest the daemon waits for the node's
+# answer, and how many nodes' clients it keeps.
+PARAMETERS_WAIT = 0.5
+MAX_PARAMETER_CLIENTS = 32
 MAX_MESSAGE = 16 * 1024 * 1024
 # The environment that decides which graph a node sees (and which code answers).
 SETTINGS = (
@@ -249,6 +259,15 @@ def ask_names(timeout: float) -> dict[str, Any] | None:
     return answer if answer is not None and "topics" in answer else None
 
 
+def ask_parameters(node: str, timeout: float) -> list[str]:
+    """A node's parameter names, asked through the running daemon (TAB completion); [] if no
+    daemon answers, or the node does not within TIMEOUT. Starts no daemon."""
+    question = {"ask": "parameters", "node": node, "timeout": timeout * 0.8}
+    answer = _request(question, timeout=timeout) or {}
+    names = answer.get("parameters")
+    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+
+
 def ask_graph(about: dict[str, Any] | None = None) -> DaemonAnswer | None:
     """The daemon's complete answer; None (the list discovers for itself) if no daemon runs,
     in which case one is started for the next list, or if it could not vouch for one.
@@ -349,6 +368,7 @@ class Daemon:
         self.graph = Graph()
         self.domain_id = self.graph.node.context.get_domain_id()
         self.last_question = time.monotonic()
+        self.parameter_clients: dict[str, Any] = {}  # node -> its list_parameters client
 
     def serve(self) -> None:
         with selectors.DefaultSelector() as selector:
@@ -390,6 +410,8 @@ class Daemon:
             answer = self.graph_answer(asked)
         elif question == "names":
             answer = self.names_answer()
+        elif question == "parameters":
+            answer = self.parameters_answer(asked.get("node"), asked.get("timeout"))
         else:
             answer = {"error": f"unknown question {question!r}"}
         with contextlib.suppress(OSError):
@@ -428,6 +450,42 @@ class Daemon:
             "services": node.get_service_names_and_types(),
             "actions": sorted(self.graph.action_types().items()),
         }
+
+    def parameters_answer(self, node: Any, timeout: Any) -> dict[str, Any]:
+        """A node's parameter names, if it answers within TIMEOUT (at most PARAMETERS_WAIT):
+        TAB completion's `ros2 param get NODE <TAB>`. Its client stays for the next question
+        (a new one must first be matched with the node's service, which takes longer)."""
+        from rcl_interfaces.srv import ListParameters
+
+        if not isinstance(node, str) or not isinstance(timeout, (int, float)):
+            return {"error": "parameters: a node name and a timeout"}
+        node = "/" + node.strip("/")
+        present = set(self.graph.node_names())
+        for gone in [name for name in self.parameter_clients if name not in present]:
+            self.graph.node.destroy_client(self.parameter_clients.pop(gone))
+        if node not in present:
+            return {"parameters": []}
+        client = self.parameter_clients.get(node)
+        if client is None:
+            if len(self.parameter_clients) >= MAX_PARAMETER_CLIENTS:
+                oldest = next(iter(self.parameter_clients))
+                self.graph.node.destroy_client(self.parameter_clients.pop(oldest))
+            client = self.graph.node.create_client(ListParameters, f"{node}/list_parameters")
+            self.parameter_clients[node] = client
+        calls: list[Any] = []
+
+        def answered() -> bool:
+            if not calls and client.service_is_ready():
+                calls.append(client.call_async(ListParameters.Request()))
+            return bool(calls) and calls[0].done()
+
+        with contextlib.suppress(ToolError):
+            self.graph.wait_for(answered, "", min(max(float(timeout), 0.0), PARAMETERS_WAIT))
+        if not calls or not calls[0].done() or calls[0].result() is None:
+            if calls:
+                client.remove_pending_request(calls[0])
+            return {"parameters": []}
+        return {"parameters": sorted(calls[0].result().result.names)}
 
     def node_info(self, name: str, namespace: str) -> dict[str, Any]:
         """What `node info` prints of a node: its endpoints by kind, (name, types) each."""

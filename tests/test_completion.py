@@ -147,6 +147,15 @@ def test_live_names_come_from_the_daemon(running_daemon, context):
         node.destroy_node()
 
 
+def test_parameter_names_come_from_the_node_through_the_daemon(running_daemon, parameter_lesson):
+    _offered_once("ros2 node info /service_serv", "/service_server")
+    # the daemon asks the node (its first question to a node may come too late: asked again)
+    assert "calculation_method" in _offered_once(
+        "ros2 param get /service_server calc", "calculation_method"
+    )
+    assert "calculation_method" in offered("ros2 param set /service_server ")
+
+
 def _daemons_of_domain(domain_id: str) -> list[int]:
     """The processes of `python -m ros2cmd.daemon` started for this domain."""
     found = []

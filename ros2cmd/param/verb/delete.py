@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolFailure
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
@@ -14,6 +15,7 @@ HELP = "Delete parameter"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_name", help="Name of the parameter")
+    completion.attach(parser, parameter_name=completion.parameter_names)
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:

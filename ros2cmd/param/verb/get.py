@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, get_values
 
@@ -31,6 +32,7 @@ def get_label(param_type: int) -> str:
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_name", help="Name of the parameter")
+    completion.attach(parser, parameter_name=completion.parameter_names)
     parser.add_argument("--hide-type", action="store_true", help="Hide the type information")
 
 

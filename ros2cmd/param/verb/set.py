@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
@@ -20,6 +21,7 @@ HELP = "Set parameter"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_name", help="Name of the parameter")
+    completion.attach(parser, parameter_name=completion.parameter_names)
     parser.add_argument("value", help="Value of the parameter")
 
 
