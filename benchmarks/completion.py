@@ -7,6 +7,7 @@ answers nothing)."""
 from __future__ import annotations
 
 import os
+import resource
 import subprocess
 import tempfile
 import time
@@ -30,9 +31,9 @@ except KeyboardInterrupt:
 """
 
 
-def _complete(line: str) -> tuple[float, list[str]]:
-    """Seconds from start to exit of the command completing LINE, and what it offered. The
-    budget is lifted so that a slow answer is timed, not cut."""
+def _complete(line: str) -> tuple[float, float, list[str]]:
+    """Seconds from start to exit of the command completing LINE, its CPU seconds, and what
+    it offered. The budget is lifted so that a slow answer is timed, not cut."""
     env = dict(os.environ)
     env.pop(daemon.NO_DAEMON_VARIABLE, None)
     env.update(
@@ -44,20 +45,27 @@ def _complete(line: str) -> tuple[float, list[str]]:
     )
     with tempfile.NamedTemporaryFile("r") as answer:
         env["_ARGCOMPLETE_STDOUT_FILENAME"] = answer.name
+        before = _children_cpu()
         began = time.monotonic()
         subprocess.run(
             [str(BIN / line.split()[0])], env=env, capture_output=True, timeout=60, check=True
         )
         seconds = time.monotonic() - began
-        return seconds, answer.read().split()
+        return seconds, _children_cpu() - before, answer.read().split()
 
 
-def _median(line: str, runs: int) -> tuple[float, list[str]]:
-    samples, offered = [], []
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _median(line: str, runs: int) -> tuple[float, float, list[str]]:
+    samples, cpu, offered = [], [], []
     for _ in range(runs):
-        seconds, offered = _complete(line)
+        seconds, used, offered = _complete(line)
         samples.append(seconds)
-    return p50(samples), offered
+        cpu.append(used)
+    return p50(samples), p50(cpu), offered
 
 
 def _bare(args: list[str], runs: int) -> float:
@@ -81,7 +89,7 @@ def answer_times(runs: int = 20) -> list[Row]:
     subprocess.run([str(BIN / "ros2"), "daemon", "start"], capture_output=True, timeout=60, env=env)
     try:
         deadline = time.monotonic() + 30
-        while "/turtle1/cmd_vel" not in _complete("ros2 topic echo /tur")[1]:
+        while "/turtle1/cmd_vel" not in _complete("ros2 topic echo /tur")[2]:
             if time.monotonic() > deadline:
                 raise RuntimeError("the daemon did not show /turtle1/cmd_vel within 30 s")
             time.sleep(0.1)
@@ -95,13 +103,13 @@ def answer_times(runs: int = 20) -> list[Row]:
                 "geometry_msgs/msg/Twist",
             ),
         ):
-            seconds, offered = _median(line, runs)
+            seconds, cpu, offered = _median(line, runs)
             if expected not in offered:
                 raise RuntimeError(f"{line!r} offered {offered}, not {expected}")
             rows.append(
                 Row(
-                    f"TAB completion, {what} (`{line}<TAB>`), median of {runs}",
-                    fmt_ms(seconds),
+                    f"TAB completion, {what} (`{line}<TAB>`), median of {runs} (CPU)",
+                    f"{fmt_ms(seconds)} ({fmt_ms(cpu)} CPU)",
                     base,
                     seconds / bare,
                     f"< {BUDGET * 1e3:.0f} ms",
