@@ -2,21 +2,23 @@
 
 The launcher does not use rclpy, and a launch must not load it: a process that loaded rclpy
 (and Fast DDS with it) without using it can crash in Fast DDS's exit code after a Ctrl-C
-(docs/dev/limits.md). Every other verb is ros2cmd.cli's.
+(docs/dev/limits.md). Every other verb is ros2cmd.cli's. TAB completion (the shell running
+`ros2` with argcomplete's `_ARGCOMPLETE`) is answered first, from the launcher's parser after
+`ros2 launch`, else from ros2's, and runs nothing.
 """
 
 from __future__ import annotations
 
-import os
 import sys
 from collections.abc import Sequence
 
+from ros_tutorials_common import completion
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 @exits_130_on_ctrl_c  # while rclpy loads, too
 def main(argv: Sequence[str] | None = None) -> int:
-    if "_ARGCOMPLETE" in os.environ:  # the shell asking for TAB's completions: ends here
+    if completion.requested():  # the shell asking for TAB's completions: ends here
         _complete()
     words = list(sys.argv[1:] if argv is None else argv)
     if words[:1] == ["launch"]:
@@ -31,9 +33,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _complete() -> None:
     """Answer a completion of the line in COMP_LINE (argcomplete's protocol), from the
     launcher's parser after `ros2 launch`, else from ros2's."""
-    from ros_tutorials_common import completion
-
-    if completion.line_words()[1:2] == ["launch"] and len(completion.line_words()) > 2:
+    words = completion.line_words()  # `ros2 launch ` and more: the launcher's own words
+    if words[1:2] == ["launch"] and len(words) > 2:
         from launcher.__main__ import build_parser as launch_parser
 
         completion.answer(launch_parser("ros2 launch"), skip=1)

@@ -101,7 +101,8 @@ def answer(parser: argparse.ArgumentParser, skip: int = 0) -> None:
 
     if skip:  # argcomplete's count of the words before the arguments (as for `python x.py`)
         os.environ["_ARGCOMPLETE"] = str(int(os.environ["_ARGCOMPLETE"]) + skip)
-    # -h and --help are offered by no one (as ros2cli's); a file name where nothing else says.
+    # -h and --help are not offered (as ros2cli's); an argument with no completer of its own
+    # completes file names (argcomplete's default: a bag, a params file).
     argcomplete.autocomplete(parser, exclude=["-h", "--help"])
     os._exit(1)  # not reached: autocomplete ends the process
 
