@@ -49,7 +49,7 @@ from types import SimpleNamespace
 from typing import Any
 
 from ros2cmd.errors import ToolError
-from ros2cmd.graph import VisibleNames
+from ros2cmd.graph import VisibleNames, split_node_name
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
@@ -240,6 +240,12 @@ class DaemonAnswer(VisibleNames):
 
     def close(self) -> None:
         pass
+
+
+def about_node(full_name: str) -> dict[str, Any]:
+    """What ask_graph asks about a node (`node info NAME`)."""
+    namespace, name = split_node_name(full_name)
+    return {"node": [name, namespace]}
 
 
 def ask_graph(about: dict[str, Any] | None = None) -> DaemonAnswer | None:
