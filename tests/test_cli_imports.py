@@ -110,7 +110,7 @@ print(",".join(loaded))
 
 COMMAND_LINES = (
     "topic echo /chatter std_msgs/msg/String --qos-profile sensor_data --qos-depth 5",
-    "topic pub -r 2 /chatter std_msgs/msg/String {} --qos-reliability reliable",
+    "topic pub -r 2 /chatter std_msgs/msg/String {{}} --qos-reliability reliable",
     "topic info -v /chatter",
     "topic hz /chatter",
     "topic delay /chatter",
@@ -125,13 +125,13 @@ COMMAND_LINES = (
     "param delete /node p",
     "param describe /node p",
     "param list",
-    "action send_goal /a pkg/action/A {}",
+    "action send_goal /a pkg/action/A {{}}",
     "action list -t",
     "interface show std_msgs/msg/String",
     "interface list",
     "bag record -a",
-    "bag play some_bag",
-    "bag info some_bag",
+    "bag play {bag}",
+    "bag info {bag}",
     "pkg create my_pkg",
     "pkg xml std_msgs",
     "doctor --report",
@@ -140,9 +140,10 @@ COMMAND_LINES = (
 )
 
 
-def test_parsing_every_verb_loads_no_rclpy():
+def test_parsing_every_verb_loads_no_rclpy(tmp_path):
+    lines = [line.format(bag=tmp_path) for line in COMMAND_LINES]  # a bag's path must exist
     result = subprocess.run(
-        [sys.executable, "-c", PARSE_EVERY_VERB % (HEAVY,), *COMMAND_LINES],
+        [sys.executable, "-c", PARSE_EVERY_VERB % (HEAVY,), *lines],
         capture_output=True,
         text=True,
         timeout=TIMEOUT,
