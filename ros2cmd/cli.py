@@ -139,7 +139,7 @@ def _execute(
         if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
             raise ToolError(problem)
         answered = False
-        if use_daemon is not False and spin_time is None:
+        if use_daemon and spin_time is None:
             graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
         if graph is not None:
             try:

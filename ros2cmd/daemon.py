@@ -4,13 +4,13 @@ A list that starts its own node waits for discovery every time (graph.Graph.sett
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
 `service list`, `action list`, `topic|service find`, `node info`, `topic info` (not -v) and
-`topic type` over a Unix socket (only this user's processes are answered, see below): the
-names, and for `node info` the node's endpoints and for `topic info` the topic's, as ros2cli's
-daemon serves the graph API. A command that names a node or topic the complete graph does not
-hold discovers for itself, so that it waits for it as it does without a daemon (NotInAnswer).
-The client side loads no rclpy: a question and a JSON answer. A list starts the daemon when
-none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends after
-IDLE_TIMEOUT without a question (ros2cli's 2 hours).
+`topic|service type` over a Unix socket (only this user's processes are answered, see below):
+the names, and for `node info` the node's endpoints and for `topic info` the topic's, as
+ros2cli's daemon serves the graph API. A command that names a node or topic the complete
+graph does not hold discovers for itself, so that it waits for it as it does without a daemon
+(NotInAnswer). The client side loads no rclpy: a question and a JSON answer. A list starts the
+daemon when none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends
+after IDLE_TIMEOUT without a question (ros2cli's 2 hours).
 
 ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
 started or list one that is gone (ros2cli#672). This one answers only once its graph is
