@@ -1,16 +1,36 @@
-"""Daemon figures (ros2cmd/daemon.py): how fast `ros2` starts, beside a bare Python and a bare
-`import rclpy`; and `ros2 node list` with and without the daemon at union.launch + 20 nodes
-(24 nodes), beside the time discovery itself needs (a bare rclpy node waiting until it sees
-all 24)."""
+"""Command-line figures (issue 39; ros2cmd/cli.py, ros2cmd/daemon.py): how fast `ros2` answers
+help, the daemon's answers and `ros2 run`, beside a bare Python and a bare `import rclpy` in the
+same run; and `ros2 node list` with and without the daemon at union.launch + 20 nodes (24
+nodes), beside the time discovery itself needs (a bare rclpy node waiting until it sees all
+24)."""
 
 from __future__ import annotations
 
 import subprocess
 import time
 
-from benchmarks.common import Row, fmt_ms, p50, p99, python, stop
+from benchmarks.common import (
+    Row,
+    fmt_ms,
+    p50,
+    p99,
+    python,
+    start,
+    stop,
+    wait_for_lines,
+)
 from benchmarks.graph import BARE, BIN, EXPECTED_NODES, EXPECTED_TOPICS, _running, _timed
 from ros2cmd import daemon
+
+HELP_TARGET = 0.100  # s, p50: `ros2 -h`, `ros2 VERB -h`, `ros2 run -h` (issue 39)
+DAEMON_TARGET = 0.150  # s, p50: what the daemon answers
+RUN_TARGET = 0.060  # s, p50: what `ros2 run` adds before the node's own start
+# A few nodes for the daemon's answers: a publisher, a service server, an action server.
+NODES = (
+    "ros_tutorials_topic.publisher",
+    "ros_tutorials_service.server",
+    "ros_tutorials_action.server",
+)
 
 
 def _median_run(args: list[str], runs: int, env: dict[str, str] | None = None) -> float:
@@ -22,35 +42,120 @@ def _median_run(args: list[str], runs: int, env: dict[str, str] | None = None) -
     return p50(seconds)
 
 
+def _first_line(args: list[str], runs: int) -> float:
+    """p50 of start to the first line the program prints (a node's first log line)."""
+    seconds = []
+    for _ in range(runs):
+        began = time.monotonic()
+        proc = start(args)
+        try:
+            if not wait_for_lines(proc, lambda _line: True, timeout=60):
+                raise RuntimeError(f"{' '.join(args)} printed nothing")
+            seconds.append(time.monotonic() - began)
+        finally:
+            stop(proc)
+    return p50(seconds)
+
+
+def _complete_answer(wanted: str, timeout: float = 30.0) -> None:
+    """Wait until the daemon answers complete with the node `wanted` in it."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        answer = daemon.ask_graph()
+        if answer is not None and wanted in answer.node_names():
+            return
+        time.sleep(0.1)
+    raise RuntimeError(f"the daemon did not answer with {wanted} within {timeout:g} s")
+
+
 def startup(runs: int = 10) -> list[Row]:
-    """Start to exit with nothing running: `ros2 -h`; `ros2 topic list` through a running
-    daemon and without it."""
+    """Start to exit: help, with nothing running; the daemon's answers with three nodes up
+    (a daemon running), and `topic list --no-daemon` beside them; what `ros2 run` and
+    `rosrun` add to a node's start (its first output line through them, minus through
+    `python -m MODULE`)."""
     bare = _median_run(python("-c", "pass"), runs)
     rclpy = _median_run(python("-c", "import rclpy"), runs)
+    base = f"{fmt_ms(bare)} (`python -c pass`), {fmt_ms(rclpy)} (`import rclpy`)"
     ros2 = str(BIN / "ros2")
-    help_time = _median_run([ros2, "-h"], runs)
+    rows = []
+    for command in (
+        [ros2, "-h"],
+        [ros2, "topic", "-h"],
+        [ros2, "run", "-h"],
+        [str(BIN / "rostopic"), "-h"],
+    ):
+        took = _median_run(command, runs)
+        shown = " ".join(["ros2" if word == ros2 else word.rsplit("/", 1)[-1] for word in command])
+        rows.append(
+            Row(
+                f"`{shown}`, p50 of {runs}",
+                fmt_ms(took),
+                base,
+                took / rclpy,
+                f"<= {fmt_ms(HELP_TARGET)}",
+                took <= HELP_TARGET,
+            )
+        )
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
+    procs = [start(python("-m", module), **quiet) for module in NODES]
     subprocess.run([ros2, "daemon", "start"], capture_output=True, timeout=60)
     try:
-        through = _median_run([ros2, "topic", "list"], runs)
+        _complete_answer("/action_server")
+        for command in (
+            ["node", "list"],
+            ["topic", "list"],
+            ["service", "list"],
+            ["action", "list"],
+            ["node", "info", "/topic_publisher"],
+            ["topic", "info", "/ros_tutorial_msg"],
+            ["topic", "type", "/ros_tutorial_msg"],
+            ["interface", "list"],
+        ):
+            took = _median_run([ros2, *command], runs)
+            where = "ament index" if command[0] == "interface" else "through the daemon"
+            rows.append(
+                Row(
+                    f"`ros2 {' '.join(command)}`, {where}, 3 nodes up, p50 of {runs}",
+                    fmt_ms(took),
+                    base,
+                    took / rclpy,
+                    f"<= {fmt_ms(DAEMON_TARGET)}",
+                    took <= DAEMON_TARGET,
+                )
+            )
+        declined = sum(daemon.ask_graph() is None for _ in range(runs))
+        rows.append(Row(f"daemon declined, of {runs} asks (3 nodes up)", str(declined)))
     finally:
         daemon.stop_quietly()
+        for proc in procs:
+            stop(proc)
     direct = _median_run([ros2, "topic", "list", "--no-daemon"], runs)
-    base = f"{fmt_ms(bare)} (`python -c pass`), {fmt_ms(rclpy)} (`import rclpy`)"
-    return [
-        Row(f"`ros2 -h`, median of {runs}", fmt_ms(help_time), base, help_time / rclpy),
+    rows.append(
         Row(
-            f"`ros2 topic list`, nothing running, daemon running, median of {runs}",
-            fmt_ms(through),
-            base,
-            through / rclpy,
-        ),
-        Row(
-            f"`ros2 topic list --no-daemon`, nothing running, median of {runs}",
+            f"`ros2 topic list --no-daemon`, nothing running, p50 of {runs}",
             fmt_ms(direct),
             base,
             direct / rclpy,
-        ),
-    ]
+        )
+    )
+    module = _first_line(python("-m", "ros_tutorials_topic.publisher"), runs)
+    for command in (
+        [ros2, "run", "ros_tutorials_topic", "topic_publisher"],
+        [str(BIN / "rosrun"), "ros_tutorials_topic", "topic_publisher"],
+    ):
+        added = _first_line(command, runs) - module
+        shown = " ".join(["ros2" if word == ros2 else word.rsplit("/", 1)[-1] for word in command])
+        rows.append(
+            Row(
+                f"`{shown}`: added to the node's first output line, p50 of {runs} each",
+                fmt_ms(added),
+                f"{fmt_ms(module)} (`python -m ros_tutorials_topic.publisher`)",
+                None,
+                f"<= {fmt_ms(RUN_TARGET)}",
+                added <= RUN_TARGET,
+            )
+        )
+    return rows
 
 
 def lists(runs: int = 10) -> list[Row]:

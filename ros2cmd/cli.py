@@ -19,8 +19,7 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
-from ros2cmd.bag import ros2 as bag
+from ros2cmd import daemon
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph, rclpy_error
 from ros2cmd.wait import Interrupted
@@ -62,8 +61,12 @@ VERBS_WITH_COMMANDS = frozenset(
 LAUNCH_HELP = "Run a launch file"
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The whole `ros2` parser, every verb and its options (cheap: no rclpy, no messages)."""
+def build_parser(run_only: bool = False) -> argparse.ArgumentParser:
+    """The whole `ros2` parser, every verb and its options (cheap: no rclpy, no messages).
+
+    With run_only, the `run` verb's alone, the same to `ros2 run ...`: it replaces itself by
+    the node, and the other verbs' modules would only delay it.
+    """
     parser = argparse.ArgumentParser(
         prog="ros2",
         description="ros2 is an extensible command-line tool for ROS 2.",
@@ -71,6 +74,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
     common = common_options()
+    if run_only:
+        from ros2cmd import run
+
+        run.register(verbs, common)
+        return parser
+
+    from ros2cmd import action, doctor, interface, node, param, pkg, run, service, topic
+    from ros2cmd.bag import ros2 as bag
 
     verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
     for register in (
@@ -128,7 +139,7 @@ def _execute(
         if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
             raise ToolError(problem)
         answered = False
-        if use_daemon is not False and spin_time is None:
+        if use_daemon and spin_time is None:
             graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
         if graph is not None:
             try:
@@ -189,7 +200,7 @@ def _ros_ok() -> bool:
 
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
-    parser = build_parser()
+    parser = build_parser(run_only=words[:1] == ["run"])
     if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
         # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.
         parser.parse_args([*words, "--help"])

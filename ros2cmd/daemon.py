@@ -4,13 +4,13 @@ A list that starts its own node waits for discovery every time (graph.Graph.sett
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
 `service list`, `action list`, `topic|service find`, `node info`, `topic info` (not -v) and
-`topic type` over a Unix socket (only this user's processes are answered, see below): the
-names, and for `node info` the node's endpoints and for `topic info` the topic's, as ros2cli's
-daemon serves the graph API. A command that names a node or topic the complete graph does not
-hold discovers for itself, so that it waits for it as it does without a daemon (NotInAnswer).
-The client side loads no rclpy: a question and a JSON answer. A list starts the daemon when
-none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends after
-IDLE_TIMEOUT without a question (ros2cli's 2 hours).
+`topic|service type` over a Unix socket (only this user's processes are answered, see below):
+the names, and for `node info` the node's endpoints and for `topic info` the topic's, as
+ros2cli's daemon serves the graph API. A command that names a node or topic the complete
+graph does not hold discovers for itself, so that it waits for it as it does without a daemon
+(NotInAnswer). The client side loads no rclpy: a question and a JSON answer. A list starts the
+daemon when none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends
+after IDLE_TIMEOUT without a question (ros2cli's 2 hours).
 
 ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
 started or list one that is gone (ros2cli#672). This one answers only once its graph is
@@ -55,7 +55,7 @@ from types import SimpleNamespace
 from typing import Any
 
 from ros2cmd.errors import ToolError
-from ros2cmd.graph import VisibleNames
+from ros2cmd.graph import VisibleNames, split_node_name
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
@@ -266,6 +266,12 @@ def ask_parameters(node: str, timeout: float) -> list[str]:
     answer = _request(question, timeout=timeout) or {}
     names = answer.get("parameters")
     return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+
+
+def about_node(full_name: str) -> dict[str, Any]:
+    """What ask_graph asks about a node (`node info NAME`)."""
+    namespace, name = split_node_name(full_name)
+    return {"node": [name, namespace]}
 
 
 def ask_graph(about: dict[str, Any] | None = None) -> DaemonAnswer | None:

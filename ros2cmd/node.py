@@ -17,6 +17,7 @@ import argparse
 import sys
 
 from ros2cmd import completion
+from ros2cmd.daemon import about_node
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
 from ros2cmd.sub_verbs import add_count_option
 
@@ -99,6 +100,6 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         help="Display hidden topics, services, and actions as well",
     )
     p.set_defaults(
-        daemon=lambda a: {"node": list(split_node_name(a.node_name))},
+        daemon=lambda a: about_node(a.node_name),
         run=lambda graph, a: info(graph, a.node_name, a.include_hidden),
     )

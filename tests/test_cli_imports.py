@@ -110,7 +110,7 @@ print(",".join(loaded))
 
 COMMAND_LINES = (
     "topic echo /chatter std_msgs/msg/String --qos-profile sensor_data --qos-depth 5",
-    "topic pub -r 2 /chatter std_msgs/msg/String {data:\\ hi} --qos-reliability reliable",
+    "topic pub -r 2 /chatter std_msgs/msg/String {{}} --qos-reliability reliable",
     "topic info -v /chatter",
     "topic hz /chatter",
     "topic delay /chatter",
@@ -125,13 +125,13 @@ COMMAND_LINES = (
     "param delete /node p",
     "param describe /node p",
     "param list",
-    "action send_goal /a pkg/action/A {}",
+    "action send_goal /a pkg/action/A {{}}",
     "action list -t",
     "interface show std_msgs/msg/String",
     "interface list",
     "bag record -a",
-    "bag play some_bag",
-    "bag info some_bag",
+    "bag play {bag}",
+    "bag info {bag}",
     "pkg create my_pkg",
     "pkg xml std_msgs",
     "doctor --report",
@@ -140,9 +140,10 @@ COMMAND_LINES = (
 )
 
 
-def test_parsing_every_verb_loads_no_rclpy():
+def test_parsing_every_verb_loads_no_rclpy(tmp_path):
+    lines = [line.format(bag=tmp_path) for line in COMMAND_LINES]  # a bag's path must exist
     result = subprocess.run(
-        [sys.executable, "-c", PARSE_EVERY_VERB % (HEAVY,), *COMMAND_LINES],
+        [sys.executable, "-c", PARSE_EVERY_VERB % (HEAVY,), *lines],
         capture_output=True,
         text=True,
         timeout=TIMEOUT,
@@ -209,3 +210,16 @@ def test_what_the_daemon_answers_loads_no_rclpy(running_daemon, node_process):
     node_process("-m", "ros_tutorials_topic.publisher").wait_for_text("send msg")
     assert "/ros_tutorial_msg\n" in _served_without_rclpy("topic", "list").stdout
     assert "/topic_publisher\n" in _served_without_rclpy("node", "list").stdout
+    info = _served_without_rclpy("node", "info", "/topic_publisher").stdout
+    assert "    /ros_tutorial_msg: ros_tutorials_interfaces/msg/MsgTutorial\n" in info
+    topic = _served_without_rclpy("topic", "info", "/ros_tutorial_msg").stdout
+    assert topic.startswith("Type: ros_tutorials_interfaces/msg/MsgTutorial\nPublisher count: 1\n")
+    type_name = _served_without_rclpy("topic", "type", "/ros_tutorial_msg").stdout
+    assert type_name == "ros_tutorials_interfaces/msg/MsgTutorial\n"
+
+
+def test_interface_list_loads_no_rclpy():
+    """`ros2 interface list` reads the ament index only."""
+    modules, result = loaded("ros2cmd.entry:main", "interface", "list")
+    assert result.returncode == 0 and "    std_msgs/msg/String\n" in result.stdout
+    assert modules == [], f"`ros2 interface list` loaded {modules}"

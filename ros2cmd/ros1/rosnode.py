@@ -6,7 +6,7 @@ import argparse
 from collections.abc import Sequence
 
 from ros2cmd import completion, node
-from ros2cmd.graph import split_node_name
+from ros2cmd.daemon import about_node
 from ros2cmd.ros1 import tool
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
@@ -21,7 +21,7 @@ def rosnode_parser() -> argparse.ArgumentParser:
     p.add_argument("node")
     completion.attach(p, node=completion.node_names)
     p.set_defaults(
-        daemon=lambda a: {"node": list(split_node_name(a.node))},
+        daemon=lambda a: about_node(a.node),
         run=lambda graph, a: node.info(graph, a.node),
     )
     tool.no_ros2_meaning("rosnode", sub)

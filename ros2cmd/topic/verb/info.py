@@ -37,12 +37,13 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
         with contextlib.suppress(ToolError):  # after --timeout, print what is known
             graph.wait_for(lambda: node_names_known(graph, topic), "")
     types = names_and_types(graph, hidden=True)[topic]
-    end = "\n\n" if args.verbose else "\n"
-    print(f"Type: {types[0] if len(types) == 1 else types}", end=end)
-    for title, endpoints in (
+    sections = (
         ("Publisher", graph.node.get_publishers_info_by_topic(topic)),
         ("Subscription", graph.node.get_subscriptions_info_by_topic(topic)),
-    ):
+    )
+    end = "\n\n" if args.verbose else "\n"
+    print(f"Type: {types[0] if len(types) == 1 else types}", end=end)
+    for title, endpoints in sections:
         print(f"{title} count: {len(endpoints)}", end=end)
         if args.verbose:
             for endpoint in endpoints:
