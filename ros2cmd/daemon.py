@@ -1,5 +1,8 @@
 """`ros2 daemon start|stop|status`, and the daemon: one graph node that the lists ask.
 
+(About 590 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
+whose questions and answers must change together.)
+
 A list that starts its own node waits for discovery every time (graph.Graph.settle). The
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
@@ -31,9 +34,6 @@ daemon serve. An abstract socket has no file permissions: each side checks the o
 
 TAB completion (ros2cmd/completion.py) asks it too: for the names its graph holds now, complete
 or not (``ask_names``), and for a node's parameter names (``ask_parameters``).
-
-(About 570 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
-whose questions and answers must change together.)
 """
 
 from __future__ import annotations

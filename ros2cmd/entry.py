@@ -40,4 +40,4 @@ def _complete() -> None:
         completion.answer(launch_parser("ros2 launch"), skip=1)
     from ros2cmd.cli import build_parser
 
-    completion.answer(build_parser())
+    completion.answer(build_parser(run_only=words[1:2] == ["run"] and len(words) > 2))
