@@ -33,6 +33,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _complete() -> None:
     """Answer a completion of the line in COMP_LINE (argcomplete's protocol), from the
     launcher's parser after `ros2 launch`, else from ros2's."""
+    completion.arm()  # the budget covers building the parser too
     words = completion.line_words()  # `ros2 launch ` and more: the launcher's own words
     if words[1:2] == ["launch"] and len(words) > 2:
         from launcher.__main__ import build_parser as launch_parser

@@ -35,6 +35,14 @@ COMMANDS = (
     "rossrv",
     "rosbag",
     "rospack",
+    "roscore",
+    "roscd",
+    "rosed",
+    "roscp",
+    "rqt_graph",
+    "rqt_console",
+    "rqt_logger_level",
+    "roslaunch-logs",
 )
 BUDGET = 0.15  # s from the process's start
 COMPLETION_BUDGET_VARIABLE = "ROS_TUTORIALS_COMPLETION_BUDGET"
