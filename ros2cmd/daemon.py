@@ -42,6 +42,7 @@ import argparse
 import contextlib
 import hashlib
 import json
+import math
 import os
 import selectors
 import signal
@@ -465,6 +466,7 @@ class Daemon:
 
         if not isinstance(node, str) or not isinstance(timeout, (int, float)):
             return {"error": "parameters: a node name and a timeout"}
+        timeout = min(max(float(timeout), 0.0), PARAMETERS_WAIT) if math.isfinite(timeout) else 0.0
         node = "/" + node.strip("/")
         present = set(self.graph.node_names())
         for gone in [name for name in self.parameter_clients if name not in present]:
@@ -486,7 +488,7 @@ class Daemon:
             return bool(calls) and calls[0].done()
 
         with contextlib.suppress(ToolError):
-            self.graph.wait_for(answered, "", min(max(float(timeout), 0.0), PARAMETERS_WAIT))
+            self.graph.wait_for(answered, "", timeout)
         if not calls or not calls[0].done() or calls[0].result() is None:
             if calls:
                 client.remove_pending_request(calls[0])

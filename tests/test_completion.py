@@ -154,6 +154,14 @@ def test_parameter_names_come_from_the_node_through_the_daemon(running_daemon, p
         "ros2 param get /service_server calc", "calculation_method"
     )
     assert "calculation_method" in offered("ros2 param set /service_server ")
+    # a question the daemon cannot take is answered as such, at once, and it goes on
+    for bad in ({"node": 5, "timeout": 0.1}, {"node": "/service_server", "timeout": "NaN"}):
+        answer = daemon._request({"ask": "parameters", **bad}, timeout=TIMEOUT)
+        assert answer == {"error": "parameters: a node name and a timeout"}
+    nan = {"ask": "parameters", "node": "/service_server", "timeout": float("nan")}
+    assert "parameters" in daemon._request(nan, timeout=TIMEOUT)  # no wait, not forever
+    assert daemon.ask_parameters("/nobody_here", TIMEOUT) == []
+    assert daemon.ask_names(TIMEOUT) is not None
 
 
 def _daemons_of_domain(domain_id: str) -> list[int]:
