@@ -14,7 +14,7 @@ from launcher.naming import valid_name
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve
-from ros_tutorials_common import ament, completion, packages
+from ros_tutorials_common import completion, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 from ros_tutorials_common.dds import environment_problem
@@ -98,9 +98,7 @@ def find_launch_file(names: list[str]) -> Path:
     """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
     if len(names) == 2:
         package, name = names
-        found = packages.resolve_package(package)  # a seed's name too: my_package
-        if not found and package in ament.packages():  # a package of the learner's workspace
-            found = (package,)
+        found = packages.launch_packages(package)  # a seed's name too: my_package
         if not found:
             known = ", ".join(packages.package_dirs())
             hint = packages.not_sourced_hint(package)

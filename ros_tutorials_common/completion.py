@@ -165,7 +165,8 @@ def launch_file_names(package: str) -> list[str]:
     from ros_tutorials_common import packages
 
     try:
-        return [path.name for path in packages.launch_files(packages.ament_package(package))]
+        found = packages.launch_packages(package)
+        return sorted({path.name for name in found for path in packages.launch_files(name)})
     except (LookupError, OSError):
         return []
 

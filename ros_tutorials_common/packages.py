@@ -410,6 +410,16 @@ def package_folder(name: str) -> Path:
     return manifest.resolve().parent if manifest.is_symlink() else share
 
 
+def launch_packages(name: str) -> tuple[str, ...]:
+    """The packages whose share folders `ros2 launch NAME FILE` looks in: this project's that
+    the name stands for (a seed's name, `turtlesim`), else the package of the ament index of
+    that name (a learner's own); none if it is neither."""
+    found = resolve_package(name)
+    if not found and name in ament.packages():
+        found = (name,)
+    return found
+
+
 def launch_files(package: str) -> list[Path]:
     """The launch files a package installs in share/PKG/launch/."""
     folder = ament.share_directory(package) / "launch"

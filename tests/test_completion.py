@@ -98,6 +98,8 @@ def test_launch_files_of_a_package():
     assert "union.launch" in found, found
     assert "union.launch" in offered("roslaunch ros_tutorials_topic uni")
     assert "ros_tutorials_topic" in offered("ros2 launch ros_tutorials_to")
+    # a name that stands for this project's package, as `ros2 launch turtlesim FILE` finds it
+    assert "multisim.launch.py" in offered("ros2 launch turtlesim multi")
 
 
 @pytest.fixture
