@@ -138,6 +138,18 @@ def startup(runs: int = 10) -> list[Row]:
             direct / rclpy,
         )
     )
+    # ros2 run's own part, steady: it looks the executable up, then `true` replaces it.
+    to_exec = _median_run(
+        [ros2, "run", "--prefix", "true", "ros_tutorials_topic", "topic_publisher"], runs
+    )
+    rows.append(
+        Row(
+            f"`ros2 run --prefix true ros_tutorials_topic topic_publisher`, p50 of {runs}",
+            fmt_ms(to_exec),
+            base,
+            to_exec / rclpy,
+        )
+    )
     module = _first_line(python("-m", "ros_tutorials_topic.publisher"), runs)
     for command in (
         [ros2, "run", "ros_tutorials_topic", "topic_publisher"],
