@@ -3,11 +3,13 @@
 The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
 in its own package or module (topic/, node.py, ...) and registers its commands here;
 `ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
-entry.py before this module loads rclpy. A command is a function of the
-graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
-a bad name prints one line and exits 1, Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the
-verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with a rate or latched), for which it
-is the normal end: 0 (see graph.until_stopped).
+entry.py. Building the parser (`build_parser()`, the whole of it, as TAB completion does)
+loads no rclpy: the verbs import it where a command runs, so help, parsing and the daemon's
+answers go without it (tests/test_cli_imports.py); `ros2 run` builds its verb's parser alone.
+A command is a function of the graph and the parsed arguments. `execute` gives all of them
+the same behaviour: a ToolError or a bad name prints one line and exits 1, Ctrl-C exits 130
+(EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with
+a rate or latched), for which it is the normal end: 0 (see graph.until_stopped).
 """
 
 from __future__ import annotations
