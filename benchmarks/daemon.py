@@ -42,19 +42,21 @@ def _median_run(args: list[str], runs: int, env: dict[str, str] | None = None) -
     return p50(seconds)
 
 
-def _first_line(args: list[str], runs: int) -> float:
-    """p50 of start to the first line the program prints (a node's first log line)."""
-    seconds = []
+def _first_lines(commands: list[list[str]], runs: int) -> list[float]:
+    """p50 of start to the first line each program prints (a node's first log line), the
+    commands taking turns so that the machine's load changes hit them alike."""
+    seconds: list[list[float]] = [[] for _ in commands]
     for _ in range(runs):
-        began = time.monotonic()
-        proc = start(args)
-        try:
-            if not wait_for_lines(proc, lambda _line: True, timeout=60):
-                raise RuntimeError(f"{' '.join(args)} printed nothing")
-            seconds.append(time.monotonic() - began)
-        finally:
-            stop(proc)
-    return p50(seconds)
+        for samples, args in zip(seconds, commands, strict=True):
+            began = time.monotonic()
+            proc = start(args)
+            try:
+                if not wait_for_lines(proc, lambda _line: True, timeout=60):
+                    raise RuntimeError(f"{' '.join(args)} printed nothing")
+                samples.append(time.monotonic() - began)
+            finally:
+                stop(proc)
+    return [p50(samples) for samples in seconds]
 
 
 def _complete_answer(wanted: str, timeout: float = 30.0) -> None:
@@ -138,12 +140,27 @@ def startup(runs: int = 10) -> list[Row]:
             direct / rclpy,
         )
     )
-    module = _first_line(python("-m", "ros_tutorials_topic.publisher"), runs)
-    for command in (
+    # ros2 run's own part, steady: it looks the executable up, then `true` replaces it.
+    to_exec = _median_run(
+        [ros2, "run", "--prefix", "true", "ros_tutorials_topic", "topic_publisher"], runs
+    )
+    rows.append(
+        Row(
+            f"`ros2 run --prefix true ros_tutorials_topic topic_publisher`, p50 of {runs}",
+            fmt_ms(to_exec),
+            base,
+            to_exec / rclpy,
+        )
+    )
+    launchers = [
         [ros2, "run", "ros_tutorials_topic", "topic_publisher"],
         [str(BIN / "rosrun"), "ros_tutorials_topic", "topic_publisher"],
-    ):
-        added = _first_line(command, runs) - module
+    ]
+    module, *through = _first_lines(
+        [python("-m", "ros_tutorials_topic.publisher"), *launchers], runs
+    )
+    for command, took in zip(launchers, through, strict=True):
+        added = took - module
         shown = " ".join(["ros2" if word == ros2 else word.rsplit("/", 1)[-1] for word in command])
         rows.append(
             Row(

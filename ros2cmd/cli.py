@@ -3,11 +3,13 @@
 The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
 in its own package or module (topic/, node.py, ...) and registers its commands here;
 `ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
-entry.py before this module loads rclpy. A command is a function of the
-graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
-a bad name prints one line and exits 1, Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the
-verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with a rate or latched), for which it
-is the normal end: 0 (see graph.until_stopped).
+entry.py. Building the parser (`build_parser()`, the whole of it, as TAB completion does)
+loads no rclpy: the verbs import it where a command runs, so help, parsing and the daemon's
+answers go without it (tests/test_cli_imports.py); `ros2 run` builds its verb's parser alone.
+A command is a function of the graph and the parsed arguments. `execute` gives all of them
+the same behaviour: a ToolError or a bad name prints one line and exits 1, Ctrl-C exits 130
+(EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with
+a rate or latched), for which it is the normal end: 0 (see graph.until_stopped).
 """
 
 from __future__ import annotations
@@ -17,19 +19,25 @@ import contextlib
 import signal
 import sys
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ros2cmd import daemon
-from ros2cmd.errors import ToolError
-from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph, rclpy_error
+from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
 from ros_tutorials_common.dds import environment_problem
 
+if TYPE_CHECKING:
+    from ros2cmd.graph import Graph
+
+# The graph and the daemon's client are imported where a command needs them: `ros2 run`
+# (offline, and replaced by the node at once) loads neither.
+
 
 def common_options() -> argparse.ArgumentParser:
     """Options every graph command takes (added to each command so they go after it)."""
+    from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME
+
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--timeout",
@@ -73,14 +81,14 @@ def build_parser(run_only: bool = False) -> argparse.ArgumentParser:
         epilog="Call `ros2 <command> -h` for more detailed usage.",
     )
     verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
-    common = common_options()
     if run_only:
         from ros2cmd import run
 
-        run.register(verbs, common)
+        run.register(verbs, argparse.ArgumentParser(add_help=False))  # no graph options
         return parser
+    common = common_options()
 
-    from ros2cmd import action, doctor, interface, node, param, pkg, run, service, topic
+    from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
     from ros2cmd.bag import ros2 as bag
 
     verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
@@ -105,11 +113,13 @@ def build_parser(run_only: bool = False) -> argparse.ArgumentParser:
 def execute(
     command: Callable[[Graph | None], None],
     offline: bool = False,
-    timeout: float = DEFAULT_TIMEOUT,
+    timeout: float | None = None,
     spin_time: float | None = None,
     use_daemon: bool | dict[str, Any] = False,
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes.
+
+    timeout: what the command waits for what it names (None: graph.DEFAULT_TIMEOUT).
 
     With use_daemon (the lists; a dict: what else to ask, daemon.ask_graph), the daemon's
     complete answer stands in for the node where one runs and can give it (daemon.py), and
@@ -128,7 +138,7 @@ def execute(
 def _execute(
     command: Callable[[Graph | None], None],
     offline: bool,
-    timeout: float,
+    timeout: float | None,
     spin_time: float | None,
     use_daemon: bool | dict[str, Any] = False,
 ) -> int:
@@ -140,16 +150,20 @@ def _execute(
             raise ToolError(problem)
         answered = False
         if use_daemon and spin_time is None:
+            from ros2cmd import daemon
+
             graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
-        if graph is not None:
-            try:
-                command(graph)
-                answered = True
-            except daemon.NotInAnswer:  # before printing: the command waits for it itself
-                graph = None
+            if graph is not None:
+                try:
+                    command(graph)
+                    answered = True
+                except daemon.NotInAnswer:  # before printing: the command waits for it itself
+                    graph = None
         if not answered:
             if not offline:
-                graph = Graph(timeout, spin_time)
+                from ros2cmd.graph import DEFAULT_TIMEOUT, Graph
+
+                graph = Graph(DEFAULT_TIMEOUT if timeout is None else timeout, spin_time)
             command(graph)
         status = 0
     except ToolError as error:
@@ -212,11 +226,9 @@ def run_parsed(args: argparse.Namespace) -> int:
     return execute(
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),
-        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
+        timeout=getattr(args, "timeout", None),
         spin_time=getattr(args, "spin_time", None),
-        use_daemon=_wants_daemon(args)
-        if daemon.use_daemon(getattr(args, "no_daemon", False))
-        else False,
+        use_daemon=_wants_daemon(args),
     )
 
 
@@ -226,4 +238,10 @@ def _wants_daemon(args: argparse.Namespace) -> bool | dict[str, Any]:
     it (a dict: `node info` asks for the node's endpoints, daemon.ask_graph)."""
     wants = getattr(args, "daemon", False)
     wants = wants(args) if callable(wants) else wants
-    return wants if isinstance(wants, dict) else bool(wants)
+    if not wants:
+        return False
+    from ros2cmd import daemon
+
+    if not daemon.use_daemon(getattr(args, "no_daemon", False)):
+        return False
+    return wants if isinstance(wants, dict) else True

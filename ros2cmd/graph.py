@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from ros2cmd.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
-from ros2cmd.errors import ToolError
+from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.local_participants import (
     heard_from_all,
     local_participants,
@@ -125,13 +125,6 @@ class _UntilStopped(contextlib.AbstractContextManager):
         return isinstance(error, stopped) or (
             isinstance(error, Exception) and ctrl_c.interrupted(error)
         )
-
-
-def rclpy_error(module: str, name: str) -> tuple[type[BaseException], ...]:
-    """rclpy's exception class, as a tuple for `except`; () while rclpy is not loaded (nothing
-    can have raised it then, and loading it to look would cost what the lazy imports save)."""
-    loaded = sys.modules.get(module)
-    return (getattr(loaded, name),) if loaded is not None else ()
 
 
 @dataclass

@@ -10,13 +10,8 @@ rclpy.init(), which is when rcl and Fast DDS read them; the launcher passes them
 
 from __future__ import annotations
 
-import fcntl
-import ipaddress
 import os
-import random
 import re
-import socket
-import tempfile
 from collections.abc import Mapping, MutableMapping, Sequence
 from pathlib import Path
 from typing import IO
@@ -87,6 +82,8 @@ def log_dir_problem(env: Mapping[str, str] | None = None) -> str | None:
 def peer_name_ok(peer: str) -> bool:
     """An IP address or a host name, by its form only (``999.1.1.1`` is neither: a name
     cannot be all digits and dots)."""
+    import ipaddress  # only with peers set: every command asks environment_problem()
+
     try:
         ipaddress.ip_address(peer)
         return True
@@ -105,6 +102,9 @@ def static_peers_problem(env: Mapping[str, str] | None = None) -> str | None:
             continue
         if not peer_name_ok(peer):
             return f"ROS_STATIC_PEERS: {peer!r} is not an IP address or a host name"
+        import ipaddress
+        import socket
+
         try:
             if ipaddress.ip_address(peer).version == 4:
                 continue
@@ -144,6 +144,10 @@ def claim_private_domain_id(ids: Sequence[int] = PRIVATE_DOMAIN_IDS) -> tuple[in
     process ends), so concurrent runs never see each other's nodes. ``ids``: where to look
     (1 to 101 unless a test needs an id above them).
     """
+    import fcntl
+    import random
+    import tempfile
+
     lock_dir = Path(tempfile.gettempdir()) / "ros_tutorials_domains"
     lock_dir.mkdir(exist_ok=True)
     candidates = list(ids)

@@ -116,7 +116,7 @@ def rosbag(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] in (["info"], ["reindex"]):  # offline: no rclpy to load
         return _offline_only(argv[0], argv[1:])
-    # record and play need rclpy, which ros2cmd.cli and ros2cmd.graph load: imported here.
+    # record and play run a graph node (ros2cmd.cli's execute): imported for them only.
     from ros2cmd.cli import execute
     from ros2cmd.graph import DEFAULT_TIMEOUT
 
