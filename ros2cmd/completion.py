@@ -5,8 +5,10 @@ argument).
 The running system's names come from the daemon (`ros2 daemon start`; a list started once
 starts it too): one question over its socket, answered at once with what its graph holds
 (daemon.py, ``ask_names``). No daemon running, or none answering in time: nothing completes; a
-completion never starts a daemon nor a DDS participant of its own, and never loads rclpy. The
-machinery, and the names of the ament index (packages, executables, launch files), are in
+completion never starts a daemon nor a DDS participant of its own, and never loads rclpy. This
+module imports what its completers need when they run, so that the verbs that name them load
+nothing for it (`ros2 run` starts without the graph module, for one). The machinery, and the
+names of the ament index (packages, executables, launch files), are in
 ros_tutorials_common/completion.py.
 """
 
@@ -17,7 +19,6 @@ from collections.abc import Callable, Iterable
 from functools import cache
 from typing import Any
 
-from ros2cmd.graph import is_hidden, join_node_name
 from ros_tutorials_common import completion
 
 Completer = Callable[..., Iterable[str]]
@@ -41,6 +42,8 @@ def _daemon_names() -> dict[str, Any]:
 
 
 def _names(kind: str, parsed_args: argparse.Namespace | None, hidden_option: str = "") -> list[str]:
+    from ros2cmd.graph import is_hidden
+
     names = [entry[0] for entry in _daemon_names().get(kind, [])]
     if not (hidden_option and getattr(parsed_args, hidden_option, False)):
         names = [name for name in names if not is_hidden(name)]
@@ -61,6 +64,8 @@ def action_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> lis
 
 def node_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[str]:
     """/ns/name of every node but the hidden ones (unless --include-hidden-nodes)."""
+    from ros2cmd.graph import join_node_name
+
     show_hidden = getattr(parsed_args, "include_hidden_nodes", False)
     found = set()
     for name, namespace in _daemon_names().get("nodes", []):
