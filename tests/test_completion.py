@@ -238,6 +238,13 @@ def test_activating_the_environment_registers_completion():
     shown = _bash(f"source {activate}\ncomplete -p {' '.join(COMMANDS)}", True, _new_terminal())
     for command in COMMANDS:
         assert f"-F _python_argcomplete {command}\n" in shown, shown
+    # bash's completion function, as TAB calls it: the whole way, shell to command and back
+    press_tab = (
+        f"source {activate}\nexport {COMPLETION_BUDGET_VARIABLE}={TIMEOUT}\n"
+        'COMP_LINE="rostopic ec"; COMP_POINT=11; COMP_TYPE=9\n'
+        '_python_argcomplete rostopic; echo "[${COMPREPLY[*]}]"'
+    )
+    assert _bash(press_tab, True, _new_terminal()).strip() == "[echo ]"  # the word, a space
     # deactivate takes it away; a script (not interactive) gets none
     assert _bash(f"source {activate}\ndeactivate\ncomplete -p ros2", True, _new_terminal()) == ""
     assert _bash(f"source {activate}\ncomplete -p ros2", False, _new_terminal()) == ""
