@@ -22,8 +22,6 @@ import sys
 import textwrap
 from dataclasses import dataclass
 
-import yaml
-
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import (
@@ -175,6 +173,8 @@ def show(
 
 def proto(type_name: str, quotes: bool = True) -> None:
     """`ros2 interface proto`: a default message (a goal, a request) as YAML."""
+    import yaml
+
     from ros2cmd.messages import message_to_data  # loads rclpy's generated classes: only here
 
     cls = load_type(type_name)

@@ -20,9 +20,8 @@ import math
 import re
 import sys
 from collections.abc import Callable
+from functools import cache
 from typing import TYPE_CHECKING, Any
-
-import yaml
 
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import full_type_name
@@ -31,8 +30,9 @@ from ros_tutorials_common.bounded import InputError, load_yaml
 if TYPE_CHECKING:
     from rosidl_parser.definition import NamespacedType
 
-# rclpy and rosidl_parser (loaded with any message class already) are imported in the
-# functions that take a message, so that the verbs' modules load without them.
+# rclpy, rosidl_parser (loaded with any message class already) and yaml (its reader compiles a
+# large pattern as it loads) are imported in the functions that use them, so that the verbs'
+# modules load without them.
 
 # Value ranges of the integer types, by their IDL names as SLOT_TYPES spells them.
 INTEGER_RANGES: dict[str, tuple[int, int]] = {}
@@ -61,6 +61,8 @@ _FLATTENED_BLOCK = re.compile(r"\s*(?:[A-Za-z_]\w*\s*:\s+){2,}[^:{}\[\],]+")
 
 def parse_yaml(text: str) -> Any:
     """Parse the YAML a user typed; a syntax error becomes one line saying where."""
+    import yaml
+
     try:
         return load_yaml(text, "the YAML")  # bounded: no alias bomb, at most 1 MiB
     except InputError as error:
@@ -280,10 +282,12 @@ def message_to_yaml(
     truncate_length shortens strings and arrays (``...`` after them), no_arr and no_str print
     a summary instead of the array or string fields.
     """
+    import yaml
+
     data = message_to_ordered(msg, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str)
     text = yaml.dump(
         data,
-        Dumper=MessageDumper,
+        Dumper=message_dumper(),
         allow_unicode=True,
         width=sys.maxsize,  # one value, one line, however long
         default_flow_style=flow_style,
@@ -292,19 +296,25 @@ def message_to_yaml(
     return text.rstrip("\n")
 
 
-class MessageDumper(yaml.SafeDumper):
-    """YAML as rosidl_runtime_py dumps a message (ros2 topic echo, ros2 service echo): its
-    mappings (OrderedDicts there) never take the flow style by themselves, so --flow-style
-    puts only the sequences in flow style (`client_gid: [1, 15, ...]`)."""
+@cache
+def message_dumper() -> type:
+    """The yaml Dumper that writes YAML as rosidl_runtime_py dumps a message (ros2 topic echo,
+    ros2 service echo): its mappings (OrderedDicts there) never take the flow style by
+    themselves, so --flow-style puts only the sequences in flow style (`client_gid: [1, 15,
+    ...]`)."""
+    import yaml
 
+    class MessageDumper(yaml.SafeDumper):
+        pass
 
-MessageDumper.add_representer(
-    dict,
-    lambda dumper, data: yaml.MappingNode(
-        "tag:yaml.org,2002:map",
-        [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
-    ),
-)
+    MessageDumper.add_representer(
+        dict,
+        lambda dumper, data: yaml.MappingNode(
+            "tag:yaml.org,2002:map",
+            [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
+        ),
+    )
+    return MessageDumper
 
 
 def message_to_ordered(

@@ -25,9 +25,11 @@ import stat
 import threading
 import time
 from collections.abc import Callable
-from typing import IO, Any
+from functools import cache
+from typing import IO, TYPE_CHECKING, Any
 
-import yaml
+if TYPE_CHECKING:
+    import yaml
 
 MAX_INPUT_BYTES = 1024 * 1024  # a file or a pipe
 MAX_YAML_ALIASES = 100  # *alias references in one document
@@ -179,30 +181,48 @@ def read_line(stream: IO[str], source: str, limit: int = 4096) -> str:
     return line
 
 
-class _BoundedLoader(yaml.SafeLoader):
-    """PyYAML's safe loader, counting aliases and depth while it composes the document."""
+@cache
+def _bounded_loader() -> type:
+    """PyYAML's safe loader, counting aliases and depth while it composes the document.
 
-    def __init__(self, stream: str) -> None:
-        super().__init__(stream)
-        self.aliases = 0
-        self.depth = 0
+    Made at the first YAML read: PyYAML compiles a large pattern as it loads (about 10 ms),
+    which a command that reads no YAML (`ros2 -h`) need not pay.
+    """
+    import yaml
 
-    def compose_node(self, parent: Any, index: Any) -> Any:
-        if self.check_event(yaml.AliasEvent):
-            self.aliases += 1
-            if self.aliases > MAX_YAML_ALIASES:
-                raise InputError(f"more than {MAX_YAML_ALIASES} YAML aliases")
-        self.depth += 1
-        try:
-            if self.depth > MAX_YAML_DEPTH:
-                raise InputError(f"YAML nested more than {MAX_YAML_DEPTH} deep")
-            return super().compose_node(parent, index)
-        finally:
-            self.depth -= 1
+    class BoundedLoader(yaml.SafeLoader):
+        def __init__(self, stream: str) -> None:
+            super().__init__(stream)
+            self.aliases = 0
+            self.depth = 0
+
+        def compose_node(self, parent: Any, index: Any) -> Any:
+            if self.check_event(yaml.AliasEvent):
+                self.aliases += 1
+                if self.aliases > MAX_YAML_ALIASES:
+                    raise InputError(f"more than {MAX_YAML_ALIASES} YAML aliases")
+            self.depth += 1
+            try:
+                if self.depth > MAX_YAML_DEPTH:
+                    raise InputError(f"YAML nested more than {MAX_YAML_DEPTH} deep")
+                return super().compose_node(parent, index)
+            finally:
+                self.depth -= 1
+
+    return BoundedLoader
+
+
+def __getattr__(name: str) -> Any:
+    """``_BoundedLoader``, the loader class (the launcher's parse.py composes with it)."""
+    if name == "_BoundedLoader":
+        return _bounded_loader()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _expanded_size(root: yaml.Node) -> int:
     """How many values the document holds with every alias expanded (stops past the limit)."""
+    import yaml
+
     sizes: dict[int, int] = {}
     stack: list[tuple[yaml.Node, bool]] = [(root, False)]
     open_nodes: set[int] = set()
@@ -235,7 +255,7 @@ def load_yaml(text: str, source: str = "YAML") -> Any:
     """
     if len(text.encode("utf-8", "surrogatepass")) > MAX_INPUT_BYTES:
         raise InputError(f"{source} is larger than {_size(MAX_INPUT_BYTES)}; refusing it")
-    loader = _BoundedLoader(text)
+    loader = _bounded_loader()(text)
     try:
         try:
             node = loader.get_single_node()
@@ -261,6 +281,8 @@ def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
     ``ros__parameters`` mapping, or a value no ROS parameter can hold is an InputError naming
     the file.
     """
+    import yaml
+
     text = read_text(path)
     try:
         data = load_yaml(text, str(path))

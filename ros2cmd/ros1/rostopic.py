@@ -19,8 +19,6 @@ from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-import yaml
-
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, print_names, until_stopped
@@ -242,6 +240,8 @@ def _echo(
 
 def _field_text(value: object) -> str:
     if isinstance(value, (dict, list)):
+        import yaml
+
         return yaml.safe_dump(value, default_flow_style=False, sort_keys=False).rstrip()
     return str(value)
 

@@ -11,11 +11,9 @@ import sys
 from collections import deque
 from typing import Any
 
-import yaml
-
 from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name, until_stopped
-from ros2cmd.messages import MessageDumper, message_to_csv, message_to_ordered
+from ros2cmd.messages import message_dumper, message_to_csv, message_to_ordered
 from ros2cmd.service.api import wait_for_types
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
@@ -119,9 +117,11 @@ def event_text(
     info_data = data.get("info")
     if isinstance(info_data, dict) and "event_type" in info_data:
         info_data["event_type"] = event_types.get(info_data["event_type"], info_data["event_type"])
+    import yaml
+
     text = yaml.dump(
         data,
-        Dumper=MessageDumper,
+        Dumper=message_dumper(),
         allow_unicode=True,
         width=sys.maxsize,
         default_flow_style=flow_style,
