@@ -24,6 +24,7 @@ from benchmarks.common import (
 )
 from benchmarks.graph import BARE, BIN, EXPECTED_NODES, EXPECTED_TOPICS, _running, _timed
 from ros2cmd import daemon
+from ros_tutorials_common.dds import apply_dds_defaults
 
 HELP_TARGET = 0.100  # s, p50: `ros2 -h`, `ros2 VERB -h`, `ros2 run -h` (issue 39)
 DAEMON_TARGET = 0.150  # s, p50: what the daemon answers
@@ -60,12 +61,14 @@ def _median_run(args: list[str], runs: int, env: dict[str, str] | None = None) -
 
 def _first_lines(commands: list[list[str]], runs: int) -> list[float]:
     """p50 of start to the first line each program prints (a node's first log line), the
-    commands taking turns so that the machine's load changes hit them alike."""
+    commands taking turns so that the machine's load changes hit them alike. Each starts with
+    the project's DDS defaults, which `ros2 run` gives the node it starts (an activated
+    environment gives them to `python -m` too)."""
     seconds: list[list[float]] = [[] for _ in commands]
     for _ in range(runs):
         for samples, args in zip(seconds, commands, strict=True):
             began = time.monotonic()
-            proc = start(args)
+            proc = start(args, env=dict(apply_dds_defaults(dict(os.environ))))
             try:
                 if not wait_for_lines(proc, lambda _line: True, timeout=60):
                     raise RuntimeError(f"{' '.join(args)} printed nothing")

@@ -5,8 +5,8 @@ in its own package or module (topic/, node.py, ...) and registers its commands h
 `ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
 entry.py. Building the parser (`build_parser()`, the whole of it, as TAB completion does)
 loads no rclpy: the verbs import it where a command runs, so help, parsing and the daemon's
-answers go without it (tests/test_cli_imports.py); `ros2 run` builds its verb's parser alone.
-A command is a function of the graph and the parsed arguments. `execute` gives all of them
+answers go without it (tests/test_cli_imports.py); `ros2 VERB ...` builds its verb's parser
+alone. A command is a function of the graph and the parsed arguments. `execute` gives all of them
 the same behaviour: a ToolError or a bad name prints one line and exits 1, Ctrl-C exits 130
 (EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with
 a rate or latched), for which it is the normal end: 0 (see graph.until_stopped).
@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib
 import signal
 import sys
 from collections.abc import Callable, Sequence
@@ -69,11 +70,29 @@ VERBS_WITH_COMMANDS = frozenset(
 LAUNCH_HELP = "Run a launch file"
 
 
-def build_parser(run_only: bool = False) -> argparse.ArgumentParser:
+# Each verb's module, whose register(verbs, common) adds its parser, in the order they are
+# registered (argparse names the choices in that order); `wtf` is doctor's alias.
+VERB_MODULES = {
+    "action": "ros2cmd.action",
+    "bag": "ros2cmd.bag.ros2",
+    "daemon": "ros2cmd.daemon",
+    "doctor": "ros2cmd.doctor",
+    "wtf": "ros2cmd.doctor",
+    "interface": "ros2cmd.interface",
+    "node": "ros2cmd.node",
+    "param": "ros2cmd.param",
+    "pkg": "ros2cmd.pkg",
+    "run": "ros2cmd.run",
+    "service": "ros2cmd.service",
+    "topic": "ros2cmd.topic",
+}
+
+
+def build_parser(verb: str | None = None) -> argparse.ArgumentParser:
     """The whole `ros2` parser, every verb and its options (cheap: no rclpy, no messages).
 
-    With run_only, the `run` verb's alone, the same to `ros2 run ...`: it replaces itself by
-    the node, and the other verbs' modules would only delay it.
+    With a verb of VERB_MODULES, that verb's parser alone: `ros2 VERB ...` parses, helps and
+    fails with it as with the whole one, without loading the other verbs' modules.
     """
     parser = argparse.ArgumentParser(
         prog="ros2",
@@ -81,31 +100,13 @@ def build_parser(run_only: bool = False) -> argparse.ArgumentParser:
         epilog="Call `ros2 <command> -h` for more detailed usage.",
     )
     verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
-    if run_only:
-        from ros2cmd import run
-
-        run.register(verbs, argparse.ArgumentParser(add_help=False))  # no graph options
-        return parser
-    common = common_options()
-
-    from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
-    from ros2cmd.bag import ros2 as bag
-
-    verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
-    for register in (
-        action.register,
-        bag.register,
-        daemon.register,
-        doctor.register,
-        interface.register,
-        node.register,
-        param.register,
-        pkg.register,
-        run.register,
-        service.register,
-        topic.register,
-    ):
-        register(verbs, common)
+    if verb is None:
+        verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
+    # `run` takes no graph options (and would load the graph's module for their defaults).
+    common = argparse.ArgumentParser(add_help=False) if verb == "run" else common_options()
+    wanted = VERB_MODULES.values() if verb is None else [VERB_MODULES[verb]]
+    for module in dict.fromkeys(wanted):
+        importlib.import_module(module).register(verbs, common)
     verbs._choices_actions.sort(key=lambda choice: choice.dest)  # ros2cli lists them a-z
     return parser
 
@@ -214,7 +215,7 @@ def _ros_ok() -> bool:
 
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
-    parser = build_parser(run_only=words[:1] == ["run"])
+    parser = build_parser(words[0] if words[:1] and words[0] in VERB_MODULES else None)
     if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
         # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.
         parser.parse_args([*words, "--help"])

@@ -1,6 +1,6 @@
 """`ros2 daemon start|stop|status`, and the daemon: one graph node that the lists ask.
 
-(About 590 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
+(About 600 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
 whose questions and answers must change together.)
 
 A list that starts its own node waits for discovery every time (graph.Graph.settle). The
@@ -40,24 +40,25 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import hashlib
-import json
 import math
 import os
-import selectors
 import signal
-import socket
 import struct
-import subprocess
 import sys
 import time
 from collections import Counter
 from types import SimpleNamespace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import VisibleNames, split_node_name
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
+
+if TYPE_CHECKING:
+    import socket
+
+# hashlib, json, socket, subprocess and selectors are imported where the asking and the serving
+# use them: building the parser (`ros2 -h`) only registers the verb.
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
 # How long the daemon waits for a process it counted to be heard from (one that has just
@@ -90,6 +91,9 @@ NO_DAEMON_VARIABLE = "ROS_TUTORIALS_NO_DAEMON"
 def socket_address() -> str:
     """The abstract socket of the daemon for this user, this environment's DDS settings and
     this installation."""
+    import hashlib
+    import json
+
     env = apply_dds_defaults(dict(os.environ))
     key = json.dumps([sys.prefix, *(env.get(name, "") for name in SETTINGS)])
     digest = hashlib.sha256(key.encode()).hexdigest()[:16]
@@ -99,6 +103,8 @@ def socket_address() -> str:
 
 def _peer_is_this_user(connection: socket.socket) -> bool:
     """Whether the process at the other end of a Unix socket runs as this user."""
+    import socket
+
     credentials = connection.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, _CREDENTIALS.size)
     _pid, uid, _gid = _CREDENTIALS.unpack(credentials)
     return uid == os.getuid()
@@ -116,6 +122,9 @@ def use_daemon(no_daemon: bool) -> bool:
 
 def _request(question: dict[str, Any], timeout: float) -> dict[str, Any] | None:
     """One question to the running daemon and its answer; None if none answers."""
+    import json
+    import socket
+
     try:
         with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
             connection.settimeout(timeout)
@@ -148,6 +157,8 @@ def spawn() -> None:
     """Start a daemon in the background, in a session of its own (a Ctrl-C in this terminal
     is not for it), with this environment and the DDS defaults. If another one wins the
     race to the socket, this one ends at once."""
+    import subprocess
+
     env = apply_dds_defaults(dict(os.environ))
     subprocess.Popen(
         [sys.executable, "-m", "ros2cmd.daemon"],
@@ -378,6 +389,8 @@ class Daemon:
         self.parameter_clients: dict[str, Any] = {}  # node -> its list_parameters client
 
     def serve(self) -> None:
+        import selectors
+
         with selectors.DefaultSelector() as selector:
             selector.register(self.listener, selectors.EVENT_READ)
             while self.graph.node.context.ok():
@@ -395,6 +408,8 @@ class Daemon:
 
     def _answer(self, connection: socket.socket) -> bool:
         """Answer one question; False if it was to stop."""
+        import json
+
         self.last_question = time.monotonic()
         connection.settimeout(2.0)
         try:
@@ -564,6 +579,8 @@ def _is_pair_of_names(value: Any) -> bool:
 
 def main() -> int:
     """The daemon's process (`python -m ros2cmd.daemon`, started by spawn())."""
+    import socket
+
     apply_dds_defaults()
     with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as listener:
         try:

@@ -32,13 +32,15 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _complete() -> None:
     """Answer a completion of the line in COMP_LINE (argcomplete's protocol), from the
-    launcher's parser after `ros2 launch`, else from ros2's."""
+    launcher's parser after `ros2 launch`, else from ros2's (past a verb, the verb's own)."""
     completion.arm()  # the budget covers building the parser too
     words = completion.line_words()  # `ros2 launch ` and more: the launcher's own words
     if words[1:2] == ["launch"] and len(words) > 2:
         from launcher.__main__ import build_parser as launch_parser
 
         completion.answer(launch_parser("ros2 launch"), skip=1)
-    from ros2cmd.cli import build_parser
+    from ros2cmd.cli import VERB_MODULES, build_parser
 
-    completion.answer(build_parser(run_only=words[1:2] == ["run"] and len(words) > 2))
+    # Past the verb, that verb's parser alone (its modules only); at the verb, every verb's.
+    verb = words[1] if len(words) > 2 and words[1] in VERB_MODULES else None
+    completion.answer(build_parser(verb))

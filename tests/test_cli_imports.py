@@ -9,6 +9,7 @@ the guard that keeps the answers fast (the timings are in benchmarks/daemon.py).
 
 from __future__ import annotations
 
+import argparse
 import os
 import subprocess
 import sys
@@ -16,7 +17,7 @@ import sys
 import pytest
 from helpers import TIMEOUT
 
-from ros2cmd import daemon
+from ros2cmd import cli, daemon
 
 # What a command's help, parsing or daemon answer must not load.
 HEAVY = ("rclpy", "numpy", "rosidl_parser", "action_msgs", "rcl_interfaces", "rmw_dds_common")
@@ -223,3 +224,23 @@ def test_interface_list_loads_no_rclpy():
     modules, result = loaded("ros2cmd.entry:main", "interface", "list")
     assert result.returncode == 0 and "    std_msgs/msg/String\n" in result.stdout
     assert modules == [], f"`ros2 interface list` loaded {modules}"
+
+
+def _subparsers(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            return dict(action.choices)
+    return {}
+
+
+@pytest.mark.parametrize("verb", sorted(cli.VERB_MODULES))
+def test_a_verbs_own_parser_is_the_whole_ones(verb):
+    """`ros2 VERB ...` builds VERB's parser alone: its help, and each sub-verb's, is the one
+    the whole parser (`ros2 -h`, TAB completion) has."""
+    whole = _subparsers(cli.build_parser())[verb]
+    own = _subparsers(cli.build_parser(verb))[verb]
+    assert own.format_help() == whole.format_help()
+    whole_commands, own_commands = _subparsers(whole), _subparsers(own)
+    assert list(own_commands) == list(whole_commands)
+    for name, command in whole_commands.items():
+        assert own_commands[name].format_help() == command.format_help(), name
