@@ -50,13 +50,44 @@ def _bytecode_kept() -> Iterator[None]:
             os.environ["PYTHONDONTWRITEBYTECODE"] = saved
 
 
-def _median_run(args: list[str], runs: int, env: dict[str, str] | None = None) -> float:
-    seconds = []
+def _interleaved(commands: list[list[str]], runs: int) -> list[list[float]]:
+    """Start to exit of each command, `runs` times, the commands taking turns (a change of
+    the machine's load hits them alike)."""
+    seconds: list[list[float]] = [[] for _ in commands]
     for _ in range(runs):
-        began = time.monotonic()
-        subprocess.run(args, capture_output=True, timeout=60, env=env)
-        seconds.append(time.monotonic() - began)
-    return p50(seconds)
+        for samples, args in zip(seconds, commands, strict=True):
+            began = time.monotonic()
+            subprocess.run(args, capture_output=True, timeout=60)
+            samples.append(time.monotonic() - began)
+    return seconds
+
+
+def _timed_rows(
+    commands: list[list[str]], runs: int, what: str, target: float | None = None
+) -> list[Row]:
+    """A row per command, beside `python -c pass` and `import rclpy` run in turn with them:
+    p50 (and the best run, what an idle machine would show), the ratio to `import rclpy`."""
+    bare, rclpy, *timed = _interleaved(
+        [python("-c", "pass"), python("-c", "import rclpy"), *commands], runs
+    )
+    base = (
+        f"{fmt_ms(p50(bare))} (best {fmt_ms(min(bare))}) `python -c pass`, "
+        f"{fmt_ms(p50(rclpy))} (best {fmt_ms(min(rclpy))}) `import rclpy`"
+    )
+    rows = []
+    for command, samples in zip(commands, timed, strict=True):
+        shown = " ".join([command[0].rsplit("/", 1)[-1], *command[1:]])
+        rows.append(
+            Row(
+                f"`{shown}`{what}, p50 (best) of {runs}",
+                f"{fmt_ms(p50(samples))} ({fmt_ms(min(samples))})",
+                base,
+                p50(samples) / p50(rclpy),
+                "" if target is None else f"<= {fmt_ms(target)}",
+                None if target is None else p50(samples) <= target,
+            )
+        )
+    return rows
 
 
 def _first_lines(commands: list[list[str]], runs: int) -> list[float]:
@@ -99,82 +130,37 @@ def startup(runs: int = 10) -> list[Row]:
 
 
 def _startup(runs: int) -> list[Row]:
-    bare = _median_run(python("-c", "pass"), runs)
-    rclpy = _median_run(python("-c", "import rclpy"), runs)
-    base = f"{fmt_ms(bare)} (`python -c pass`), {fmt_ms(rclpy)} (`import rclpy`)"
     ros2 = str(BIN / "ros2")
-    rows = []
-    for command in (
-        [ros2, "-h"],
-        [ros2, "topic", "-h"],
-        [ros2, "run", "-h"],
-        [str(BIN / "rostopic"), "-h"],
-    ):
-        took = _median_run(command, runs)
-        shown = " ".join(["ros2" if word == ros2 else word.rsplit("/", 1)[-1] for word in command])
-        rows.append(
-            Row(
-                f"`{shown}`, p50 of {runs}",
-                fmt_ms(took),
-                base,
-                took / rclpy,
-                f"<= {fmt_ms(HELP_TARGET)}",
-                took <= HELP_TARGET,
-            )
-        )
+    help_commands = [[ros2, "-h"], [ros2, "topic", "-h"], [ros2, "run", "-h"]]
+    rows = _timed_rows([*help_commands, [str(BIN / "rostopic"), "-h"]], runs, "", HELP_TARGET)
     quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
     procs = [start(python("-m", module), **quiet) for module in NODES]
     subprocess.run([ros2, "daemon", "start"], capture_output=True, timeout=60)
     try:
         _complete_answer("/action_server")
-        for command in (
-            ["node", "list"],
-            ["topic", "list"],
-            ["service", "list"],
-            ["action", "list"],
-            ["node", "info", "/topic_publisher"],
-            ["topic", "info", "/ros_tutorial_msg"],
-            ["topic", "type", "/ros_tutorial_msg"],
-            ["interface", "list"],
-        ):
-            took = _median_run([ros2, *command], runs)
-            where = "ament index" if command[0] == "interface" else "through the daemon"
-            rows.append(
-                Row(
-                    f"`ros2 {' '.join(command)}`, {where}, 3 nodes up, p50 of {runs}",
-                    fmt_ms(took),
-                    base,
-                    took / rclpy,
-                    f"<= {fmt_ms(DAEMON_TARGET)}",
-                    took <= DAEMON_TARGET,
-                )
-            )
+        answered = [
+            [ros2, "node", "list"],
+            [ros2, "topic", "list"],
+            [ros2, "service", "list"],
+            [ros2, "action", "list"],
+            [ros2, "node", "info", "/topic_publisher"],
+            [ros2, "topic", "info", "/ros_tutorial_msg"],
+            [ros2, "topic", "type", "/ros_tutorial_msg"],
+        ]
+        rows += _timed_rows(answered, runs, ", through the daemon, 3 nodes up", DAEMON_TARGET)
+        rows += _timed_rows(
+            [[ros2, "interface", "list"]], runs, " (the ament index)", DAEMON_TARGET
+        )
         declined = sum(daemon.ask_graph() is None for _ in range(runs))
         rows.append(Row(f"daemon declined, of {runs} asks (3 nodes up)", str(declined)))
     finally:
         daemon.stop_quietly()
         for proc in procs:
             stop(proc)
-    direct = _median_run([ros2, "topic", "list", "--no-daemon"], runs)
-    rows.append(
-        Row(
-            f"`ros2 topic list --no-daemon`, nothing running, p50 of {runs}",
-            fmt_ms(direct),
-            base,
-            direct / rclpy,
-        )
-    )
+    rows += _timed_rows([[ros2, "topic", "list", "--no-daemon"]], runs, ", nothing running")
     # ros2 run's own part, steady: it looks the executable up, then `true` replaces it.
-    to_exec = _median_run(
-        [ros2, "run", "--prefix", "true", "ros_tutorials_topic", "topic_publisher"], runs
-    )
-    rows.append(
-        Row(
-            f"`ros2 run --prefix true ros_tutorials_topic topic_publisher`, p50 of {runs}",
-            fmt_ms(to_exec),
-            base,
-            to_exec / rclpy,
-        )
+    rows += _timed_rows(
+        [[ros2, "run", "--prefix", "true", "ros_tutorials_topic", "topic_publisher"]], runs, ""
     )
     launchers = [
         [ros2, "run", "ros_tutorials_topic", "topic_publisher"],
@@ -185,7 +171,7 @@ def _startup(runs: int) -> list[Row]:
     )
     for command, took in zip(launchers, through, strict=True):
         added = took - module
-        shown = " ".join(["ros2" if word == ros2 else word.rsplit("/", 1)[-1] for word in command])
+        shown = " ".join([command[0].rsplit("/", 1)[-1], *command[1:]])
         rows.append(
             Row(
                 f"`{shown}`: added to the node's first output line, p50 of {runs} each",

@@ -34,7 +34,6 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from ros2cmd.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
@@ -127,38 +126,48 @@ class _UntilStopped(contextlib.AbstractContextManager):
         )
 
 
-@dataclass
+# Plain classes, not dataclasses: the dataclasses module loads inspect (about 8 ms), which
+# every `ros2` command would pay for a snapshot only the graph views take.
+
+
 class Endpoint:
     """A publisher or subscription: its node's full name ('' while unknown) and its QoS."""
 
-    node: str
-    qos: QoSProfile
+    def __init__(self, node: str, qos: QoSProfile) -> None:
+        self.node = node
+        self.qos = qos
 
 
-@dataclass
 class TopicInfo:
-    types: list[str]
-    publishers: list[Endpoint] = field(default_factory=list)
-    subscribers: list[Endpoint] = field(default_factory=list)
+    def __init__(self, types: list[str]) -> None:
+        self.types = types
+        self.publishers: list[Endpoint] = []
+        self.subscribers: list[Endpoint] = []
 
 
-@dataclass
 class ServiceInfo:
     """A service or an action: its types and the full names of its servers and clients."""
 
-    types: list[str]
-    servers: list[str] = field(default_factory=list)
-    clients: list[str] = field(default_factory=list)
+    def __init__(self, types: list[str]) -> None:
+        self.types = types
+        self.servers: list[str] = []
+        self.clients: list[str] = []
 
 
-@dataclass
 class Snapshot:
     """What the graph holds at one moment, the tools' own nodes and hidden names left out."""
 
-    nodes: list[str]
-    topics: dict[str, TopicInfo]
-    services: dict[str, ServiceInfo]
-    actions: dict[str, ServiceInfo]
+    def __init__(
+        self,
+        nodes: list[str],
+        topics: dict[str, TopicInfo],
+        services: dict[str, ServiceInfo],
+        actions: dict[str, ServiceInfo],
+    ) -> None:
+        self.nodes = nodes
+        self.topics = topics
+        self.services = services
+        self.actions = actions
 
 
 def print_names(

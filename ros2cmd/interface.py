@@ -20,7 +20,6 @@ import argparse
 import re
 import sys
 import textwrap
-from dataclasses import dataclass
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
@@ -85,14 +84,15 @@ def _comment(text: str) -> str | None:
     return textwrap.dedent(text) if text else None
 
 
-@dataclass
 class DefinitionLine:
-    """One line of an interface file, as ros2interface's `show` sees it."""
+    """One line of an interface file, as ros2interface's `show` sees it. (A plain class: the
+    dataclasses module would cost every `ros2` command about 8 ms to load, see graph.py.)"""
 
-    text: str  # as in the file, trailing white space removed
-    is_comment: bool = False  # a whole-line comment: left out without comments
-    code: str = ""  # the text without its trailing comment (when it has one)
-    nested_type: str | None = None  # 'pkg/msg/Name' of a field of a message type
+    def __init__(self, text: str, code: str = "") -> None:
+        self.text = text  # as in the file, trailing white space removed
+        self.is_comment = False  # a whole-line comment: left out without comments
+        self.code = code  # the text without its trailing comment (when it has one)
+        self.nested_type: str | None = None  # 'pkg/msg/Name' of a field of a message type
 
     @classmethod
     def parse(cls, text: str, package: str) -> DefinitionLine:
