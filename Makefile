@@ -47,8 +47,10 @@ $(PACKAGES): $(INTERFACES) $(PACKAGE_SOURCES) tools/register_packages.py
 	touch $@
 
 # `source .venv/bin/activate` sets ROS_VERSION, ROS_PYTHON_VERSION and ROS_DISTRO, as a ROS
-# install's setup.bash does (the official "Configuring environment" tutorial looks for them).
-$(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.py
+# install's setup.bash does (the official "Configuring environment" tutorial looks for them),
+# and in an interactive bash or zsh TAB completion of the commands completion.py names.
+$(ENVIRONMENT): $(INSTALLED) tools/ros_environment.py ros_tutorials_common/dds.py \
+	ros_tutorials_common/completion.py
 	$(PY) tools/ros_environment.py
 	touch $@
 

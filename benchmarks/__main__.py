@@ -3,6 +3,7 @@
 python -m benchmarks [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
     tf2
+    completion
     (default: all)
 """
 
@@ -18,6 +19,7 @@ from collections.abc import Callable
 
 from benchmarks import (
     bag,
+    completion,
     daemon,
     graph,
     launch,
@@ -48,6 +50,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
     "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
+    "completion": [completion.answer_times],
 }
 
 

@@ -13,7 +13,7 @@ from launcher.naming import valid_name
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve
-from ros_tutorials_common import ament, packages
+from ros_tutorials_common import completion, packages
 from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 from ros_tutorials_common.dds import environment_problem
@@ -42,6 +42,7 @@ def build_parser(prog: str | None = None) -> argparse.ArgumentParser:
         metavar="[PKG] FILE [name:=value ...]",
         help="a launch file (a path, or a file name in a package's launch/ folder) and arguments",
     )
+    completion.attach(parser, words=completion.launch_words)
     parser.add_argument("--screen", action="store_true", help="show every process's stdout too")
     parser.add_argument(
         "-p", "--print", action="store_true", help="print the processes it would start, and exit"
@@ -96,9 +97,7 @@ def find_launch_file(names: list[str]) -> Path:
     """FILE, or PKG FILE, as a path; a bare name is looked up in the packages' launch/ folders."""
     if len(names) == 2:
         package, name = names
-        found = packages.resolve_package(package)  # a seed's name too: my_package
-        if not found and package in ament.packages():  # a package of the learner's workspace
-            found = (package,)
+        found = packages.launch_packages(package)  # a seed's name too: my_package
         if not found:
             known = ", ".join(packages.package_dirs())
             hint = packages.not_sourced_hint(package)
@@ -200,7 +199,9 @@ def main(
 ) -> int:
     """The launcher's command line. STANDALONE (default: no ARGV given) means this process is
     the launcher (`roslaunch`, `ros2 launch`): it forks its guardian before starting."""
-    options = build_parser(program).parse_intermixed_args(argv)
+    parser = build_parser(program)
+    completion.answer(parser)  # the shell asking for TAB's completions (roslaunch): ends here
+    options = parser.parse_intermixed_args(argv)
     if standalone is None:
         standalone = argv is None
     name = program or _program_name()

@@ -12,29 +12,37 @@ import argparse
 import signal
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from action_msgs.msg import GoalStatus
-from rclpy.action import ActionClient
-from rclpy.action.graph import get_action_server_names_and_types_by_node
-
+from ros2cmd import completion
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
-from ros2cmd.messages import fill_message, message_to_yaml, parse_yaml
 from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.typenames import full_type_name, load_type
 from ros2cmd.wait import Interrupted, ServerLost, spin_until
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
 
-STATUS_NAMES = {
-    GoalStatus.STATUS_ACCEPTED: "ACCEPTED",
-    GoalStatus.STATUS_EXECUTING: "EXECUTING",
-    GoalStatus.STATUS_CANCELING: "CANCELING",
-    GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
-    GoalStatus.STATUS_CANCELED: "CANCELED",
-    GoalStatus.STATUS_ABORTED: "ABORTED",
-}
+if TYPE_CHECKING:
+    from rclpy.action import ActionClient
+
+# rclpy.action (0.15 s to load: numpy) and the message modules are imported by the commands
+# that use them, not to build the parser.
+
+
+def status_name(status: int) -> str:
+    """A goal status as ros2action prints it (action_msgs/msg/GoalStatus)."""
+    from action_msgs.msg import GoalStatus
+
+    names = {
+        GoalStatus.STATUS_ACCEPTED: "ACCEPTED",
+        GoalStatus.STATUS_EXECUTING: "EXECUTING",
+        GoalStatus.STATUS_CANCELING: "CANCELING",
+        GoalStatus.STATUS_SUCCEEDED: "SUCCEEDED",
+        GoalStatus.STATUS_CANCELED: "CANCELED",
+        GoalStatus.STATUS_ABORTED: "ABORTED",
+    }
+    return names.get(status, "UNKNOWN")
 
 
 def action_types(graph: Graph) -> dict[str, list[str]]:
@@ -49,9 +57,7 @@ def _server_types(graph: Graph, action: str) -> list[str]:
     for name, namespace in node.get_node_names_and_namespaces():
         if (name, namespace) == (node.get_name(), node.get_namespace()):
             continue
-        for server, server_types in get_action_server_names_and_types_by_node(
-            node, name, namespace
-        ):
+        for server, server_types in graph.node_actions(name, namespace)[0]:
             if server == action:
                 types.update(server_types)
     return sorted(types)
@@ -121,6 +127,8 @@ class _OtherTypes:
 def _block(title: str, msg: Any, indent: str = "    ") -> str:
     # ros2action prints `Title:\n    ` + the YAML (which ends with a newline) + print's own
     # newline: the first line indented, a blank line after.
+    from ros2cmd.messages import message_to_yaml
+
     return f"{title}:\n{indent}{message_to_yaml(msg)}\n"
 
 
@@ -132,6 +140,10 @@ def send_goal(
     Ctrl-C cancels the goal on the server (waiting a bounded time for it to confirm), then
     raises Interrupted (exit status 130). A server that goes away is a ToolError.
     """
+    from rclpy.action import ActionClient
+
+    from ros2cmd.messages import fill_message
+
     action = absolute_name(action)
     action_type = load_type(type_name, ("action",))
     goal = fill_message(action_type.Goal(), values)
@@ -197,10 +209,10 @@ def send_goal(
     finally:
         signal.signal(signal.SIGINT, previous_handler)
     answer = result.result()
-    if answer.status == GoalStatus.STATUS_SUCCEEDED:
+    status = status_name(answer.status)
+    if status == "SUCCEEDED":
         graph.finish()
     print(_block("Result", answer.result))
-    status = STATUS_NAMES.get(answer.status, "UNKNOWN")
     print(f"Goal finished with status: {status}", flush=True)
     if status != "SUCCEEDED":
         raise ToolError(f"the goal did not succeed: {status}")
@@ -231,6 +243,8 @@ def _goal_values(args: argparse.Namespace) -> Any:
             raise ToolError("standard input is not text (not UTF-8)") from None
         if len(text) > MAX_INPUT_BYTES:
             raise ToolError("standard input holds more than 1 MiB; refusing it")
+    from ros2cmd.messages import parse_yaml
+
     return parse_yaml(text)
 
 
@@ -240,6 +254,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("info", parents=[common], help="Print information about an action")
     p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    completion.attach(p, action_name=completion.action_names)
     p.add_argument(
         "-t", "--show-types", action="store_true", help="Additionally show the action type"
     )
@@ -265,6 +280,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument(
         "action_type", help="Type of the ROS action (e.g. 'turtlesim/action/RotateAbsolute')"
     )
+    completion.attach(
+        p, action_name=completion.action_names, action_type=completion.types_for_action
+    )
     given = p.add_mutually_exclusive_group()
     given.add_argument(
         "goal",
@@ -284,4 +302,5 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("type", parents=[common], help="Print a action's type")
     p.add_argument("action_name", help="Name of the ROS action to get info (e.g. '/fibonacci')")
+    completion.attach(p, action_name=completion.action_names)
     p.set_defaults(run=lambda graph, a: print_type(graph, a.action_name))

@@ -18,13 +18,14 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from types import FrameType
-from typing import Any
-
-from rclpy.action import ActionClient
-from rclpy.executors import Executor
-from rclpy.task import Future
+from typing import TYPE_CHECKING, Any
 
 from ros2cmd.wait import ServerLost, spin_until
+
+if TYPE_CHECKING:
+    from rclpy.action import ActionClient
+    from rclpy.executors import Executor
+    from rclpy.task import Future
 
 CANCEL_TIMEOUT = 5.0
 

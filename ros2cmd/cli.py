@@ -3,37 +3,42 @@
 The verbs are ros2cli's (ROS 2 Jazzy), with its sub-verbs, options and output. Each verb lives
 in its own package or module (topic/, node.py, ...) and registers its commands here;
 `ros2 launch` is the launcher's own command line (launcher/__main__.py), handed over by
-entry.py before this module loads rclpy. A command is a function of the
-graph and the parsed arguments. `execute` gives all of them the same behaviour: a ToolError or
-a bad name prints one line and exits 1, Ctrl-C exits 130 (EXIT_INTERRUPTED), except in the
-verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with a rate or latched), for which it
-is the normal end: 0 (see graph.until_stopped).
+entry.py. Building the parser (`build_parser()`, the whole of it, as TAB completion does)
+loads no rclpy: the verbs import it where a command runs, so help, parsing and the daemon's
+answers go without it (tests/test_cli_imports.py); `ros2 VERB ...` builds its verb's parser
+alone. A command is a function of the graph and the parsed arguments. `execute` gives all of them
+the same behaviour: a ToolError or a bad name prints one line and exits 1, Ctrl-C exits 130
+(EXIT_INTERRUPTED), except in the verbs that run until Ctrl-C (`echo`, `hz`, `bw`, `pub` with
+a rate or latched), for which it is the normal end: 0 (see graph.until_stopped).
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib
 import signal
 import sys
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any
 
-import rclpy
-from rclpy.exceptions import NameValidationException
-from rclpy.executors import ExternalShutdownException
-
-from ros2cmd import action, daemon, doctor, interface, node, param, pkg, run, service, topic
-from ros2cmd.bag import ros2 as bag
-from ros2cmd.errors import ToolError
-from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph
+from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
 from ros_tutorials_common.dds import environment_problem
 
+if TYPE_CHECKING:
+    from ros2cmd.graph import Graph
+
+# The graph and the daemon's client are imported where a command needs them: `ros2 run`
+# (offline, and replaced by the node at once) loads neither.
+
 
 def common_options() -> argparse.ArgumentParser:
     """Options every graph command takes (added to each command so they go after it)."""
+    from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME
+
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--timeout",
@@ -65,30 +70,43 @@ VERBS_WITH_COMMANDS = frozenset(
 LAUNCH_HELP = "Run a launch file"
 
 
-def build_parser() -> argparse.ArgumentParser:
+# Each verb's module, whose register(verbs, common) adds its parser, in the order they are
+# registered (argparse names the choices in that order); `wtf` is doctor's alias.
+VERB_MODULES = {
+    "action": "ros2cmd.action",
+    "bag": "ros2cmd.bag.ros2",
+    "daemon": "ros2cmd.daemon",
+    "doctor": "ros2cmd.doctor",
+    "wtf": "ros2cmd.doctor",
+    "interface": "ros2cmd.interface",
+    "node": "ros2cmd.node",
+    "param": "ros2cmd.param",
+    "pkg": "ros2cmd.pkg",
+    "run": "ros2cmd.run",
+    "service": "ros2cmd.service",
+    "topic": "ros2cmd.topic",
+}
+
+
+def build_parser(verb: str | None = None) -> argparse.ArgumentParser:
+    """The whole `ros2` parser, every verb and its options (cheap: no rclpy, no messages).
+
+    With a verb of VERB_MODULES, that verb's parser alone: `ros2 VERB ...` parses, helps and
+    fails with it as with the whole one, without loading the other verbs' modules.
+    """
     parser = argparse.ArgumentParser(
         prog="ros2",
         description="ros2 is an extensible command-line tool for ROS 2.",
         epilog="Call `ros2 <command> -h` for more detailed usage.",
     )
     verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
-    common = common_options()
-
-    verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
-    for register in (
-        action.register,
-        bag.register,
-        daemon.register,
-        doctor.register,
-        interface.register,
-        node.register,
-        param.register,
-        pkg.register,
-        run.register,
-        service.register,
-        topic.register,
-    ):
-        register(verbs, common)
+    if verb is None:
+        verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
+    # `run` takes no graph options (and would load the graph's module for their defaults).
+    common = argparse.ArgumentParser(add_help=False) if verb == "run" else common_options()
+    wanted = VERB_MODULES.values() if verb is None else [VERB_MODULES[verb]]
+    for module in dict.fromkeys(wanted):
+        importlib.import_module(module).register(verbs, common)
     verbs._choices_actions.sort(key=lambda choice: choice.dest)  # ros2cli lists them a-z
     return parser
 
@@ -96,14 +114,17 @@ def build_parser() -> argparse.ArgumentParser:
 def execute(
     command: Callable[[Graph | None], None],
     offline: bool = False,
-    timeout: float = DEFAULT_TIMEOUT,
+    timeout: float | None = None,
     spin_time: float | None = None,
-    use_daemon: bool = False,
+    use_daemon: bool | dict[str, Any] = False,
 ) -> int:
     """Run one command with a graph node (unless offline); map failures to exit codes.
 
-    With use_daemon (the lists), the daemon's complete answer stands in for the node where
-    one runs and can give it (daemon.py); otherwise the command discovers for itself.
+    timeout: what the command waits for what it names (None: graph.DEFAULT_TIMEOUT).
+
+    With use_daemon (the lists; a dict: what else to ask, daemon.ask_graph), the daemon's
+    complete answer stands in for the node where one runs and can give it (daemon.py), and
+    holds what the command names; otherwise the command discovers for itself.
 
     Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
     DDS still take about 0.3 s to shut down, and a Ctrl-C then would kill the process by
@@ -118,9 +139,9 @@ def execute(
 def _execute(
     command: Callable[[Graph | None], None],
     offline: bool,
-    timeout: float,
+    timeout: float | None,
     spin_time: float | None,
-    use_daemon: bool = False,
+    use_daemon: bool | dict[str, Any] = False,
 ) -> int:
     graph = None
     status = None  # the exit status, once decided
@@ -128,30 +149,46 @@ def _execute(
         problem = None if offline else environment_problem()
         if problem:  # rcl would fail with a traceback, or Fast DDS with its own lines
             raise ToolError(problem)
+        answered = False
         if use_daemon and spin_time is None:
-            graph = daemon.ask_graph()
-        if not offline and graph is None:
-            graph = Graph(timeout, spin_time)
-        command(graph)
+            from ros2cmd import daemon
+
+            graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
+            if graph is not None:
+                try:
+                    command(graph)
+                    answered = True
+                except daemon.NotInAnswer:  # before printing: the command waits for it itself
+                    graph = None
+        if not answered:
+            if not offline:
+                from ros2cmd.graph import DEFAULT_TIMEOUT, Graph
+
+                graph = Graph(DEFAULT_TIMEOUT if timeout is None else timeout, spin_time)
+            command(graph)
         status = 0
     except ToolError as error:
         print(f"{error.prefix}{error}", file=sys.stderr)
         status = 1
-    except NameValidationException as error:
+    except rclpy_error("rclpy.exceptions", "NameValidationException") as error:
         print(f"error: {str(error).splitlines()[0]}", file=sys.stderr)
         status = 1
-    except (KeyboardInterrupt, ExternalShutdownException, Interrupted):
+    except (
+        KeyboardInterrupt,
+        Interrupted,
+        *rclpy_error("rclpy.executors", "ExternalShutdownException"),
+    ):
         status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
     except BrokenPipeError:
         # `ros2 topic echo /t | head`: the reader left; leave quietly too.
         stdout_closed()
         status = 0
     except Exception as error:
-        if ctrl_c.interrupted(error) and rclpy.ok():
+        if ctrl_c.interrupted(error) and _ros_ok():
             # An error a Ctrl-C caused on its way up (the KeyboardInterrupt in its context:
             # rclpy code cleaning up after it raised anew): the Ctrl-C it is.
             status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
-        elif rclpy.ok():
+        elif _ros_ok():
             raise
         else:
             # SIGTERM: rclpy's handler shut ROS down while the command was creating its node,
@@ -170,9 +207,15 @@ def _execute(
     return status
 
 
+def _ros_ok() -> bool:
+    """rclpy.ok(): False where rclpy was never loaded (nothing initialised it)."""
+    rclpy = sys.modules.get("rclpy")
+    return rclpy is not None and rclpy.ok()
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
-    parser = build_parser()
+    parser = build_parser(words[0] if words[:1] and words[0] in VERB_MODULES else None)
     if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
         # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.
         parser.parse_args([*words, "--help"])
@@ -184,14 +227,22 @@ def run_parsed(args: argparse.Namespace) -> int:
     return execute(
         lambda graph: args.run(graph, args),
         offline=getattr(args, "offline", False),
-        timeout=getattr(args, "timeout", DEFAULT_TIMEOUT),
+        timeout=getattr(args, "timeout", None),
         spin_time=getattr(args, "spin_time", None),
-        use_daemon=_wants_daemon(args) and daemon.use_daemon(getattr(args, "no_daemon", False)),
+        use_daemon=_wants_daemon(args),
     )
 
 
-def _wants_daemon(args: argparse.Namespace) -> bool:
-    """Whether the command is a list the daemon can answer (its parser says, perhaps by
-    looking at the options: `topic list -v` counts endpoints, which only a node can)."""
+def _wants_daemon(args: argparse.Namespace) -> bool | dict[str, Any]:
+    """Whether the daemon can answer the command (its parser says, perhaps by looking at the
+    options: `topic list -v` counts endpoints, which only a node can), and what else to ask
+    it (a dict: `node info` asks for the node's endpoints, daemon.ask_graph)."""
     wants = getattr(args, "daemon", False)
-    return bool(wants(args) if callable(wants) else wants)
+    wants = wants(args) if callable(wants) else wants
+    if not wants:
+        return False
+    from ros2cmd import daemon
+
+    if not daemon.use_daemon(getattr(args, "no_daemon", False)):
+        return False
+    return wants if isinstance(wants, dict) else True

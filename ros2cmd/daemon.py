@@ -1,12 +1,19 @@
 """`ros2 daemon start|stop|status`, and the daemon: one graph node that the lists ask.
 
+(About 600 lines, one subject: the daemon's client side, `ros2 daemon`, and the daemon itself,
+whose questions and answers must change together.)
+
 A list that starts its own node waits for discovery every time (graph.Graph.settle). The
 daemon, like ros2cli's, is a background process that holds one hidden node
 (``_ros2cli_daemon_...``), which stays up to date, and answers `node list`, `topic list`,
-`service list`, `action list` and `topic|service find` over a Unix socket (only this user's
-processes are answered, see below). A list starts it when none runs (and answers itself that
-time); ``--no-daemon`` bypasses it; it ends after IDLE_TIMEOUT without a question (ros2cli's
-2 hours).
+`service list`, `action list`, `topic|service find`, `node info`, `topic info` (not -v) and
+`topic|service type` over a Unix socket (only this user's processes are answered, see below):
+the names, and for `node info` the node's endpoints and for `topic info` the topic's, as
+ros2cli's daemon serves the graph API. A command that names a node or topic the complete
+graph does not hold discovers for itself, so that it waits for it as it does without a daemon
+(NotInAnswer). The client side loads no rclpy: a question and a JSON answer. A list starts the
+daemon when none runs (and answers itself that time); ``--no-daemon`` bypasses it; it ends
+after IDLE_TIMEOUT without a question (ros2cli's 2 hours).
 
 ros2cli's daemon answers from whatever its graph holds, so it can miss a node that has just
 started or list one that is gone (ros2cli#672). This one answers only once its graph is
@@ -24,28 +31,34 @@ file that can be removed while the daemon lives on, a name that goes when the da
 does, and one that only one process can bind, so that binding it is the lock that lets only one
 daemon serve. An abstract socket has no file permissions: each side checks the other's user
 (SO_PEERCRED), so the daemon answers only its own user and a list asks only its user's daemon.
+
+TAB completion (ros2cmd/completion.py) asks it too: for the names its graph holds now, complete
+or not (``ask_names``), and for a node's parameter names (``ask_parameters``).
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
-import hashlib
-import json
+import math
 import os
-import selectors
 import signal
-import socket
 import struct
-import subprocess
 import sys
 import time
 from collections import Counter
-from typing import Any
+from types import SimpleNamespace
+from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError
-from ros2cmd.graph import VisibleNames
+from ros2cmd.graph import VisibleNames, split_node_name
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
+
+if TYPE_CHECKING:
+    import socket
+
+# hashlib, json, socket, subprocess and selectors are imported where the asking and the serving
+# use them: building the parser (`ros2 -h`) only registers the verb.
 
 IDLE_TIMEOUT = 2 * 60 * 60.0  # s without a question before the daemon ends (as ros2cli's)
 # How long the daemon waits for a process it counted to be heard from (one that has just
@@ -54,6 +67,10 @@ ANSWER_WAIT = 2.0
 ANSWER_POLL = 0.02
 ASK_TIMEOUT = ANSWER_WAIT + 3.0  # what a list waits for the daemon's answer, at most
 START_TIMEOUT = 10.0  # `ros2 daemon start|stop` (ros2cli: 10 s)
+# A node's parameter names (TAB completion): the longest the daemon waits for the node's
+# answer, and how many nodes' clients it keeps.
+PARAMETERS_WAIT = 0.5
+MAX_PARAMETER_CLIENTS = 32
 MAX_MESSAGE = 16 * 1024 * 1024
 # The environment that decides which graph a node sees (and which code answers).
 SETTINGS = (
@@ -74,6 +91,9 @@ NO_DAEMON_VARIABLE = "ROS_TUTORIALS_NO_DAEMON"
 def socket_address() -> str:
     """The abstract socket of the daemon for this user, this environment's DDS settings and
     this installation."""
+    import hashlib
+    import json
+
     env = apply_dds_defaults(dict(os.environ))
     key = json.dumps([sys.prefix, *(env.get(name, "") for name in SETTINGS)])
     digest = hashlib.sha256(key.encode()).hexdigest()[:16]
@@ -83,6 +103,8 @@ def socket_address() -> str:
 
 def _peer_is_this_user(connection: socket.socket) -> bool:
     """Whether the process at the other end of a Unix socket runs as this user."""
+    import socket
+
     credentials = connection.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, _CREDENTIALS.size)
     _pid, uid, _gid = _CREDENTIALS.unpack(credentials)
     return uid == os.getuid()
@@ -100,6 +122,9 @@ def use_daemon(no_daemon: bool) -> bool:
 
 def _request(question: dict[str, Any], timeout: float) -> dict[str, Any] | None:
     """One question to the running daemon and its answer; None if none answers."""
+    import json
+    import socket
+
     try:
         with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
             connection.settimeout(timeout)
@@ -132,6 +157,8 @@ def spawn() -> None:
     """Start a daemon in the background, in a session of its own (a Ctrl-C in this terminal
     is not for it), with this environment and the DDS defaults. If another one wins the
     race to the socket, this one ends at once."""
+    import subprocess
+
     env = apply_dds_defaults(dict(os.environ))
     subprocess.Popen(
         [sys.executable, "-m", "ros2cmd.daemon"],
@@ -145,11 +172,50 @@ def spawn() -> None:
     )
 
 
+class NotInAnswer(Exception):
+    """What the command names is not in the daemon's answer: it discovers for itself."""
+
+
+def _names_and_types(entries: Any) -> list[tuple[str, list[str]]]:
+    return [(name, list(types)) for name, types in entries]
+
+
 class _Names:
-    """The daemon's names, with the methods of an rclpy node that the lists call."""
+    """The daemon's names, with the methods of an rclpy node that the commands call."""
 
     def __init__(self, answer: dict[str, Any]) -> None:
         self._answer = answer
+
+    def _node_info(self, name: str, namespace: str, kind: str) -> list[tuple[str, list[str]]]:
+        info = self._answer.get("node_info") or {}
+        if info.get("node") != [name, namespace]:
+            raise NotInAnswer(f"node {namespace}/{name}")
+        return _names_and_types(info[kind])
+
+    def get_subscriber_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "subscribers")
+
+    def get_publisher_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "publishers")
+
+    def get_service_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "service_servers")
+
+    def get_client_names_and_types_by_node(self, name: str, namespace: str) -> list:
+        return self._node_info(name, namespace, "service_clients")
+
+    def _endpoints(self, topic: str, kind: str) -> list[SimpleNamespace]:
+        info = self._answer.get("topic_info") or {}
+        if info.get("topic") != topic:
+            raise NotInAnswer(f"topic {topic}")
+        return [SimpleNamespace(**endpoint) for endpoint in info[kind]]
+
+    def get_publishers_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        """Each publisher's node_name, node_namespace and topic_type (what `topic info` counts)."""
+        return self._endpoints(topic, "publishers")
+
+    def get_subscriptions_info_by_topic(self, topic: str) -> list[SimpleNamespace]:
+        return self._endpoints(topic, "subscriptions")
 
     def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
         return [(name, namespace) for name, namespace in self._answer["nodes"]]
@@ -180,14 +246,53 @@ class DaemonAnswer(VisibleNames):
     def action_types(self) -> dict[str, list[str]]:
         return {name: list(types) for name, types in self._answer["actions"]}
 
+    def node_actions(self, name: str, namespace: str) -> tuple[list, list]:
+        return (
+            self.node._node_info(name, namespace, "action_servers"),
+            self.node._node_info(name, namespace, "action_clients"),
+        )
+
+    def wait_for(self, condition: Any, what: str, timeout: float | None = None) -> Any:
+        """condition()'s answer now: the graph is complete, so something it lacks is not
+        there yet, and only a command's own node can wait for it (NotInAnswer)."""
+        result = condition()
+        if not result:
+            raise NotInAnswer(what)
+        return result
+
     def close(self) -> None:
         pass
 
 
-def ask_graph() -> DaemonAnswer | None:
+def ask_names(timeout: float) -> dict[str, Any] | None:
+    """What the running daemon's graph holds now, complete or not (TAB completion's names:
+    ros2cmd/completion.py); None if none answers within TIMEOUT. Starts no daemon."""
+    answer = _request({"ask": "names"}, timeout=timeout)
+    return answer if answer is not None and "topics" in answer else None
+
+
+def ask_parameters(node: str, timeout: float) -> list[str]:
+    """A node's parameter names, asked through the running daemon (TAB completion); [] if no
+    daemon answers, or the node does not within TIMEOUT. Starts no daemon."""
+    question = {"ask": "parameters", "node": node, "timeout": timeout * 0.8}
+    answer = _request(question, timeout=timeout) or {}
+    names = answer.get("parameters")
+    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+
+
+def about_node(full_name: str) -> dict[str, Any]:
+    """What ask_graph asks about a node (`node info NAME`)."""
+    namespace, name = split_node_name(full_name)
+    return {"node": [name, namespace]}
+
+
+def ask_graph(about: dict[str, Any] | None = None) -> DaemonAnswer | None:
     """The daemon's complete answer; None (the list discovers for itself) if no daemon runs,
-    in which case one is started for the next list, or if it could not vouch for one."""
-    answer = _request({"ask": "graph"}, timeout=ASK_TIMEOUT)
+    in which case one is started for the next list, or if it could not vouch for one.
+
+    ``about`` asks for more: {"node": [name, namespace]} that node's endpoints (`node info`),
+    {"topic": name} the topic's publishers and subscriptions (`topic info`)."""
+    answer = _request({"ask": "graph", **(about or {})}, timeout=ASK_TIMEOUT)
     if answer is None:
         with contextlib.suppress(OSError):
             spawn()
@@ -281,8 +386,11 @@ class Daemon:
         self.graph = Graph()
         self.domain_id = self.graph.node.context.get_domain_id()
         self.last_question = time.monotonic()
+        self.parameter_clients: dict[str, Any] = {}  # node -> its list_parameters client
 
     def serve(self) -> None:
+        import selectors
+
         with selectors.DefaultSelector() as selector:
             selector.register(self.listener, selectors.EVENT_READ)
             while self.graph.node.context.ok():
@@ -300,6 +408,8 @@ class Daemon:
 
     def _answer(self, connection: socket.socket) -> bool:
         """Answer one question; False if it was to stop."""
+        import json
+
         self.last_question = time.monotonic()
         connection.settimeout(2.0)
         try:
@@ -309,7 +419,8 @@ class Daemon:
                 if not chunk:
                     break
                 data += chunk
-            question = json.loads(data).get("ask")
+            asked = json.loads(data)
+            question = asked.get("ask")
         except (OSError, ValueError, AttributeError):
             return True
         keep_going = question != "stop"
@@ -318,15 +429,20 @@ class Daemon:
         elif question == "stop":
             answer = {"stopping": True}
         elif question == "graph":
-            answer = self.graph_answer()
+            answer = self.graph_answer(asked)
+        elif question == "names":
+            answer = self.names_answer()
+        elif question == "parameters":
+            answer = self.parameters_answer(asked.get("node"), asked.get("timeout"))
         else:
             answer = {"error": f"unknown question {question!r}"}
         with contextlib.suppress(OSError):
             connection.sendall(json.dumps(answer).encode())
         return keep_going
 
-    def graph_answer(self) -> dict[str, Any]:
-        """The lists' names, once the graph is complete; or why it is not."""
+    def graph_answer(self, asked: dict[str, Any] | None = None) -> dict[str, Any]:
+        """The lists' names, once the graph is complete; or why it is not. With a node or a
+        topic asked about (ask_graph), its endpoints too, if the graph holds it."""
         deadline = time.monotonic() + ANSWER_WAIT
         while True:
             verdict = self.complete()
@@ -336,13 +452,96 @@ class Daemon:
             if final or time.monotonic() > deadline:
                 return {"complete": False, "why": why}
             time.sleep(ANSWER_POLL)
-        node = self.graph.node  # every name, hidden ones too: the client filters as asked
+        answer = {"complete": True, **self.names_answer()}
+        asked = asked or {}
+        about_node, about_topic = asked.get("node"), asked.get("topic")
+        if _is_pair_of_names(about_node) and tuple(about_node) in answer["nodes"]:
+            with contextlib.suppress(RuntimeError, ValueError):  # it has just gone
+                answer["node_info"] = self.node_info(*about_node)
+        if isinstance(about_topic, str) and about_topic in dict(answer["topics"]):
+            with contextlib.suppress(RuntimeError, ValueError):
+                answer["topic_info"] = self.topic_info(about_topic)
+        return answer
+
+    def names_answer(self) -> dict[str, Any]:
+        """Every name the graph holds now, hidden ones too (the client filters as asked)."""
+        node = self.graph.node
         return {
-            "complete": True,
             "nodes": node.get_node_names_and_namespaces(),
             "topics": node.get_topic_names_and_types(),
             "services": node.get_service_names_and_types(),
             "actions": sorted(self.graph.action_types().items()),
+        }
+
+    def parameters_answer(self, node: Any, timeout: Any) -> dict[str, Any]:
+        """A node's parameter names, if it answers within TIMEOUT (at most PARAMETERS_WAIT):
+        TAB completion's `ros2 param get NODE <TAB>`. Its client stays for the next question
+        (a new one must first be matched with the node's service, which takes longer)."""
+        from rcl_interfaces.srv import ListParameters
+
+        if not isinstance(node, str) or not isinstance(timeout, (int, float)):
+            return {"error": "parameters: a node name and a timeout"}
+        timeout = min(max(float(timeout), 0.0), PARAMETERS_WAIT) if math.isfinite(timeout) else 0.0
+        node = "/" + node.strip("/")
+        present = set(self.graph.node_names())
+        for gone in [name for name in self.parameter_clients if name not in present]:
+            self.graph.node.destroy_client(self.parameter_clients.pop(gone))
+        if node not in present:
+            return {"parameters": []}
+        client = self.parameter_clients.get(node)
+        if client is None:
+            if len(self.parameter_clients) >= MAX_PARAMETER_CLIENTS:
+                oldest = next(iter(self.parameter_clients))
+                self.graph.node.destroy_client(self.parameter_clients.pop(oldest))
+            client = self.graph.node.create_client(ListParameters, f"{node}/list_parameters")
+            self.parameter_clients[node] = client
+        calls: list[Any] = []
+
+        def answered() -> bool:
+            if not calls and client.service_is_ready():
+                calls.append(client.call_async(ListParameters.Request()))
+            return bool(calls) and calls[0].done()
+
+        with contextlib.suppress(ToolError):
+            self.graph.wait_for(answered, "", timeout)
+        if not calls or not calls[0].done() or calls[0].result() is None:
+            if calls:
+                client.remove_pending_request(calls[0])
+            return {"parameters": []}
+        return {"parameters": sorted(calls[0].result().result.names)}
+
+    def node_info(self, name: str, namespace: str) -> dict[str, Any]:
+        """What `node info` prints of a node: its endpoints by kind, (name, types) each."""
+        node = self.graph.node
+        action_servers, action_clients = self.graph.node_actions(name, namespace)
+        return {
+            "node": [name, namespace],
+            "subscribers": node.get_subscriber_names_and_types_by_node(name, namespace),
+            "publishers": node.get_publisher_names_and_types_by_node(name, namespace),
+            "service_servers": node.get_service_names_and_types_by_node(name, namespace),
+            "service_clients": node.get_client_names_and_types_by_node(name, namespace),
+            "action_servers": action_servers,
+            "action_clients": action_clients,
+        }
+
+    def topic_info(self, topic: str) -> dict[str, Any]:
+        """What `topic info` counts of a topic: its publishers and subscriptions."""
+        node = self.graph.node
+
+        def endpoints(found: list) -> list[dict[str, str]]:
+            return [
+                {
+                    "node_name": endpoint.node_name,
+                    "node_namespace": endpoint.node_namespace,
+                    "topic_type": endpoint.topic_type,
+                }
+                for endpoint in found
+            ]
+
+        return {
+            "topic": topic,
+            "publishers": endpoints(node.get_publishers_info_by_topic(topic)),
+            "subscriptions": endpoints(node.get_subscriptions_info_by_topic(topic)),
         }
 
     def complete(self) -> tuple[bool, str] | None:
@@ -374,8 +573,14 @@ class Daemon:
         self.graph.close()
 
 
+def _is_pair_of_names(value: Any) -> bool:
+    return isinstance(value, list) and len(value) == 2 and all(isinstance(v, str) for v in value)
+
+
 def main() -> int:
     """The daemon's process (`python -m ros2cmd.daemon`, started by spawn())."""
+    import socket
+
     apply_dds_defaults()
     with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as listener:
         try:

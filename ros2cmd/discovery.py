@@ -20,13 +20,12 @@ from __future__ import annotations
 
 import ctypes
 import os
-import xml.etree.ElementTree as ET
 from contextlib import suppress
+from typing import TYPE_CHECKING
 
-import rclpy
-from rclpy.node import Node
-from rclpy.serialization import deserialize_message
-from rmw_dds_common.msg import ParticipantEntitiesInfo
+if TYPE_CHECKING:  # loaded by DiscoveryInfo, which only a graph node uses
+    from rclpy.node import Node
+    from rmw_dds_common.msg import ParticipantEntitiesInfo
 
 DISCOVERY_TOPIC = "ros_discovery_info"
 FASTDDS_DEFAULT_ANNOUNCEMENT = 3.0  # s, Fast DDS's leaseAnnouncement when no profile sets it
@@ -41,6 +40,8 @@ def announcement_period() -> float:
     path = os.environ.get("FASTRTPS_DEFAULT_PROFILES_FILE")
     if not path:
         return FASTDDS_DEFAULT_ANNOUNCEMENT
+    import xml.etree.ElementTree as ET  # only a list's settle reads the profile
+
     try:
         root = ET.parse(path).getroot()
     except (OSError, ET.ParseError):
@@ -118,6 +119,9 @@ class DiscoveryInfo:
         return self._subscription is not None
 
     def _open(self) -> None:
+        import rclpy
+        from rmw_dds_common.msg import ParticipantEntitiesInfo
+
         self._rmw = ctypes.CDLL(f"lib{rclpy.get_rmw_implementation_identifier()}.so")
         rcl = ctypes.CDLL("librcl.so")
         rcutils = ctypes.CDLL("librcutils.so")
@@ -182,6 +186,9 @@ class DiscoveryInfo:
 
     def take(self) -> bool:
         """Take every sample that has arrived; True if any did."""
+        from rclpy.serialization import deserialize_message
+        from rmw_dds_common.msg import ParticipantEntitiesInfo
+
         if self._subscription is None:
             return False
         changed = False

@@ -34,22 +34,10 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
-from typing import Any, TypeVar
-
-import rclpy
-from rclpy.action.graph import (
-    get_action_client_names_and_types_by_node,
-    get_action_names_and_types,
-    get_action_server_names_and_types_by_node,
-)
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
-from rclpy.node import Node
-from rclpy.qos import QoSProfile
-from rclpy.signals import SignalHandlerOptions, uninstall_signal_handlers
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from ros2cmd.discovery import DISCOVERY_TOPIC, DiscoveryInfo, announcement_period, participant_of
-from ros2cmd.errors import ToolError
+from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.local_participants import (
     heard_from_all,
     local_participants,
@@ -58,7 +46,12 @@ from ros2cmd.local_participants import (
 )
 from ros2cmd.wait import spin_until
 from ros_tutorials_common import bounded, ctrl_c
-from ros_tutorials_common.ros import init
+
+if TYPE_CHECKING:
+    from rclpy.qos import QoSProfile
+
+# rclpy (about 0.1 s to load, 0.25 s with rclpy.action) is imported where a command uses it, so
+# that help, parsing and the daemon's answers go without it (tests/test_cli_imports.py).
 
 # Set (to a number of seconds), how long a command waits by default for the thing it names to
 # appear, instead of 5 s: the tests' setting (tests/conftest.py), on a loaded 2-core machine
@@ -127,43 +120,54 @@ class _UntilStopped(contextlib.AbstractContextManager):
     def __exit__(self, kind: type | None, error: BaseException | None, tb: object) -> bool:
         if error is None:
             return False
-        return isinstance(error, (KeyboardInterrupt, ExternalShutdownException)) or (
+        stopped = (KeyboardInterrupt, *rclpy_error("rclpy.executors", "ExternalShutdownException"))
+        return isinstance(error, stopped) or (
             isinstance(error, Exception) and ctrl_c.interrupted(error)
         )
 
 
-@dataclass
+# Plain classes, not dataclasses: the dataclasses module loads inspect (about 8 ms), which
+# every `ros2` command would pay for a snapshot only the graph views take.
+
+
 class Endpoint:
     """A publisher or subscription: its node's full name ('' while unknown) and its QoS."""
 
-    node: str
-    qos: QoSProfile
+    def __init__(self, node: str, qos: QoSProfile) -> None:
+        self.node = node
+        self.qos = qos
 
 
-@dataclass
 class TopicInfo:
-    types: list[str]
-    publishers: list[Endpoint] = field(default_factory=list)
-    subscribers: list[Endpoint] = field(default_factory=list)
+    def __init__(self, types: list[str]) -> None:
+        self.types = types
+        self.publishers: list[Endpoint] = []
+        self.subscribers: list[Endpoint] = []
 
 
-@dataclass
 class ServiceInfo:
     """A service or an action: its types and the full names of its servers and clients."""
 
-    types: list[str]
-    servers: list[str] = field(default_factory=list)
-    clients: list[str] = field(default_factory=list)
+    def __init__(self, types: list[str]) -> None:
+        self.types = types
+        self.servers: list[str] = []
+        self.clients: list[str] = []
 
 
-@dataclass
 class Snapshot:
     """What the graph holds at one moment, the tools' own nodes and hidden names left out."""
 
-    nodes: list[str]
-    topics: dict[str, TopicInfo]
-    services: dict[str, ServiceInfo]
-    actions: dict[str, ServiceInfo]
+    def __init__(
+        self,
+        nodes: list[str],
+        topics: dict[str, TopicInfo],
+        services: dict[str, ServiceInfo],
+        actions: dict[str, ServiceInfo],
+    ) -> None:
+        self.nodes = nodes
+        self.topics = topics
+        self.services = services
+        self.actions = actions
 
 
 def print_names(
@@ -210,6 +214,32 @@ class VisibleNames:
     def service_types(self) -> dict[str, list[str]]:
         return {n: t for n, t in self.node.get_service_names_and_types() if not is_hidden(n)}
 
+    def wait_for(self, condition: Callable[[], T], what: str, timeout: float | None = None) -> T:
+        """condition()'s first truthy answer (Graph spins for it; the daemon's answer has it
+        now or never); ``what`` says what did not come."""
+        raise NotImplementedError
+
+    def wait_for_topic_type(self, topic: str) -> str:
+        types = self.wait_for(
+            lambda: self.topic_types().get(topic),
+            f"unknown topic '{topic}': no publisher or subscriber seen",
+        )
+        return types[0]
+
+    def wait_for_service_type(self, service: str) -> str:
+        types = self.wait_for(
+            lambda: self.service_types().get(service),
+            f"unknown service '{service}': no server seen",
+        )
+        return types[0]
+
+    def wait_for_node(self, full_name: str) -> str:
+        full_name = "/" + full_name.strip("/")
+        return self.wait_for(
+            lambda: full_name if full_name in self.node_names() else None,
+            f"unknown node '{full_name}': not seen in the graph",
+        )
+
 
 class Graph(VisibleNames):
     """One hidden node in a fresh rclpy context, and helpers that wait on the graph."""
@@ -223,6 +253,12 @@ class Graph(VisibleNames):
         self.incomplete: list[str] = []  # what the last settle() still missed
         # The node is in the graph (a user may be waiting for it to press Ctrl-C) before
         # the executor exists: an executor cut half-way by Ctrl-C complains when collected.
+        from rclpy.executors import SingleThreadedExecutor
+        from rclpy.node import Node
+        from rclpy.signals import SignalHandlerOptions
+
+        from ros_tutorials_common.ros import init
+
         try:
             with ctrl_c_deferred():
                 init(["ros2cmd"], signal_handler_options=SignalHandlerOptions.SIGTERM)
@@ -248,6 +284,9 @@ class Graph(VisibleNames):
 
         Closing is short, and one interrupted half-way would leave rclpy to complain at exit.
         """
+        import rclpy
+        from rclpy.signals import uninstall_signal_handlers
+
         with ctrl_c_deferred():
             if not self.node.context.ok():
                 # Shut down by SIGTERM: rclpy's signal thread may still be inside rcl_shutdown
@@ -472,44 +511,30 @@ class Graph(VisibleNames):
         """A node's services and actions: ('services'|'actions', 'servers'|'clients', names)."""
         node = self.node
         namespace, name = split_node_name(full_name)
+        action_servers, action_clients = self.node_actions(name, namespace)
         return [
             ("services", "servers", node.get_service_names_and_types_by_node(name, namespace)),
             ("services", "clients", node.get_client_names_and_types_by_node(name, namespace)),
-            (
-                "actions",
-                "servers",
-                get_action_server_names_and_types_by_node(node, name, namespace),
-            ),
-            (
-                "actions",
-                "clients",
-                get_action_client_names_and_types_by_node(node, name, namespace),
-            ),
+            ("actions", "servers", action_servers),
+            ("actions", "clients", action_clients),
         ]
 
+    def node_actions(self, name: str, namespace: str) -> tuple[list, list]:
+        """The action servers and the action clients of a node: (name, types) each."""
+        from rclpy.action.graph import (
+            get_action_client_names_and_types_by_node,
+            get_action_server_names_and_types_by_node,
+        )
+
+        return (
+            get_action_server_names_and_types_by_node(self.node, name, namespace),
+            get_action_client_names_and_types_by_node(self.node, name, namespace),
+        )
+
     def action_types(self) -> dict[str, list[str]]:
+        from rclpy.action.graph import get_action_names_and_types
+
         return dict(get_action_names_and_types(self.node))
-
-    def wait_for_topic_type(self, topic: str) -> str:
-        types = self.wait_for(
-            lambda: self.topic_types().get(topic),
-            f"unknown topic '{topic}': no publisher or subscriber seen",
-        )
-        return types[0]
-
-    def wait_for_service_type(self, service: str) -> str:
-        types = self.wait_for(
-            lambda: self.service_types().get(service),
-            f"unknown service '{service}': no server seen",
-        )
-        return types[0]
-
-    def wait_for_node(self, full_name: str) -> str:
-        full_name = "/" + full_name.strip("/")
-        return self.wait_for(
-            lambda: full_name if full_name in self.node_names() else None,
-            f"unknown node '{full_name}': not seen in the graph",
-        )
 
     def call(self, client, request, what: str):
         """Wait for the server, call it, and wait for the response; all within the timeout."""

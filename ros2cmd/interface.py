@@ -20,10 +20,8 @@ import argparse
 import re
 import sys
 import textwrap
-from dataclasses import dataclass
 
-import yaml
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import (
     KIND_NAMES,
@@ -86,14 +84,15 @@ def _comment(text: str) -> str | None:
     return textwrap.dedent(text) if text else None
 
 
-@dataclass
 class DefinitionLine:
-    """One line of an interface file, as ros2interface's `show` sees it."""
+    """One line of an interface file, as ros2interface's `show` sees it. (A plain class: the
+    dataclasses module would cost every `ros2` command about 8 ms to load, see graph.py.)"""
 
-    text: str  # as in the file, trailing white space removed
-    is_comment: bool = False  # a whole-line comment: left out without comments
-    code: str = ""  # the text without its trailing comment (when it has one)
-    nested_type: str | None = None  # 'pkg/msg/Name' of a field of a message type
+    def __init__(self, text: str, code: str = "") -> None:
+        self.text = text  # as in the file, trailing white space removed
+        self.is_comment = False  # a whole-line comment: left out without comments
+        self.code = code  # the text without its trailing comment (when it has one)
+        self.nested_type: str | None = None  # 'pkg/msg/Name' of a field of a message type
 
     @classmethod
     def parse(cls, text: str, package: str) -> DefinitionLine:
@@ -174,6 +173,8 @@ def show(
 
 def proto(type_name: str, quotes: bool = True) -> None:
     """`ros2 interface proto`: a default message (a goal, a request) as YAML."""
+    import yaml
+
     from ros2cmd.messages import message_to_data  # loads rclpy's generated classes: only here
 
     cls = load_type(type_name)
@@ -260,6 +261,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     )
     _kind_flags(p, "Print out")
     p.add_argument("package", help="Name of the ROS package (e.g. 'example_interfaces')")
+    completion.attach(p, package=completion.interface_packages)
     p.set_defaults(offline=True, run=lambda _, a: package_command(a.package, a.kinds and _kinds(a)))
 
     p = sub.add_parser("packages", help="Output a list of packages that provide interfaces")
@@ -270,6 +272,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     p.add_argument(
         "type", help="Show an interface definition (e.g. 'example_interfaces/msg/String')"
     )
+    completion.attach(p, type=completion.all_types)
     p.add_argument("--no-quotes", action="store_true", help="if true output has no outer quotes.")
     p.set_defaults(offline=True, run=lambda _, a: proto(a.type, quotes=not a.no_quotes))
 
@@ -288,6 +291,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         help="Show an interface definition (e.g. 'example_interfaces/msg/String'). Passing '-' "
         "reads the argument from stdin (e.g. 'ros2 topic type /chatter | ros2 interface show -').",
     )
+    completion.attach(p, type=completion.all_types)
     p.set_defaults(
         offline=True,
         run=lambda _, a: show(a.type, comments=not a.no_comments, all_comments=a.all_comments),

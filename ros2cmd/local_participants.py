@@ -33,8 +33,6 @@ from __future__ import annotations
 import os
 from collections import Counter
 
-import rclpy
-
 PORT_BASE, DOMAIN_GAIN, METATRAFFIC_UNICAST, PARTICIPANT_GAIN = 7400, 250, 10, 2  # RTPS 9.6.1.1
 MAX_PARTICIPANTS = 120  # participant ports of one domain stay below the next domain's
 EPROSIMA = b"\x01\x0f"  # the vendor id opening a Fast DDS GUID prefix
@@ -120,6 +118,8 @@ def _runs(low_bits: int) -> bool:
 
 
 def _only_this_machine() -> bool:
+    import rclpy  # asked only with a graph node up, which has loaded it
+
     return (
         os.environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE") == "LOCALHOST"
         and not os.environ.get("ROS_STATIC_PEERS")

@@ -22,6 +22,7 @@ from pathlib import Path
 from rcl_interfaces.msg import LoggerLevel
 from rcl_interfaces.srv import GetLoggerLevels, SetLoggerLevels
 
+from ros2cmd import completion
 from ros2cmd.console import LEVELS, logger_name
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
@@ -109,4 +110,5 @@ def latest_launch_folder(base: Path | None = None) -> Path:
 
 def add_level_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("node", nargs="?", help="e.g. /ns1/topic_publisher (default: all nodes)")
+    completion.attach(parser, node=completion.node_names)
     parser.add_argument("level", nargs="?", type=str.lower, choices=list(LEVELS))

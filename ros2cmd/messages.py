@@ -20,25 +20,19 @@ import math
 import re
 import sys
 from collections.abc import Callable
-from typing import Any
-
-import yaml
-from rclpy.clock import Clock
-from rosidl_parser.definition import (
-    AbstractGenericString,
-    AbstractNestedType,
-    AbstractString,
-    AbstractWString,
-    Array,
-    BasicType,
-    BoundedSequence,
-    NamespacedType,
-    UnboundedSequence,
-)
+from functools import cache
+from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError
 from ros2cmd.typenames import full_type_name
 from ros_tutorials_common.bounded import InputError, load_yaml
+
+if TYPE_CHECKING:
+    from rosidl_parser.definition import NamespacedType
+
+# rclpy, rosidl_parser (loaded with any message class already) and yaml (its reader compiles a
+# large pattern as it loads) are imported in the functions that use them, so that the verbs'
+# modules load without them.
 
 # Value ranges of the integer types, by their IDL names as SLOT_TYPES spells them.
 INTEGER_RANGES: dict[str, tuple[int, int]] = {}
@@ -67,6 +61,8 @@ _FLATTENED_BLOCK = re.compile(r"\s*(?:[A-Za-z_]\w*\s*:\s+){2,}[^:{}\[\],]+")
 
 def parse_yaml(text: str) -> Any:
     """Parse the YAML a user typed; a syntax error becomes one line saying where."""
+    import yaml
+
     try:
         return load_yaml(text, "the YAML")  # bounded: no alias bomb, at most 1 MiB
     except InputError as error:
@@ -100,6 +96,8 @@ def fill_message(
     given as "now" get the current time; with ``stamps`` given, a setter for each such field
     is appended to it, so that a publisher can stamp every message it sends anew.
     """
+    from rclpy.clock import Clock
+
     fields = list(msg.get_fields_and_field_types())
     slot_types = dict(zip(fields, msg.SLOT_TYPES, strict=True))
     where = f"{path} ({full_type_name(type(msg))})" if path else full_type_name(type(msg))
@@ -151,8 +149,19 @@ def _field_name(key: Any, fields: list[str]) -> str:
 def _convert(
     value: Any, slot_type: Any, current: Any, path: str, stamps: list[TimeSetter] | None = None
 ) -> Any:
+    from rosidl_parser.definition import (
+        AbstractGenericString,
+        AbstractNestedType,
+        Array,
+        BasicType,
+        BoundedSequence,
+        NamespacedType,
+    )
+
     if isinstance(slot_type, NamespacedType):
         if _is_type(slot_type, "builtin_interfaces", "Time") and value == "now":
+            from rclpy.clock import Clock
+
             return Clock().now().to_msg()
         return fill_message(current, value, path, stamps)
     if isinstance(slot_type, AbstractNestedType):  # arrays and sequences
@@ -230,6 +239,8 @@ def _ros_int_name(typename: str) -> str:
 
 def _is_type(slot_type: Any, package: str, name: str) -> bool:
     """Whether a field's type is the message package/msg/name."""
+    from rosidl_parser.definition import NamespacedType
+
     return (
         isinstance(slot_type, NamespacedType)
         and tuple(slot_type.namespaces) == (package, "msg")
@@ -271,10 +282,12 @@ def message_to_yaml(
     truncate_length shortens strings and arrays (``...`` after them), no_arr and no_str print
     a summary instead of the array or string fields.
     """
+    import yaml
+
     data = message_to_ordered(msg, truncate_length=truncate_length, no_arr=no_arr, no_str=no_str)
     text = yaml.dump(
         data,
-        Dumper=MessageDumper,
+        Dumper=message_dumper(),
         allow_unicode=True,
         width=sys.maxsize,  # one value, one line, however long
         default_flow_style=flow_style,
@@ -283,19 +296,25 @@ def message_to_yaml(
     return text.rstrip("\n")
 
 
-class MessageDumper(yaml.SafeDumper):
-    """YAML as rosidl_runtime_py dumps a message (ros2 topic echo, ros2 service echo): its
-    mappings (OrderedDicts there) never take the flow style by themselves, so --flow-style
-    puts only the sequences in flow style (`client_gid: [1, 15, ...]`)."""
+@cache
+def message_dumper() -> type:
+    """The yaml Dumper that writes YAML as rosidl_runtime_py dumps a message (ros2 topic echo,
+    ros2 service echo): its mappings (OrderedDicts there) never take the flow style by
+    themselves, so --flow-style puts only the sequences in flow style (`client_gid: [1, 15,
+    ...]`)."""
+    import yaml
 
+    class MessageDumper(yaml.SafeDumper):
+        pass
 
-MessageDumper.add_representer(
-    dict,
-    lambda dumper, data: yaml.MappingNode(
-        "tag:yaml.org,2002:map",
-        [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
-    ),
-)
+    MessageDumper.add_representer(
+        dict,
+        lambda dumper, data: yaml.MappingNode(
+            "tag:yaml.org,2002:map",
+            [(dumper.represent_data(k), dumper.represent_data(v)) for k, v in data.items()],
+        ),
+    )
+    return MessageDumper
 
 
 def message_to_ordered(
@@ -342,6 +361,8 @@ def _plain(
 
 def _type_name(slot_type: Any) -> str:
     """A field type's name as --no-arr shows it: 'double', 'string', 'geometry_msgs/Point'."""
+    from rosidl_parser.definition import AbstractString, AbstractWString, BasicType, NamespacedType
+
     if isinstance(slot_type, BasicType):
         return slot_type.typename
     if isinstance(slot_type, AbstractString):
@@ -354,6 +375,8 @@ def _type_name(slot_type: Any) -> str:
 
 
 def _array_summary(value: Any, slot_type: Any) -> str:
+    from rosidl_parser.definition import Array, BoundedSequence, UnboundedSequence
+
     item = _type_name(slot_type.value_type)
     if isinstance(slot_type, Array):
         return f"<array type: {item}[{slot_type.size}]>"

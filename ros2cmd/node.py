@@ -16,11 +16,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from rclpy.action.graph import (
-    get_action_client_names_and_types_by_node,
-    get_action_server_names_and_types_by_node,
-)
-
+from ros2cmd import completion
+from ros2cmd.daemon import about_node
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
 from ros2cmd.sub_verbs import add_count_option
 
@@ -62,13 +59,14 @@ def info(graph: Graph, full_name: str, include_hidden: bool = False) -> None:
     graph.settle()  # the node is known; let its endpoints arrive too
     count = node_names(graph, include_hidden=True).count(full_name)
     node = graph.node
+    action_servers, action_clients = graph.node_actions(name, namespace)
     sections = {
         "Subscribers": node.get_subscriber_names_and_types_by_node(name, namespace),
         "Publishers": node.get_publisher_names_and_types_by_node(name, namespace),
         "Service Servers": node.get_service_names_and_types_by_node(name, namespace),
         "Service Clients": node.get_client_names_and_types_by_node(name, namespace),
-        "Action Servers": get_action_server_names_and_types_by_node(node, name, namespace),
-        "Action Clients": get_action_client_names_and_types_by_node(node, name, namespace),
+        "Action Servers": action_servers,
+        "Action Clients": action_clients,
     }
     graph.finish()
     if count > 1:
@@ -95,9 +93,13 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
 
     p = sub.add_parser("info", parents=[common], help="Output information about a node")
     p.add_argument("node_name", help="Node name to request information")
+    completion.attach(p, node_name=completion.node_names)
     p.add_argument(
         "--include-hidden",
         action="store_true",
         help="Display hidden topics, services, and actions as well",
     )
-    p.set_defaults(run=lambda graph, a: info(graph, a.node_name, a.include_hidden))
+    p.set_defaults(
+        daemon=lambda a: about_node(a.node_name),
+        run=lambda graph, a: info(graph, a.node_name, a.include_hidden),
+    )

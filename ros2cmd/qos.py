@@ -21,20 +21,31 @@ import argparse
 import sys
 import time
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from rclpy.duration import Duration
-from rclpy.event_handler import SubscriptionEventCallbacks
-from rclpy.qos import (
-    DurabilityPolicy,
-    HistoryPolicy,
-    LivelinessPolicy,
-    QoSPresetProfiles,
-    QoSProfile,
-    ReliabilityPolicy,
-)
+if TYPE_CHECKING:  # rclpy is loaded where a subscription is made, not to build the parser
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 CHECK_PERIOD = 0.2  # s between looks at the topic's publishers
+# rclpy.qos's short keys, the choices ros2topic offers, written out so that building the parser
+# does not load rclpy (tests/test_cli_imports.py checks them against rclpy's).
+PROFILE_HISTORY = {  # QoSPresetProfiles.short_keys() -> the preset's history short key
+    "unknown": "unknown",
+    "default": "keep_last",
+    "system_default": "system_default",
+    "sensor_data": "keep_last",
+    "services_default": "keep_last",
+    "parameters": "keep_last",
+    "parameter_events": "keep_last",
+    "action_status_default": "keep_last",
+    "best_available": "keep_last",
+}
+POLICY_KEYS = {  # the policy's short_keys()
+    "history": ("system_default", "keep_last", "keep_all", "unknown"),
+    "reliability": ("system_default", "reliable", "best_effort", "unknown", "best_available"),
+    "durability": ("system_default", "transient_local", "volatile", "unknown", "best_available"),
+    "liveliness": ("system_default", "automatic", "manual_by_topic", "unknown", "best_available"),
+}
 
 
 def publisher_qos_kinds(graph: Any, topic: str) -> set[tuple[DurabilityPolicy, ReliabilityPolicy]]:
@@ -47,6 +58,8 @@ def publisher_qos_kinds(graph: Any, topic: str) -> set[tuple[DurabilityPolicy, R
 
 def qos_for(kinds: set[tuple[DurabilityPolicy, ReliabilityPolicy]]) -> QoSProfile:
     """A subscription QoS that matches every publisher offering one of these kinds."""
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
     qos = QoSProfile(depth=10)
     if kinds and all(durability == DurabilityPolicy.TRANSIENT_LOCAL for durability, _ in kinds):
         qos.durability = DurabilityPolicy.TRANSIENT_LOCAL
@@ -118,6 +131,8 @@ class AdaptiveSubscription:
         qos = qos_for(kinds)
         if self.qos is not None and _same(qos, self.qos):
             return
+        from rclpy.event_handler import SubscriptionEventCallbacks
+
         if self.subscription is not None:
             self.graph.node.destroy_subscription(self.subscription)
         self.qos = qos
@@ -146,14 +161,13 @@ def _same(a: QoSProfile, b: QoSProfile) -> bool:
 
 def add_qos_arguments(parser: argparse.ArgumentParser, verb: str, default_profile: str) -> None:
     """--qos-profile (a preset: sensor_data, services_default, ...) and its overrides."""
-    profiles = QoSPresetProfiles.short_keys()
     parser.add_argument(
         "--qos-profile",
-        choices=profiles,
+        choices=list(PROFILE_HISTORY),
         default=default_profile,
         help=f"Quality of service preset profile to {verb} with (default: {default_profile})",
     )
-    history = QoSPresetProfiles.get_from_short_key(default_profile).history.short_key
+    history = PROFILE_HISTORY[default_profile]
     parser.add_argument(
         "--qos-depth",
         metavar="N",
@@ -162,20 +176,20 @@ def add_qos_arguments(parser: argparse.ArgumentParser, verb: str, default_profil
     )
     parser.add_argument(
         "--qos-history",
-        choices=HistoryPolicy.short_keys(),
+        choices=list(POLICY_KEYS["history"]),
         help=f"History of samples setting to {verb} with (overrides history value of "
         f"--qos-profile option, default: {history})",
     )
-    for name, policy in (("reliability", ReliabilityPolicy), ("durability", DurabilityPolicy)):
+    for name in ("reliability", "durability"):
         parser.add_argument(
             f"--qos-{name}",
-            choices=policy.short_keys(),
+            choices=list(POLICY_KEYS[name]),
             help=f"Quality of service {name} setting to {verb} with (overrides {name} value "
             "of --qos-profile option, default: Compatible profile with running endpoints )",
         )
     parser.add_argument(
         "--qos-liveliness",
-        choices=LivelinessPolicy.short_keys(),
+        choices=list(POLICY_KEYS["liveliness"]),
         help=f"Quality of service liveliness setting to {verb} with (overrides liveliness "
         "value of --qos-profile option",
     )
@@ -204,6 +218,15 @@ def qos_overridden(args: argparse.Namespace) -> bool:
 
 def qos_from_args(args: argparse.Namespace) -> QoSProfile:
     """The preset --qos-profile names, with the --qos-* overrides given applied."""
+    from rclpy.duration import Duration
+    from rclpy.qos import (
+        DurabilityPolicy,
+        HistoryPolicy,
+        LivelinessPolicy,
+        QoSPresetProfiles,
+        ReliabilityPolicy,
+    )
+
     profile = QoSPresetProfiles.get_from_short_key(args.qos_profile)
     if args.qos_history:
         profile.history = HistoryPolicy.get_from_short_key(args.qos_history)

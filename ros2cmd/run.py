@@ -16,6 +16,7 @@ import shlex
 import sys
 from collections.abc import Sequence
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import names, packages
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
@@ -184,6 +185,9 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     )
     parser.add_argument("package_name", help="Name of the ROS package")
     parser.add_argument("executable_name", help="Name of the executable")
+    completion.attach(
+        parser, package_name=completion.package_names, executable_name=completion.executable_names
+    )
     parser.add_argument(
         "argv", nargs=argparse.REMAINDER, help="Pass arbitrary arguments to the executable"
     )

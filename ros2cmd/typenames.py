@@ -16,7 +16,6 @@ from pathlib import Path
 
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import ament
-from ros_tutorials_common.packages import resolve_package
 
 # The seeds define their messages in their own package (pub_sub/Num, my_package/UserRecord,
 # ros_tutorials_topic/MsgTutorial); here they all live in one interface package.
@@ -42,6 +41,8 @@ def interface_package(package: str, index: dict[str, list[str]]) -> str:
     """The interface package a package name stands for: itself if it has interfaces, else
     for a package of this project or a seed's name for one (ros_tutorials_common.packages'
     resolve_package: ros_tutorials_topic, pub_sub, service, ...) the one interface package."""
+    from ros_tutorials_common.packages import resolve_package  # a seed's name: rarely asked
+
     if package not in index and resolve_package(package):
         return SEED_INTERFACES
     return package

@@ -15,12 +15,13 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from typing import TypeVar
-
-from rclpy.action import ActionClient
-from rclpy.executors import Executor
+from typing import TYPE_CHECKING, TypeVar
 
 from ros_tutorials_common import ctrl_c
+
+if TYPE_CHECKING:
+    from rclpy.action import ActionClient
+    from rclpy.executors import Executor
 
 # Waits spin in slices this long at most, so that a Ctrl-C is noticed at once ...
 SPIN_SLICE = 0.1

@@ -96,15 +96,15 @@ def peer_name_ok(peer: str) -> bool:
 def static_peers_problem(env: Mapping[str, str] | None = None) -> str | None:
     """What in ROS_STATIC_PEERS would make creating a node fail (rmw_fastrtps turns each peer
     into the first IPv4 address it resolves to), as one line; None if nothing would."""
-    import ipaddress
-    import socket
-
     text = (os.environ if env is None else env).get("ROS_STATIC_PEERS", "")
     for peer in (p.strip() for p in text.split(";")):
         if not peer:
             continue
         if not peer_name_ok(peer):
             return f"ROS_STATIC_PEERS: {peer!r} is not an IP address or a host name"
+        import ipaddress
+        import socket
+
         try:
             if ipaddress.ip_address(peer).version == 4:
                 continue

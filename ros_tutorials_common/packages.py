@@ -241,6 +241,7 @@ def console_scripts() -> dict[str, str]:
     """Console script name -> the ``module:function`` it runs; for a lesson's script, the
     lesson's own main (the script applies the DDS defaults first, ros_tutorials_common/
     lesson_scripts.py; `ros2 run` and the launcher apply them themselves)."""
+
     found = {}
     for name, value in _project_scripts():
         module, _, function = value.partition(":")
@@ -464,6 +465,16 @@ def package_folder(name: str) -> Path:
     share = share_directory(name)
     manifest = share / "package.xml"
     return manifest.resolve().parent if manifest.is_symlink() else share
+
+
+def launch_packages(name: str) -> tuple[str, ...]:
+    """The packages whose share folders `ros2 launch NAME FILE` looks in: this project's that
+    the name stands for (a seed's name, `turtlesim`), else the package of the ament index of
+    that name (a learner's own); none if it is neither."""
+    found = resolve_package(name)
+    if not found and name in ament.packages():
+        found = (name,)
+    return found
 
 
 def launch_files(package: str) -> list[Path]:

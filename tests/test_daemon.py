@@ -174,6 +174,11 @@ def test_lists_with_the_daemon_equal_lists_without(running_daemon, node_process)
         ("service", "list", "-t"),
         ("action", "list", "-t"),
         ("topic", "find", "std_msgs/msg/String"),
+        ("node", "info", "/topic_publisher"),
+        ("node", "info", "/action_server", "--include-hidden"),
+        ("topic", "info", "/ros_tutorial_msg"),
+        ("topic", "type", "/ros_tutorial_msg"),
+        ("service", "type", "/ros_tutorial_srv"),
     ):
         assert daemon.ask_graph() is not None, "the daemon must answer for this comparison"
         through_daemon = ros2(*command)

@@ -12,7 +12,11 @@ underlay a learner builds their own packages on.
 - CMAKE_TOOLCHAIN_FILE, unless set: interfaces/cmake/colcon_toolchain.cmake, what `colcon
   build` of an ament_cmake package needs here that a ROS 2 installation would not;
 - COLCON_DEFAULTS_FILE, unless set: ros_tutorials_common/config/colcon_defaults.yaml, where
-  a package whose build fails is one line (ros_tutorials_common/colcon_events.py).
+  a package whose build fails is one line (ros_tutorials_common/colcon_events.py);
+- in an interactive bash or zsh, TAB completion of `ros2` and the ROS 1 tools: argcomplete's
+  shell code for them (ros_tutorials_common/completion.py), written once into
+  share/ros-tutorials/ros2-argcomplete.bash (nothing, quietly, without argcomplete), as a ROS
+  2 install's setup.bash sources ros2cli's ros2-argcomplete.bash.
 The venv's activate scripts (bash/zsh, fish, csh) get one marked block each, written again
 when it changed and otherwise left alone; `deactivate` (bash/zsh) takes it all away again.
 
@@ -34,7 +38,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
-from ros_tutorials_common.dds import DDS_DEFAULTS  # noqa: E402 - after ROOT is importable
+from ros_tutorials_common.completion import COMMANDS  # noqa: E402 - after ROOT is importable
+from ros_tutorials_common.dds import DDS_DEFAULTS  # noqa: E402
 
 VARIABLES = {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3", "ROS_DISTRO": "jazzy"}
 TOOLCHAIN = ROOT / "interfaces" / "cmake" / "colcon_toolchain.cmake"
@@ -43,6 +48,7 @@ BEGIN = "# >>> ros-tutorials: the ROS 2 environment (tools/ros_environment.py) >
 END = "# <<< ros-tutorials <<<"
 SETUP_FILES = ("local_setup.sh", "local_setup.bash", "local_setup.zsh")
 SETUP_FILES += tuple(name.removeprefix("local_") for name in SETUP_FILES)
+COMPLETION = Path("share", "ros-tutorials", "ros2-argcomplete.bash")  # under the prefix
 
 
 def defaults() -> dict[str, str]:
@@ -81,6 +87,7 @@ def block(shell: str, prefix: Path) -> str:
             f"{shlex.quote(here)};;",
             "esac",
         ]
+        lines += completion_lines(prefix)
         # deactivate is a shell function of the venv's: wrap it so all this goes with it.
         names = " ".join(VARIABLES)
         remove_prefix = [
@@ -98,12 +105,40 @@ def block(shell: str, prefix: Path) -> str:
             '    eval "_ros_tutorials_$(typeset -f deactivate)"',
             "    deactivate () {",
             f"        unset {names} ${{_ROS_TUTORIALS_SET-}} _ROS_TUTORIALS_SET",
+            f"        complete -r {' '.join(COMMANDS)} 2>/dev/null",
             *(f"        {line}" for line in remove_prefix),
             '        _ros_tutorials_deactivate "$@"',
             "    }",
             "fi",
         ]
     return "\n".join([BEGIN, *lines, END]) + "\n"
+
+
+def completion_lines(prefix: Path) -> list[str]:
+    """Shell lines that register TAB completion in an interactive bash or zsh (and do nothing
+    where the completion script is not there)."""
+    script = shlex.quote(str(prefix / COMPLETION))
+    return [
+        f'if [ -n "${{BASH_VERSION-}}${{ZSH_VERSION-}}" ] && [ -r {script} ]; then',
+        f"    case $- in *i*) . {script} ;; esac",
+        "fi",
+    ]
+
+
+def completion_script() -> str | None:
+    """argcomplete's bash and zsh code for COMMANDS; None without argcomplete."""
+    try:
+        from argcomplete.shell_integration import shellcode
+    except ImportError:
+        return None
+    return (
+        "# TAB completion of ros2 and the ROS 1 tools (argcomplete), for an interactive bash or\n"
+        "# zsh: sourced by the environment's activate (tools/ros_environment.py writes it).\n"
+        "# zsh: its completion system first, as ros2cli's ros2-argcomplete.zsh loads it.\n"
+        'if [ -n "${ZSH_VERSION-}" ] && ! type compdef >/dev/null 2>&1; then\n'
+        "    autoload -U +X compinit && compinit\n"
+        "fi\n" + shellcode(COMMANDS, shell="bash")
+    )
 
 
 def install(script: Path, shell: str, prefix: Path) -> bool:
@@ -119,11 +154,14 @@ def install(script: Path, shell: str, prefix: Path) -> bool:
 
 def setup_file(prefix: Path) -> str:
     activate = shlex.quote(str(prefix / "bin" / "activate"))
+    # Activated already (a shell started from an activated one): TAB completion all the same.
+    again = "".join(f"    {line}\n" for line in completion_lines(prefix))
     return (
         "# This environment as a ROS 2 underlay (tools/ros_environment.py): sourcing this is\n"
         "# what sourcing /opt/ros/jazzy/setup.bash is elsewhere. A workspace built here sources\n"
         "# it first from its install/setup.bash.\n"
-        f'if [ "${{VIRTUAL_ENV-}}" != {shlex.quote(str(prefix))} ]; then . {activate}; fi\n'
+        f'if [ "${{VIRTUAL_ENV-}}" != {shlex.quote(str(prefix))} ]; then . {activate}\n'
+        f"else\n{again}fi\n"
     )
 
 
@@ -142,6 +180,13 @@ def main(argv: list[str] | None = None) -> int:
         script = prefix / "bin" / name
         if script.is_file() and install(script, shell, prefix):
             print(f"{script}: sets {', '.join([*VARIABLES, 'AMENT_PREFIX_PATH', *defaults()])}")
+    code = completion_script()
+    if code is None:
+        (prefix / COMPLETION).unlink(missing_ok=True)
+    else:
+        (prefix / COMPLETION).parent.mkdir(parents=True, exist_ok=True)
+        if write_if_changed(prefix / COMPLETION, code):
+            print(f"{prefix / COMPLETION}: TAB completion of {', '.join(COMMANDS)}")
     changed = [name for name in SETUP_FILES if write_if_changed(prefix / name, setup_file(prefix))]
     if changed:
         print(f"{prefix}: {', '.join(changed)} (a ROS 2 underlay for colcon workspaces)")

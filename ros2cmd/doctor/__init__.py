@@ -22,22 +22,11 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
-from ros2cmd.doctor.api import (
-    Report,
-    Result,
-    doctor_error,
-    domain,
-    format_print,
-    middleware,
-    network,
-    node,
-    package,
-    platform,
-    topic,
-)
-from ros2cmd.doctor.api.settings import Settings
-from ros2cmd.doctor.api.system import Doctor
+if TYPE_CHECKING:  # the checks load with the command, not to build the parser
+    from ros2cmd.doctor.api import Report, Result
+    from ros2cmd.doctor.api.system import Doctor
 
 # The checks that look at the running system (skipped when no node can be started).
 GRAPH_CHECKS = ("node_check", "participant_check", "qos_compatibility_check", "topic_check")
@@ -59,6 +48,8 @@ back, and listen to the DDS announcements on the network. It takes a few seconds
 def checks(run: Doctor, exclude_packages: bool) -> list[tuple[str, Callable[[Doctor], Result]]]:
     """(category, check) in ros2doctor's order (its entry points' names, sorted); those that
     cannot run here left out."""
+    from ros2cmd.doctor.api import domain, middleware, network, node, package, platform, topic
+
     found = [
         ("domain", domain.domain_check),
         ("network", network.multicast_check if run.settings.subnet else None),
@@ -76,6 +67,8 @@ def checks(run: Doctor, exclude_packages: bool) -> list[tuple[str, Callable[[Doc
 def run_checks(
     run: Doctor, include_warnings: bool, exclude_packages: bool
 ) -> tuple[list[str], int, int]:
+    from ros2cmd.doctor.api import doctor_error
+
     failed: list[str] = []
     fail = total = 0
     # The graph first: every check then reads the same complete look at it.
@@ -98,6 +91,8 @@ def run_checks(
 
 def reports(run: Doctor, categories: list[str] | None, exclude_packages: bool) -> list[Report]:
     """The reports of the categories (None: all), in ros2doctor's order."""
+    from ros2cmd.doctor.api import domain, middleware, network, node, package, platform, topic
+
     makers = [
         ("network", network.network_report),
         ("node", node.node_report),
@@ -117,6 +112,10 @@ def reports(run: Doctor, categories: list[str] | None, exclude_packages: bool) -
 
 
 def doctor(args: argparse.Namespace) -> None:
+    from ros2cmd.doctor.api import format_print
+    from ros2cmd.doctor.api.settings import Settings
+    from ros2cmd.doctor.api.system import Doctor
+
     run = Doctor(Settings.from_environment())
     try:
         if args.report:

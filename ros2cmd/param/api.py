@@ -28,32 +28,37 @@ import sys
 import tempfile
 import weakref
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import yaml
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType
-from rclpy.parameter import Parameter, parameter_dict_from_yaml_file, parameter_value_to_python
-from rclpy.parameter_client import AsyncParameterClient
-from rclpy.task import Future
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
-# How `ros2 param describe` and `list --param-type` name the types.
-DESCRIBED_TYPES = {
-    ParameterType.PARAMETER_BOOL: "boolean",
-    ParameterType.PARAMETER_INTEGER: "integer",
-    ParameterType.PARAMETER_DOUBLE: "double",
-    ParameterType.PARAMETER_STRING: "string",
-    ParameterType.PARAMETER_BYTE_ARRAY: "byte array",
-    ParameterType.PARAMETER_BOOL_ARRAY: "boolean array",
-    ParameterType.PARAMETER_INTEGER_ARRAY: "integer array",
-    ParameterType.PARAMETER_DOUBLE_ARRAY: "double array",
-    ParameterType.PARAMETER_STRING_ARRAY: "string array",
-    ParameterType.PARAMETER_NOT_SET: "not set",
-}
+if TYPE_CHECKING:  # rclpy and the messages load when a command runs, not with the parser
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+    from rclpy.parameter_client import AsyncParameterClient
+    from rclpy.task import Future
+
+
+def described_type(code: int) -> str:
+    """How `ros2 param describe` and `list --param-type` name a parameter's type."""
+    from rcl_interfaces.msg import ParameterType
+
+    names = {
+        ParameterType.PARAMETER_BOOL: "boolean",
+        ParameterType.PARAMETER_INTEGER: "integer",
+        ParameterType.PARAMETER_DOUBLE: "double",
+        ParameterType.PARAMETER_STRING: "string",
+        ParameterType.PARAMETER_BYTE_ARRAY: "byte array",
+        ParameterType.PARAMETER_BOOL_ARRAY: "boolean array",
+        ParameterType.PARAMETER_INTEGER_ARRAY: "integer array",
+        ParameterType.PARAMETER_DOUBLE_ARRAY: "double array",
+        ParameterType.PARAMETER_STRING_ARRAY: "string array",
+        ParameterType.PARAMETER_NOT_SET: "not set",
+    }
+    return names.get(code, "unknown")
+
 
 # One AsyncParameterClient per (tool run, node): its six service clients live as long as the
 # tool's node (rclpy has no call to destroy them earlier).
@@ -89,6 +94,8 @@ def ask(graph: Graph, node: str, call: Callable[[AsyncParameterClient], Future])
 
 
 def _client(graph: Graph, node: str) -> AsyncParameterClient:
+    from rclpy.parameter_client import AsyncParameterClient
+
     clients = _clients.setdefault(graph, {})
     if node not in clients:
         clients[node] = AsyncParameterClient(graph.node, node)
@@ -138,6 +145,9 @@ def names(graph: Graph, node: str, prefixes: list[str] | None = None) -> list[st
 
 def get_values(graph: Graph, node: str, params: list[str]) -> dict[str, Any]:
     """{name: (type, python value)} of a node's parameters; an unknown name is a ToolError."""
+    from rcl_interfaces.msg import ParameterType
+    from rclpy.parameter import parameter_value_to_python
+
     node = full_node_name(node)
     response = ask(graph, node, lambda client: client.get_parameters(params))
     if len(response.values) != len(params):  # rclpy answers nothing for unknown names
@@ -165,6 +175,8 @@ def try_set_values(graph: Graph, node: str, values: dict[str, Any]) -> dict[str,
         problem = parameter_problem(name, value)  # e.g. an integer rclpy cannot hold (int64)
         if problem:
             raise ToolError(f"cannot set {problem}")
+    from rclpy.parameter import Parameter
+
     try:
         params = [Parameter(name, value=value).to_parameter_msg() for name, value in values.items()]
     except (TypeError, ValueError) as error:
@@ -244,6 +256,9 @@ class ParamsFile:
         # rclpy opens the file itself: give it a private copy of what was checked (a named
         # pipe or a file changed meanwhile would be read again, without the limits), each
         # node under its full name (rclpy does not read names written as nested keys).
+        import yaml
+        from rclpy.parameter import parameter_dict_from_yaml_file
+
         with tempfile.NamedTemporaryFile("w", suffix=".yaml", encoding="utf-8") as copy:
             yaml.safe_dump(self.data, copy, sort_keys=False)  # the order decides
             copy.flush()
@@ -267,6 +282,7 @@ def nodes_with_parameters(graph: Graph) -> list[str]:
 
 def add_node_argument(parser: argparse.ArgumentParser, nargs: str | None = None) -> None:
     parser.add_argument("node_name", nargs=nargs, help="Name of the ROS node")
+    completion.attach(parser, node_name=completion.node_names)
     # ros2cli's option; this tool's own node is hidden and has no parameter services anyway
     parser.add_argument(
         "--include-hidden-nodes", action="store_true", help="Consider hidden nodes as well"

@@ -6,7 +6,6 @@ string in setup.py)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from xml.sax.saxutils import escape, quoteattr
 
 
 @dataclass
@@ -47,6 +46,8 @@ def _group(tag: str, names: list[str]) -> list[str]:
 
 
 def package_xml(package: NewPackage) -> str:
+    from xml.sax.saxutils import escape, quoteattr  # urllib, http, ssl: not to build the parser
+
     schema = f"http://download.ros.org/schema/package_format{package.package_format}.xsd"
     email = quoteattr(package.maintainer_email)
     lines = [

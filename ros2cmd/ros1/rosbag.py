@@ -11,6 +11,7 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
+from ros2cmd import completion
 from ros2cmd.bag import info as bag_info
 from ros2cmd.bag.options import (
     add_reindex,
@@ -29,6 +30,7 @@ from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 def _record_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topics", nargs="*", metavar="TOPIC", help="topics to record")
+    completion.attach(parser, topics=completion.topic_names)
     parser.add_argument("-a", "--all", action="store_true", help="all topics, also later ones")
     output = parser.add_mutually_exclusive_group()
     output.add_argument("-o", "--output", help="the bag's folder (default rosbag2_<date-time>)")
@@ -110,10 +112,11 @@ def rosbag_parser() -> argparse.ArgumentParser:
 
 @exits_130_on_ctrl_c  # the console script's entry
 def rosbag(argv: Sequence[str] | None = None) -> int:
+    completion.answer(rosbag_parser())  # the shell asking for TAB's completions: ends here
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] in (["info"], ["reindex"]):  # offline: no rclpy to load
         return _offline_only(argv[0], argv[1:])
-    # record and play need rclpy, which ros2cmd.cli and ros2cmd.graph load: imported here.
+    # record and play run a graph node (ros2cmd.cli's execute): imported for them only.
     from ros2cmd.cli import execute
     from ros2cmd.graph import DEFAULT_TIMEOUT
 

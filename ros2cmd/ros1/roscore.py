@@ -12,6 +12,7 @@ import signal
 import sys
 from collections.abc import Sequence
 
+from ros_tutorials_common import completion
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.dds import apply_dds_defaults
 
@@ -59,6 +60,7 @@ def roscore(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="roscore", description="ROS 2 has no master; says what replaces it, waits for Ctrl-C."
     )
+    completion.answer(parser)  # the shell asking for TAB's completions: ends here
     parser.parse_args(sys.argv[1:] if argv is None else argv)
     show_and_wait()
     return 0

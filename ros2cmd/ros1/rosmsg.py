@@ -12,7 +12,7 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from ros2cmd import interface
+from ros2cmd import completion, interface
 from ros2cmd.ros1 import tool
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
@@ -23,6 +23,7 @@ def _interface_parser(name: str, kind: str) -> argparse.ArgumentParser:
 
     show = sub.add_parser("show", help=f"a {what}")
     show.add_argument("type", nargs="?", help="pkg/Name, Name, or - to read it from stdin")
+    completion.attach(show, type=completion.interface_types((kind,), ros1=True))
     show.set_defaults(offline=True, run=lambda _, a: _show(_type_or_stdin(a.type, show), kind))
 
     p = sub.add_parser("list", help=f"all {what} types")
@@ -30,6 +31,7 @@ def _interface_parser(name: str, kind: str) -> argparse.ArgumentParser:
 
     p = sub.add_parser("package", help=f"the {what} types of a package")
     p.add_argument("package")
+    completion.attach(p, package=completion.interface_packages)
     p.set_defaults(
         offline=True, run=lambda _, a: print(*interface.list_types((kind,), a.package), sep="\n")
     )

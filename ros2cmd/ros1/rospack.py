@@ -17,6 +17,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from ros2cmd import completion
 from ros_tutorials_common import ament, packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 
@@ -36,7 +37,9 @@ def rospack(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="rospack", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     commands.add_parser("find", help="print the folder of a package").add_argument("package")
+    completion.attach(commands.choices["find"], package=completion.package_names)
     commands.add_parser("list", help="print every package and its folder")
+    completion.answer(parser)  # the shell asking for TAB's completions: ends here
     options = parser.parse_args(sys.argv[1:] if argv is None else argv)
     if options.command == "list":
         for name, path in all_packages().items():

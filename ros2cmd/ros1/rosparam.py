@@ -14,8 +14,6 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
 from ros2cmd.messages import parse_yaml
@@ -87,6 +85,8 @@ def _not_found_hint(graph: Graph, name: str) -> str:
 
 
 def _value_text(value: Any) -> str:
+    import yaml  # where it is used: not to build the parser
+
     if isinstance(value, (list, dict)):
         return yaml.safe_dump(value, default_flow_style=True).strip()
     return str(value).lower() if isinstance(value, bool) else str(value)
@@ -115,6 +115,8 @@ def rosparam_list(graph: Graph, namespace: str | None = None) -> None:
 
 
 def rosparam_get(graph: Graph, name: str) -> None:
+    import yaml
+
     matches = resolve_parameter(graph, name, namespaces=True)
     if matches[0][1] is None:  # a namespace: its nodes' parameters, as a YAML dict
         tree = _parameter_tree(graph, [node_name for node_name, _ in matches], name)
@@ -161,6 +163,8 @@ def rosparam_set(graph: Graph, name: str, value: str) -> None:
 def rosparam_dump(graph: Graph, path: str | None) -> None:
     """Every node's parameters as one params file; a node that does not answer is left out
     and named after the rest is written (exit status 1)."""
+    import yaml
+
     nodes = param.nodes_with_parameters(graph)
     answers, silent = param.names_of_each(graph, nodes)
     data: dict[str, Any] = {}

@@ -24,9 +24,11 @@ A name that ROS cannot take (`__name:=pub-1`) is refused in one line, before the
 
 from __future__ import annotations
 
+import argparse
 import sys
 from collections.abc import Sequence
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.run import run
 from ros_tutorials_common import packages
@@ -40,6 +42,8 @@ USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
 @exits_130_on_ctrl_c  # the console script's entry
 def rosrun(argv: Sequence[str] | None = None) -> int:
     """The `rosrun` command (console script)."""
+    if completion.requested():  # the shell asking for TAB's completions: ends here
+        completion.answer(_completion_parser())
     argv = list(sys.argv[1:] if argv is None else argv)
     if argv[:1] in (["-h"], ["--help"]):
         print(USAGE)
@@ -61,3 +65,18 @@ def rosrun(argv: Sequence[str] | None = None) -> int:
         print(f"error: {error}", file=sys.stderr)
         return 1
     return 0  # not reached: run() replaces this process
+
+
+def _completion_parser() -> argparse.ArgumentParser:
+    """rosrun's words, for TAB completion only (rosrun reads its arguments itself: ROS 1's
+    `name:=value` forms are no options)."""
+    parser = argparse.ArgumentParser(prog="rosrun")
+    parser.add_argument("package_name")
+    parser.add_argument("executable_name")
+    parser.add_argument("args", nargs=argparse.REMAINDER)
+    completion.attach(
+        parser,
+        package_name=completion.package_names,
+        executable_name=completion.executable_names,
+    )
+    return parser

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.messages import fill_message, message_to_yaml
 from ros2cmd.ros1 import tool
@@ -28,28 +29,33 @@ def rosservice_parser() -> argparse.ArgumentParser:
     )
 
     p = sub.add_parser("list", parents=[common], help="list services")
-    p.set_defaults(run=lambda graph, a: list_services(graph))
+    p.set_defaults(daemon=True, run=lambda graph, a: list_services(graph))
 
     p = sub.add_parser("type", parents=[common], help="service type")
     p.add_argument("service")
-    p.set_defaults(run=lambda graph, a: print_type(graph, a.service))
+    completion.attach(p, service=completion.service_names)
+    p.set_defaults(daemon=True, run=lambda graph, a: print_type(graph, a.service))
 
     p = sub.add_parser("call", parents=[common], help="call a service")
     p.add_argument("service")
+    completion.attach(p, service=completion.service_names)
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
     p.set_defaults(run=_call)
 
     p = sub.add_parser("args", parents=[common], help="request fields")
     p.add_argument("service")
+    completion.attach(p, service=completion.service_names)
     p.set_defaults(run=lambda graph, a: _service_args(graph, a.service))
 
     p = sub.add_parser("info", parents=[common], help="node, type, args")
     p.add_argument("service")
+    completion.attach(p, service=completion.service_names)
     p.set_defaults(run=lambda graph, a: _service_info(graph, a.service))
 
     p = sub.add_parser("find", parents=[common], help="services of a type")
     p.add_argument("type")
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    completion.attach(p, type=completion.ros1_service_types)
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))
     tool.no_ros2_meaning("rosservice", sub)
     return parser
 

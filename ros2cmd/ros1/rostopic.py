@@ -17,13 +17,9 @@ import sys
 import time
 from collections import deque
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import yaml
-from rclpy.duration import Duration
-from rclpy.publisher import Publisher
-from rclpy.qos import DurabilityPolicy, QoSProfile
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, print_names, until_stopped
 from ros2cmd.messages import fill_message, message_to_data, message_to_yaml
@@ -33,6 +29,9 @@ from ros2cmd.topic.api import HzMeter, node_names_known, publish_one
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_int, positive_rate
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
 
 DEFAULT_PUB_RATE = 1.0  # Hz
 WINDOW = 10000  # messages: hz and bw
@@ -45,10 +44,13 @@ def rostopic_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("list", parents=[common], help="list topics")
     p.add_argument("-v", "--verbose", action="store_true", help="with types")
-    p.set_defaults(run=lambda graph, a: print_names(graph, graph.topic_types, a.verbose))
+    p.set_defaults(
+        daemon=True, run=lambda graph, a: print_names(graph, graph.topic_types, a.verbose)
+    )
 
     p = sub.add_parser("echo", parents=[common], help="print messages")
     p.add_argument("topic", help="a topic, or /topic/field for one field (/t/stamp/sec)")
+    completion.attach(p, topic=completion.topic_names)
     p.add_argument("-n", type=positive_int, help="print this many messages, then exit")
     p.set_defaults(run=lambda graph, a: echo(graph, a.topic, count=a.n, field_in_name=True))
 
@@ -56,6 +58,7 @@ def rostopic_parser() -> argparse.ArgumentParser:
     p.add_argument("topic")
     p.add_argument("type")
     p.add_argument("values", nargs="*", help="a YAML mapping, or field values in order")
+    completion.attach(p, topic=completion.topic_names, type=completion.ros1_types_for_topic)
     group = p.add_mutually_exclusive_group()  # ROS 1 refused both too
     group.add_argument("-r", "--rate", type=positive_rate, help="publish at this rate until Ctrl-C")
     group.add_argument("-1", "--once", action="store_true", help="publish once, then exit")
@@ -65,19 +68,26 @@ def rostopic_parser() -> argparse.ArgumentParser:
     for name, bandwidth in (("hz", False), ("bw", True)):
         p = sub.add_parser(name, parents=[common], help="")
         p.add_argument("topic")
+        completion.attach(p, topic=completion.topic_names)
         p.set_defaults(run=lambda graph, a, b=bandwidth: hz(graph, a.topic, WINDOW, b))
 
     p = sub.add_parser("info", parents=[common], help="publishers etc.")
     p.add_argument("topic")
+    completion.attach(p, topic=completion.topic_names)
     p.set_defaults(run=lambda graph, a: info(graph, a.topic, True))
 
     p = sub.add_parser("type", parents=[common], help="message type")
     p.add_argument("topic")
-    p.set_defaults(run=lambda graph, a: print(graph.wait_for_topic_type(absolute_name(a.topic))))
+    completion.attach(p, topic=completion.topic_names)
+    p.set_defaults(
+        daemon=True,
+        run=lambda graph, a: print(graph.wait_for_topic_type(absolute_name(a.topic))),
+    )
 
     p = sub.add_parser("find", parents=[common], help="topics of a type")
     p.add_argument("type")
-    p.set_defaults(run=lambda graph, a: find(graph, a.type))
+    completion.attach(p, type=completion.ros1_message_types)
+    p.set_defaults(daemon=True, run=lambda graph, a: find(graph, a.type))
     return parser
 
 
@@ -230,6 +240,8 @@ def _echo(
 
 def _field_text(value: object) -> str:
     if isinstance(value, (dict, list)):
+        import yaml
+
         return yaml.safe_dump(value, default_flow_style=False, sort_keys=False).rstrip()
     return str(value)
 
@@ -250,6 +262,9 @@ def pub(
     rate=None publishes once and keeps the publisher alive until Ctrl-C (ROS 1's latching
     mode, with a transient-local publisher so late subscribers that ask for it still get it).
     """
+    from rclpy.duration import Duration
+    from rclpy.qos import DurabilityPolicy, QoSProfile
+
     topic = absolute_name(topic)
     msg_type = load_type(type_name, ("msg",))
     msg = fill_message(msg_type(), values)
@@ -307,6 +322,8 @@ def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
     transient-local subscription gets it from the publisher's history; a volatile one would
     miss it, so it is sent again for a volatile one that has joined and matched; only then,
     as every other subscriber gets that copy too (`rostopic hz` would count it)."""
+    from rclpy.qos import DurabilityPolicy
+
     publish_one(graph, publisher, msg)
     first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
     served: set[bytes] = set()  # those it was sent again for

@@ -14,7 +14,7 @@ import os
 import sys
 from collections.abc import Sequence
 
-from ros2cmd import console, graph_view, log
+from ros2cmd import completion, console, graph_view, log
 from ros2cmd.cli import common_options, execute
 from ros2cmd.graph import DEFAULT_TIMEOUT, Graph
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
@@ -37,6 +37,7 @@ def _execute(args: argparse.Namespace, run, offline: bool = False) -> int:
 def rqt_graph(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_graph", "The running graph: a window, or DOT/SVG/PNG")
     graph_view.add_arguments(parser)
+    completion.answer(parser)  # the shell asking for TAB's completions: ends here
     args = parser.parse_args(argv)
     if not args.output and not args.window:
         if os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
@@ -50,6 +51,7 @@ def rqt_graph(argv: Sequence[str] | None = None) -> int:
 def rqt_console(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_console", "The live /rosout log lines")
     console.add_arguments(parser)
+    completion.answer(parser)
     return _execute(parser.parse_args(argv), console.run)
 
 
@@ -57,6 +59,7 @@ def rqt_console(argv: Sequence[str] | None = None) -> int:
 def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_logger_level", "Show or change node logger levels")
     log.add_level_arguments(parser)
+    completion.answer(parser)
     args = parser.parse_args(argv)
     return _execute(args, lambda graph, a: log.level_command(graph, a.node, a.level))
 
@@ -65,6 +68,7 @@ def roslaunch_logs(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="roslaunch-logs", description="Print the folder of the latest launch's logs"
     )
+    completion.answer(parser)
     args = parser.parse_args(argv)
 
     def run(_graph: Graph | None, _args: argparse.Namespace) -> None:

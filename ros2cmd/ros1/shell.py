@@ -15,13 +15,14 @@ ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See 
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import shlex
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from ros_tutorials_common import ament, packages
+from ros_tutorials_common import ament, completion, packages
 from ros_tutorials_common.cli import quiet_on_closed_pipe
 
 
@@ -33,6 +34,17 @@ def _folder(where: str) -> str:
     if below and not (folder / below).is_dir():
         return f"{shlex.quote(str(folder))} (it has no {below}/ here)"
     return shlex.quote(str(folder / below if below else folder))
+
+
+def _complete_package(program: str, *more: str) -> None:
+    """If the shell asks for TAB's completions, answer them (and end here): a package name
+    first, as ROS 1's roscd, rosed and roscp completed it."""
+    if completion.requested():
+        parser = argparse.ArgumentParser(prog=program)
+        for name in ("package", *more):
+            parser.add_argument(name)
+        completion.attach(parser, package=completion.package_names)
+        completion.answer(parser)
 
 
 def _args(argv: Sequence[str] | None) -> list[str]:
@@ -59,6 +71,7 @@ def _pointed(argv: Sequence[str] | None, count: int, usage: str, instead: str) -
 
 @quiet_on_closed_pipe
 def roscd(argv: Sequence[str] | None = None) -> int:
+    _complete_package("roscd")
     return _pointed(
         argv,
         1,
@@ -69,6 +82,7 @@ def roscd(argv: Sequence[str] | None = None) -> int:
 
 @quiet_on_closed_pipe
 def rosed(argv: Sequence[str] | None = None) -> int:
+    _complete_package("rosed", "file")
     return _pointed(
         argv,
         2,
@@ -85,6 +99,7 @@ OWN_INTERFACES = "ros_tutorials_interfaces"  # the seeds' .msg and .srv files ar
 def roscp(argv: Sequence[str] | None = None) -> int:
     """The `cp` of the file, as ROS 1's roscp found it by name in the package; a .msg, .srv
     or .action the package does not hold here is the interface package's that has it."""
+    _complete_package("roscp", "file", "destination")
     args = _args(argv)
     if len(args) != 3:
         return _say("usage: roscp PKG FILE DEST; here: cp $(rospack find PKG)/FILE DEST")

@@ -14,6 +14,7 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from ros2cmd import completion
 from ros2cmd.cli import common_options, run_parsed
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
@@ -79,6 +80,7 @@ def _refuse(command: str, reason: str) -> Callable:
 def run(parser: argparse.ArgumentParser, argv: Sequence[str] | None) -> int:
     # ROS 1 put options anywhere: `rostopic pub /cmd_vel -r 10 geometry_msgs/Twist '...'`.
     # argparse can parse that only below the command (not through subparsers), so pick it.
+    completion.answer(parser)  # the shell asking for TAB's completions: answered, ends here
     argv = sys.argv[1:] if argv is None else list(argv)
     commands = parser.get_default("commands")
     if argv and argv[0] in commands:

@@ -10,17 +10,15 @@ import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
-from typing import Any
-
-from rclpy.executors import ExternalShutdownException
-from rclpy.publisher import Publisher
-from rclpy.qos import qos_profile_sensor_data
+from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, MAX_SETTLE_TIME, Graph, absolute_name, is_hidden
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_seconds
-from ros_tutorials_common.ros import RCLError
+
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
 
 HZ_WINDOW = 10000  # messages, as ros2topic hz and delay
 
@@ -68,6 +66,8 @@ def subscribe_when_known(graph: Graph, topic: str, callback: Callable, raw: bool
         types = graph.wait_for(
             lambda: names_and_types(graph, hidden=True).get(topic), "", timeout=math.inf
         )
+    from rclpy.qos import qos_profile_sensor_data
+
     msg_type = load_type(_only_type(topic, types), ("msg",))
     graph.node.create_subscription(msg_type, topic, callback, qos_profile_sensor_data, raw=raw)
     return msg_type
@@ -84,6 +84,10 @@ def node_names_known(graph: Graph, topic: str) -> bool:
 
 
 def publish_one(graph: Graph, publisher: Publisher, msg: Any) -> None:
+    from rclpy.executors import ExternalShutdownException
+
+    from ros_tutorials_common.ros import RCLError
+
     try:
         publisher.publish(msg)
     except RCLError:

@@ -3,10 +3,8 @@ wheels, and their versions (what ros2doctor learns from rosdistro comes from the
 
 from __future__ import annotations
 
-import importlib.metadata
 import re
 import sys
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 from ros2cmd.doctor.api import Report, Result, doctor_error, doctor_warn
@@ -47,6 +45,8 @@ def package_report(run: Doctor) -> Report:
 
 def local_packages() -> dict[str, str]:
     """Every package in this environment's ament index and its package.xml version."""
+    import xml.etree.ElementTree as ElementTree
+
     from ros_tutorials_common import ament
 
     found = {}
@@ -72,6 +72,8 @@ def project_packages() -> list[str]:
 
 def wheel_versions() -> dict[str, str]:
     """Installed distributions: normalised name -> version."""
+    import importlib.metadata  # the doctor's report only: not to build the parser
+
     return {
         re.sub(r"[-_.]+", "-", dist.metadata["Name"]).lower(): dist.version
         for dist in importlib.metadata.distributions()
@@ -81,6 +83,8 @@ def wheel_versions() -> dict[str, str]:
 
 def pinned_wheels() -> list[tuple[str, str, str | None]]:
     """The ROS 2 wheels this project pins: (name, pinned version, installed version)."""
+    import importlib.metadata
+
     try:
         requirements = importlib.metadata.requires(PROJECT) or []
     except importlib.metadata.PackageNotFoundError:
@@ -96,6 +100,8 @@ def pinned_wheels() -> list[tuple[str, str, str | None]]:
 
 
 def python_range() -> str | None:
+    import importlib.metadata
+
     try:
         return importlib.metadata.metadata(PROJECT)["Requires-Python"]
     except (importlib.metadata.PackageNotFoundError, KeyError):

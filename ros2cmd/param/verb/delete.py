@@ -4,9 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType, ParameterValue
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolFailure
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
@@ -17,9 +15,13 @@ HELP = "Delete parameter"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_name", help="Name of the parameter")
+    completion.attach(parser, parameter_name=completion.parameter_names)
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+    from rcl_interfaces.msg import ParameterType, ParameterValue
+
     node = graph.wait_for_node(args.node_name)
     unset = ParameterValue(type=ParameterType.PARAMETER_NOT_SET)
     result = set_each(graph, node, [ParameterMsg(name=args.parameter_name, value=unset)])[0]

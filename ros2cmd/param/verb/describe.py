@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph
-from ros2cmd.param.api import DESCRIBED_TYPES, add_node_argument, ask, get_values
+from ros2cmd.param.api import add_node_argument, ask, described_type, get_values
 
 HELP = "Show descriptive information about declared parameters"
 
@@ -14,6 +15,7 @@ HELP = "Show descriptive information about declared parameters"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_names", nargs="+", help="Names of the parameters")
+    completion.attach(parser, parameter_names=completion.parameter_names)
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
@@ -21,7 +23,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
     graph.finish()
     for descriptor in descriptors:
         print(f"Parameter name: {descriptor.name}")
-        print(f"  Type: {DESCRIBED_TYPES.get(descriptor.type, 'unknown')}")
+        print(f"  Type: {described_type(descriptor.type)}")
         if descriptor.description:
             print(f"  Description: {descriptor.description}")
         print("  Constraints:")

@@ -8,9 +8,6 @@ import os
 import sys
 from typing import Any
 
-import yaml
-from rclpy.parameter import PARAMETER_SEPARATOR_STRING
-
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
 from ros2cmd.param.api import add_node_argument, full_node_name, get_values, names
@@ -50,6 +47,9 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
 def _dump_text(graph: Graph, node: str) -> str:
     """/node: / ros__parameters:, the names sorted, nested at each '.'
     (qos_overrides./parameter_events.publisher.depth)."""
+    import yaml
+    from rclpy.parameter import PARAMETER_SEPARATOR_STRING
+
     node = full_node_name(node)
     values = get_values(graph, node, names(graph, node))
     tree: dict[str, Any] = {}

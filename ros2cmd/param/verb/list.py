@@ -9,9 +9,9 @@ import re
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, split_node_name
 from ros2cmd.param.api import (
-    DESCRIBED_TYPES,
     add_node_argument,
     ask,
+    described_type,
     names,
     names_of_each,
     nodes_with_parameters,
@@ -63,9 +63,7 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
             descriptors = ask(
                 graph, full_name, lambda client, f=found: client.describe_parameters(f)
             )
-            types = {
-                d.name: DESCRIBED_TYPES.get(d.type, "unknown") for d in descriptors.descriptors
-            }
+            types = {d.name: described_type(d.type) for d in descriptors.descriptors}
         listing.append((full_name, found, types))
     if not silent:
         graph.finish()

@@ -4,15 +4,16 @@ status 1."""
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType, ParameterValue
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph
-from ros2cmd.messages import parse_yaml
 from ros2cmd.param.api import add_node_argument, set_each, with_reason
 from ros_tutorials_common.bounded import parameter_problem
+
+if TYPE_CHECKING:
+    from rcl_interfaces.msg import ParameterValue
 
 HELP = "Set parameter"
 
@@ -20,10 +21,13 @@ HELP = "Set parameter"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_node_argument(parser)
     parser.add_argument("parameter_name", help="Name of the parameter")
+    completion.attach(parser, parameter_name=completion.parameter_names)
     parser.add_argument("value", help="Value of the parameter")
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+
     name = args.parameter_name
     value = typed_value(name, args.value)
     node = graph.wait_for_node(args.node_name)
@@ -39,6 +43,10 @@ def typed_value(name: str, text: str) -> ParameterValue:
     rclpy's get_parameter_value does (2 an integer, 2.0 a double, true a boolean, a list of
     one of those an array); anything else, a mixed list or a mapping too, is the text itself.
     """
+    from rcl_interfaces.msg import ParameterType, ParameterValue
+
+    from ros2cmd.messages import parse_yaml
+
     try:
         value = parse_yaml(text)
     except ToolError:  # not YAML (`a: b: c`): the text, as rclpy does

@@ -11,24 +11,14 @@ import getpass
 import os
 import re
 import shutil
-import subprocess
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ros2cmd.errors import ToolError
-from ros2cmd.pkg.templates import (
-    PYTHON_TESTS,
-    NewPackage,
-    cmakelists,
-    cpp_header,
-    cpp_library,
-    cpp_node,
-    package_xml,
-    python_node,
-    setup_cfg,
-    setup_py,
-    visibility_control,
-)
+
+if TYPE_CHECKING:  # the templates (dataclasses, xml) load when a package is created
+    from ros2cmd.pkg.templates import NewPackage
 
 HELP = "Create a new ROS 2 package"
 LICENSES = Path(__file__).resolve().parents[2] / "licenses"  # ros2cmd/licenses/
@@ -112,6 +102,8 @@ def main(_graph: None, args: argparse.Namespace) -> None:
             "Aborted since 'ament_python' packages can't be named 'test'. "
             "Please choose a different package name."
         )
+    from ros2cmd.pkg.templates import NewPackage
+
     maintainer = args.maintainer_name or getpass.getuser()
     package = NewPackage(
         name=args.package_name,
@@ -175,6 +167,8 @@ def check_writable(package: NewPackage) -> None:
             )
     from catkin_pkg import package as catkin_package  # here: `ros2 pkg list` needs it not
 
+    from ros2cmd.pkg.templates import package_xml
+
     try:  # what colcon reads the package.xml with: a file it would refuse is not written
         catkin_package.parse_package_string(package_xml(package), warnings=[])
     except catkin_package.InvalidPackage as error:
@@ -184,6 +178,19 @@ def check_writable(package: NewPackage) -> None:
 
 def write_package(package: NewPackage, destination: str) -> None:
     """Write the package's files, saying each one as ros2pkg does, in its order."""
+    from ros2cmd.pkg.templates import (
+        PYTHON_TESTS,
+        cmakelists,
+        cpp_header,
+        cpp_library,
+        cpp_node,
+        package_xml,
+        python_node,
+        setup_cfg,
+        setup_py,
+        visibility_control,
+    )
+
     root = _folder(destination, package.name)
     _file(root, "package.xml", package_xml(package))
     name, node, library = package.name, package.node_name, package.library_name
@@ -238,6 +245,8 @@ def _file(folder: str, name: str, content: str) -> None:
 
 def git_email() -> str:
     """The user's `git config user.email`, as ros2pkg takes it ('' if none)."""
+    import subprocess  # only to ask git: not to build the parser
+
     git = shutil.which("git")
     if git is None:
         return ""

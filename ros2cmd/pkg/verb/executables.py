@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.pkg.api import executables
 from ros_tutorials_common import ament
 
@@ -12,6 +13,7 @@ HELP = "Output a list of package specific executables"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("package_name", nargs="?", help="The package name")
+    completion.attach(parser, package_name=completion.package_names)
     parser.add_argument(
         "--full-path", action="store_true", help="Show full path of each executable"
     )

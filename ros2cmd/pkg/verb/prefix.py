@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.pkg.api import package_prefix
 from ros_tutorials_common import ament, packages
@@ -13,6 +14,7 @@ HELP = "Output the prefix path of a package"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("package_name", help="The package name")
+    completion.attach(parser, package_name=completion.package_names)
     parser.add_argument("--share", action="store_true", help="Show share directory for the package")
 
 

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import xml.etree.ElementTree as ElementTree
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.pkg.api import package_prefix
 
@@ -13,10 +13,13 @@ HELP = "Output the XML of the package manifest or a specific tag"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("package_name", help="The package name")
+    completion.attach(parser, package_name=completion.package_names)
     parser.add_argument("-t", "--tag", help="The XML tag to output (e.g. 'version')")
 
 
 def main(_graph: None, args: argparse.Namespace) -> None:
+    import xml.etree.ElementTree as ElementTree
+
     name, tag = args.package_name, args.tag
     manifest = package_prefix(name) / "share" / name / "package.xml"
     if not manifest.is_file():

@@ -9,6 +9,7 @@ import sys
 import time
 from typing import Any
 
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.messages import fill_message, parse_yaml
@@ -27,6 +28,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = parser
     p.add_argument("service_name", help="Name of the ROS service to call (e.g. '/add_two_ints')")
     p.add_argument("service_type", help="Type of the ROS service (e.g. 'std_srvs/srv/Empty')")
+    completion.attach(
+        p, service_name=completion.service_names, service_type=completion.types_for_service
+    )
     group = p.add_mutually_exclusive_group()
     group.add_argument(
         "values",

@@ -11,27 +11,22 @@ import sys
 from collections import deque
 from typing import Any
 
-import yaml
-from rclpy.qos import qos_profile_services_default
-from service_msgs.msg import ServiceEventInfo
-
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name, until_stopped
-from ros2cmd.messages import MessageDumper, message_to_csv, message_to_ordered
+from ros2cmd.messages import message_dumper, message_to_csv, message_to_ordered
 from ros2cmd.service.api import wait_for_types
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
 
 HELP = "Echo a service"
 DEFAULT_TRUNCATE_LENGTH = 128  # longer strings and arrays are shortened
-EVENT_TYPES = {
-    getattr(ServiceEventInfo, name): name
-    for name in ("REQUEST_SENT", "REQUEST_RECEIVED", "RESPONSE_SENT", "RESPONSE_RECEIVED")
-}
+EVENT_NAMES = ("REQUEST_SENT", "REQUEST_RECEIVED", "RESPONSE_SENT", "RESPONSE_RECEIVED")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = parser
     p.add_argument("service_name", help="Name of the ROS service to echo (e.g. '/add_two_ints')")
+    completion.attach(p, service_name=completion.service_names)
     p.add_argument(
         "service_type",
         nargs="?",
@@ -76,6 +71,8 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
         "no_str": args.no_str,
         "flow_style": args.flow_style,
     }
+    from rclpy.qos import qos_profile_services_default
+
     with until_stopped():
         type_name = args.service_type
         if type_name is None:
@@ -110,16 +107,21 @@ def event_text(
 ) -> str:
     """One service event as `ros2 service echo` prints it: YAML with the event type's name,
     then ``---``; or with csv one line of values."""
+    from service_msgs.msg import ServiceEventInfo
+
+    event_types = {getattr(ServiceEventInfo, name): name for name in EVENT_NAMES}
     options = {"truncate_length": truncate_length, "no_arr": no_arr, "no_str": no_str}
     if csv:
         return message_to_csv(event, **options)
     data = message_to_ordered(event, **options)
     info_data = data.get("info")
     if isinstance(info_data, dict) and "event_type" in info_data:
-        info_data["event_type"] = EVENT_TYPES.get(info_data["event_type"], info_data["event_type"])
+        info_data["event_type"] = event_types.get(info_data["event_type"], info_data["event_type"])
+    import yaml
+
     text = yaml.dump(
         data,
-        Dumper=MessageDumper,
+        Dumper=message_dumper(),
         allow_unicode=True,
         width=sys.maxsize,
         default_flow_style=flow_style,

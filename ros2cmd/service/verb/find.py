@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph
 from ros2cmd.service.api import add_hidden_option, service_types, with_hidden
 from ros2cmd.sub_verbs import add_count_option
@@ -16,6 +17,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "service_type", help="Name of the ROS service type (e.g. 'std_srvs/srv/Empty')"
     )
+    completion.attach(parser, service_type=completion.service_types)
     add_count_option(parser, "services")
     add_hidden_option(parser)
     parser.set_defaults(daemon=True)

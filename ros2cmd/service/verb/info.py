@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name, split_node_name
 from ros2cmd.service.api import add_hidden_option, service_types, wait_for_types, with_hidden
 
@@ -13,6 +14,7 @@ HELP = "Print information about a service"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("service_name", help="Name of the ROS service (e.g. '/add_two_ints')")
+    completion.attach(parser, service_name=completion.service_names)
     parser.add_argument("-v", "--verbose", action="store_true", help="also name the nodes")
     add_hidden_option(parser)
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.service.api import add_hidden_option, wait_for_types, with_hidden
 
@@ -11,7 +12,9 @@ HELP = "Output a service's type"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.set_defaults(daemon=True)
     parser.add_argument("service_name", help="Name of the ROS service (e.g. '/clear')")
+    completion.attach(parser, service_name=completion.service_names)
     add_hidden_option(parser)
 
 

@@ -6,6 +6,7 @@ import argparse
 import time
 from collections import deque
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.topic.api import add_graph_options, every_second, subscribe_when_known
 from ros_tutorials_common.cli import positive_int
@@ -16,6 +17,7 @@ BW_WINDOW = 100  # messages, as ros2topic bw
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic", help="Topic name to monitor for bandwidth utilization")
+    completion.attach(parser, topic=completion.topic_names)
     parser.add_argument(
         "--window",
         "-w",

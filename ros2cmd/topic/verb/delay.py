@@ -7,8 +7,7 @@ import math
 from collections import deque
 from typing import Any
 
-from rclpy.time import Time
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.topic.api import (
@@ -26,6 +25,7 @@ HELP = "Display delay of topic from timestamp in header"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic", help="Topic name to calculate the delay for")
+    completion.attach(parser, topic=completion.topic_names)
     parser.add_argument(
         "--window",
         "-w",
@@ -37,6 +37,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.time import Time
+
     with until_stopped():
         delays: deque[int] = deque(maxlen=args.window)  # ns
         new = [False]

@@ -10,8 +10,7 @@ import time
 from collections import deque
 from typing import Any
 
-from rclpy.event_handler import SubscriptionEventCallbacks
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import DEFAULT_TIMEOUT, Graph, absolute_name, until_stopped
 from ros2cmd.messages import message_to_csv, message_to_yaml
@@ -86,6 +85,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "Set a timeout in seconds for waiting: for the topic to appear (default "
         f"{DEFAULT_TIMEOUT:g}) and, when given, for messages (then exit)",
     )
+    completion.attach(p, topic_name=completion.topic_names, message_type=completion.types_for_topic)
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
@@ -94,6 +94,8 @@ def main(graph: Graph, args: argparse.Namespace) -> None:
 
 
 def _echo(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.event_handler import SubscriptionEventCallbacks
+
     deadline = time.monotonic() + args.timeout if args.timeout_given else math.inf
     topic = absolute_name(args.topic_name)
     msg_type = single_type(graph, topic, args.message_type)

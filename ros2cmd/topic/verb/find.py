@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph
 from ros2cmd.sub_verbs import add_count_option
 from ros2cmd.topic.api import (
@@ -21,6 +22,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "topic_type", help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')"
     )
+    completion.attach(parser, topic_type=completion.message_types)
     add_count_option(parser, "topics")
     add_hidden_option(parser)
     add_graph_options(parser)

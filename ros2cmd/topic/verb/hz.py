@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 
+from ros2cmd import completion
 from ros2cmd.graph import Graph, until_stopped
 from ros2cmd.topic.api import (
     HZ_WINDOW,
@@ -20,6 +21,7 @@ HELP = "Print the average publishing rate to screen"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("topic_name", help="Name of the ROS topic to listen to (e.g. '/chatter')")
+    completion.attach(parser, topic_name=completion.topic_names)
     parser.add_argument(
         "--window",
         "-w",

@@ -9,10 +9,9 @@ from __future__ import annotations
 import argparse
 import contextlib
 import time
+from typing import TYPE_CHECKING
 
-from rclpy.duration import Duration
-from rclpy.publisher import Publisher
-
+from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, until_stopped
 from ros2cmd.messages import fill_message, parse_yaml
@@ -23,6 +22,9 @@ from ros2cmd.wait import spin_until
 from ros_tutorials_common.bounded import InputError, read_text
 from ros_tutorials_common.cli import positive_rate, positive_seconds
 
+if TYPE_CHECKING:
+    from rclpy.publisher import Publisher
+
 HELP = "Publish a message to a topic"
 WAIT_PERIOD = 0.1  # s between looks for matching subscriptions (-w)
 
@@ -31,6 +33,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = parser
     p.add_argument("topic_name", help="Name of the ROS topic to publish to (e.g. '/chatter')")
     p.add_argument("message_type", help="Type of the ROS message (e.g. 'std_msgs/String')")
+    completion.attach(p, topic_name=completion.topic_names, message_type=completion.types_for_topic)
     group = p.add_mutually_exclusive_group()
     group.add_argument(
         "values",
@@ -91,6 +94,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(graph: Graph, args: argparse.Namespace) -> None:
+    from rclpy.duration import Duration
+
     times = 1 if args.once else args.times
     wait_for = args.wait_matching_subscriptions
     if wait_for is None:

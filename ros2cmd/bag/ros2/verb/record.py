@@ -7,6 +7,7 @@ import argparse
 import os
 from typing import Any
 
+from ros2cmd import completion
 from ros2cmd.bag.options import (
     limit_arguments,
 )
@@ -57,6 +58,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="Topic",
         nargs="+",
         help="Space-delimited list of topics to record.",
+    )
+    completion.attach(
+        parser, topics_positional=completion.topic_names, topics=completion.topic_names
     )
     a(
         "--services",
