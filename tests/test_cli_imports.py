@@ -13,6 +13,7 @@ import argparse
 import os
 import subprocess
 import sys
+import time
 
 import pytest
 from helpers import TIMEOUT
@@ -207,8 +208,22 @@ def _served_without_rclpy(*args: str) -> subprocess.CompletedProcess:
     pytest.fail(f"`ros2 {' '.join(args)}` loaded {tries[-1]} in each of {len(tries)} runs")
 
 
+def _daemon_sees(node: str) -> None:
+    """Wait until the daemon answers complete with the node in it (it declines while a
+    process it counted has not been heard from, on a busy machine for a while)."""
+    deadline = time.monotonic() + TIMEOUT
+    while True:
+        answer = daemon.ask_graph()
+        if answer is not None and node in answer.node_names():
+            return
+        if time.monotonic() > deadline:
+            pytest.fail(f"the daemon did not answer with {node} within {TIMEOUT:.0f} s")
+        time.sleep(0.1)  # the daemon answers after its own wait: this only paces the asking
+
+
 def test_what_the_daemon_answers_loads_no_rclpy(running_daemon, node_process):
     node_process("-m", "ros_tutorials_topic.publisher").wait_for_text("send msg")
+    _daemon_sees("/topic_publisher")
     assert "/ros_tutorial_msg\n" in _served_without_rclpy("topic", "list").stdout
     assert "/topic_publisher\n" in _served_without_rclpy("node", "list").stdout
     info = _served_without_rclpy("node", "info", "/topic_publisher").stdout
