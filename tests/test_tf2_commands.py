@@ -7,11 +7,13 @@ Node(package='tf2_ros', executable='static_transform_publisher') found by the pa
 from __future__ import annotations
 
 import math
+import os
+import subprocess
 import sys
 
 import pytest
 from geometry_msgs.msg import TransformStamped
-from helpers import BIN, ok, run
+from helpers import BIN, TIMEOUT, ok, run
 
 from ros_tutorials_common import packages
 from tf2_ros.static_transform_publisher import ArgumentError, parse
@@ -165,3 +167,48 @@ def test_the_commands_are_the_packages_executables():
         "tf2_ros.static_transform_publisher",
     ]
     assert packages.executable_commands("tf2_py") == {}  # a library: nothing to run
+
+
+# The tool's first node is made right as Ctrl-C comes: rclpy's handler shuts ROS down and the
+# KeyboardInterrupt is raised there ("raised"), or it is lost in code C called and rcl then
+# refuses the node in the shut-down context ("lost"). The signal is real; rclpy is untouched
+# but for the moment it comes.
+CTRL_C_AS_THE_NODE_IS_MADE = """
+import os, runpy, signal, sys
+import rclpy.node
+original = rclpy.node.Node.__init__
+def first_node(self, *args, **kwargs):
+    rclpy.node.Node.__init__ = original
+    try:
+        signal.raise_signal(signal.SIGINT)
+    except KeyboardInterrupt:
+        if os.environ["CTRL_C"] == "raised":
+            raise
+    original(self, *args, **kwargs)
+rclpy.node.Node.__init__ = first_node
+module = sys.argv.pop(1)
+runpy.run_module(module, run_name="__main__", alter_sys=True)
+"""
+
+
+@pytest.mark.parametrize("how", ["raised", "lost"])
+@pytest.mark.parametrize(
+    ("module", "args", "status"),
+    [
+        ("tf2_ros.tf2_echo", ["world", "turtle1"], 0),
+        ("tf2_ros.tf2_monitor", [], 0),
+        ("tf2_ros.static_transform_publisher", ["--frame-id", "a", "--child-frame-id", "b"], 0),
+        ("tf2_tools.view_frames", ["-o", "never_written"], 130),
+    ],
+)
+def test_ctrl_c_as_a_tool_makes_its_node_ends_it_with_no_traceback(
+    module, args, status, how, ros_domain, tmp_path
+):
+    result = subprocess.run(
+        [sys.executable, "-c", CTRL_C_AS_THE_NODE_IS_MADE, module, *args],
+        capture_output=True, text=True, timeout=TIMEOUT, cwd=tmp_path,
+        env={**os.environ, "CTRL_C": how},
+    )  # fmt: skip
+    assert "Traceback" not in result.stderr, result.stderr
+    assert result.returncode == status, result.stderr
+    assert not list(tmp_path.iterdir())  # view_frames stopped before it wrote anything

@@ -26,9 +26,11 @@ import time
 from collections.abc import Sequence
 
 import rclpy
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException
 from rclpy.time import Time
 
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import init, user_args
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
@@ -123,9 +125,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     period = min(1.0 / rate, 86400.0)  # Python's sleep refuses a period of 1e300 s
     source, target = args[0], args[1]
     init(argv)
-    node = rclpy.create_node("tf2_echo")
-    listener = None
+    node = listener = None
     try:
+        node = rclpy.create_node("tf2_echo")
         buffer = Buffer()
         listener = TransformListener(buffer, node, spin_thread=True)
         logger = node.get_logger()
@@ -150,13 +152,17 @@ def main(argv: Sequence[str] | None = None) -> int:
                 print(buffer.all_frames_as_string())
             sys.stdout.flush()
             time.sleep(period)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
+        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
+    except RuntimeError as error:  # the same refusal, by rcl
+        if not is_shutdown_race(error):
+            raise
     finally:
         if listener is not None:  # its thread must be done with the node before it goes
             listener.executor.shutdown()
             listener.dedicated_listener_thread.join()
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
     return 0
 

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import rclpy
 import yaml
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from tf2_msgs.srv import FrameGraph
 
@@ -134,20 +135,24 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv if argv is None else argv
     args = parse_args(user_args(argv))
     init(argv)
-    node = rclpy.create_node("view_frames")
+    node = None
     try:
+        node = rclpy.create_node("view_frames")
         return view_frames(node, args)
     except ToolError as error:
         print(f"view_frames: {error}", file=sys.stderr)
         return 1
-    except ExternalShutdownException:  # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C
+    # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C. NotInitializedException: rclpy
+    # refusing the node in the context a Ctrl-C (or SIGTERM) has just shut down.
+    except (ExternalShutdownException, NotInitializedException):
         return EXIT_INTERRUPTED
     except RuntimeError as error:  # the same, seen by rcl first ("context is not valid")
         if is_shutdown_race(error):
             return EXIT_INTERRUPTED
         raise
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 
