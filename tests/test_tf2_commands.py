@@ -212,3 +212,19 @@ def test_ctrl_c_as_a_tool_makes_its_node_ends_it_with_no_traceback(
     assert "Traceback" not in result.stderr, result.stderr
     assert result.returncode == status, result.stderr
     assert not list(tmp_path.iterdir())  # view_frames stopped before it wrote anything
+
+
+def test_tf2_echo_ends_quietly_when_its_reader_has_gone(ros_domain):
+    # `ros2 run tf2_ros tf2_echo a a 10 | head -1`: one frame is its own transform at once.
+    echo = subprocess.Popen(
+        [ROS2, "run", "tf2_ros", "tf2_echo", "a", "a", "10"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )  # fmt: skip
+    try:
+        assert echo.stdout.readline() == "At time 0.0\n"
+        echo.stdout.close()
+        _, errors = echo.communicate(timeout=TIMEOUT)
+    finally:
+        echo.kill()
+    assert "Traceback" not in errors, errors
+    assert echo.returncode == 0, errors

@@ -30,6 +30,7 @@ from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException
 from rclpy.time import Time
 
+from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import init, user_args
 from tf2_py import TransformException
@@ -110,6 +111,7 @@ def format_transform(transform: object) -> str:
     )
 
 
+@quiet_on_closed_pipe  # `tf2_echo a b | head`
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
