@@ -228,3 +228,19 @@ def test_tf2_echo_ends_quietly_when_its_reader_has_gone(ros_domain):
         echo.kill()
     assert "Traceback" not in errors, errors
     assert echo.returncode == 0, errors
+
+
+def test_sigterm_ends_tf2_echo_at_once_whatever_its_rate(ros_domain):
+    # One echo every 1000 s: SIGTERM must not wait for the next.
+    echo = subprocess.Popen(
+        [ROS2, "run", "tf2_ros", "tf2_echo", "a", "a", "0.001"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )  # fmt: skip
+    try:
+        assert echo.stdout.readline() == "At time 0.0\n"
+        echo.terminate()
+        _, errors = echo.communicate(timeout=TIMEOUT)
+    finally:
+        echo.kill()
+    assert "Traceback" not in errors, errors
+    assert echo.returncode == 0, errors

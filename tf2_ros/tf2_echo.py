@@ -111,6 +111,16 @@ def format_transform(transform: object) -> str:
     )
 
 
+def pause(listener: TransformListener, seconds: float) -> None:
+    """Sleep SECONDS, less if ROS shuts down meanwhile (SIGTERM: rclpy's handler ends the
+    listener's spin, where a plain sleep would keep a slow echo rate's period)."""
+    thread = listener.dedicated_listener_thread
+    if thread.is_alive():
+        thread.join(seconds)
+    else:
+        time.sleep(seconds)
+
+
 @quiet_on_closed_pipe  # `tf2_echo a b | head`
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
@@ -140,7 +150,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             logger.info(
                 f"Waiting for transform {source} ->  {target}: {reason}", throttle_duration_sec=1.0
             )
-            time.sleep(min(period, 1.0))
+            pause(listener, min(period, 1.0))
         printed = False
         while rclpy.ok():
             try:
@@ -153,7 +163,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 print("The current list of frames is:")
                 print(buffer.all_frames_as_string())
             sys.stdout.flush()
-            time.sleep(period)
+            pause(listener, period)
     except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
         pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
     except RuntimeError as error:  # the same refusal, by rcl
