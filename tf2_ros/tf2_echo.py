@@ -111,14 +111,13 @@ def format_transform(transform: object) -> str:
     )
 
 
-def pause(listener: TransformListener, seconds: float) -> None:
-    """Sleep SECONDS, less if ROS shuts down meanwhile (SIGTERM: rclpy's handler ends the
-    listener's spin, where a plain sleep would keep a slow echo rate's period)."""
-    thread = listener.dedicated_listener_thread
-    if thread.is_alive():
-        thread.join(seconds)
-    else:
-        time.sleep(seconds)
+def pause(seconds: float) -> None:
+    """Sleep SECONDS, less if ROS shuts down meanwhile (SIGTERM: rclpy's handler shuts it down
+    and raises nothing here). Not Thread.join(timeout): a Ctrl-C inside one marks the thread
+    stopped while it runs (Python 3.11), and it is then not waited for at the end."""
+    deadline = time.monotonic() + seconds
+    while rclpy.ok() and (left := deadline - time.monotonic()) > 0:
+        time.sleep(min(left, 0.1))
 
 
 @quiet_on_closed_pipe  # `tf2_echo a b | head`
@@ -150,7 +149,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             logger.info(
                 f"Waiting for transform {source} ->  {target}: {reason}", throttle_duration_sec=1.0
             )
-            pause(listener, min(period, 1.0))
+            pause(min(period, 1.0))
         printed = False
         while rclpy.ok():
             try:
@@ -163,7 +162,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 print("The current list of frames is:")
                 print(buffer.all_frames_as_string())
             sys.stdout.flush()
-            pause(listener, period)
+            pause(period)
     except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
         pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
     except RuntimeError as error:  # the same refusal, by rcl
