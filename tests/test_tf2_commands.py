@@ -244,3 +244,30 @@ def test_sigterm_ends_tf2_echo_at_once_whatever_its_rate(ros_domain):
         echo.kill()
     assert "Traceback" not in errors, errors
     assert echo.returncode == 0, errors
+
+
+# A Ctrl-C whose KeyboardInterrupt is lost before rclpy installs its handler (raised in code
+# whose errors C drops): the press is counted, and view_frames must not listen on regardless.
+LOST_BEFORE_RCLPY_INIT = """
+import runpy, signal, sys
+import rclpy
+original = rclpy.init
+def init(*args, **kwargs):
+    try:
+        signal.raise_signal(signal.SIGINT)
+    except KeyboardInterrupt:
+        pass
+    original(*args, **kwargs)
+rclpy.init = init
+runpy.run_module("tf2_tools.view_frames", run_name="__main__", alter_sys=True)
+"""
+
+
+def test_view_frames_stops_on_a_ctrl_c_lost_before_ros_started(ros_domain, tmp_path):
+    result = subprocess.run(
+        [sys.executable, "-c", LOST_BEFORE_RCLPY_INIT, "-t", "1000", "-o", "never_written"],
+        capture_output=True, text=True, timeout=TIMEOUT, cwd=tmp_path,
+    )  # fmt: skip
+    assert result.returncode == 130, result.stderr
+    assert "Traceback" not in result.stderr, result.stderr
+    assert not list(tmp_path.iterdir())
