@@ -7,11 +7,13 @@ Node(package='tf2_ros', executable='static_transform_publisher') found by the pa
 from __future__ import annotations
 
 import math
+import os
+import subprocess
 import sys
 
 import pytest
 from geometry_msgs.msg import TransformStamped
-from helpers import BIN, ok, run
+from helpers import BIN, TIMEOUT, ok, run
 
 from ros_tutorials_common import packages
 from tf2_ros.static_transform_publisher import ArgumentError, parse
@@ -165,3 +167,107 @@ def test_the_commands_are_the_packages_executables():
         "tf2_ros.static_transform_publisher",
     ]
     assert packages.executable_commands("tf2_py") == {}  # a library: nothing to run
+
+
+# The tool's first node is made right as Ctrl-C comes: rclpy's handler shuts ROS down and the
+# KeyboardInterrupt is raised there ("raised"), or it is lost in code C called and rcl then
+# refuses the node in the shut-down context ("lost"). The signal is real; rclpy is untouched
+# but for the moment it comes.
+CTRL_C_AS_THE_NODE_IS_MADE = """
+import os, runpy, signal, sys
+import rclpy.node
+original = rclpy.node.Node.__init__
+def first_node(self, *args, **kwargs):
+    rclpy.node.Node.__init__ = original
+    try:
+        signal.raise_signal(signal.SIGINT)
+    except KeyboardInterrupt:
+        if os.environ["CTRL_C"] == "raised":
+            raise
+    original(self, *args, **kwargs)
+rclpy.node.Node.__init__ = first_node
+module = sys.argv.pop(1)
+runpy.run_module(module, run_name="__main__", alter_sys=True)
+"""
+
+
+@pytest.mark.parametrize("how", ["raised", "lost"])
+@pytest.mark.parametrize(
+    ("module", "args", "status"),
+    [
+        ("tf2_ros.tf2_echo", ["world", "turtle1"], 0),
+        ("tf2_ros.tf2_monitor", [], 0),
+        ("tf2_ros.static_transform_publisher", ["--frame-id", "a", "--child-frame-id", "b"], 0),
+        ("tf2_tools.view_frames", ["-o", "never_written"], 130),
+    ],
+)
+def test_ctrl_c_as_a_tool_makes_its_node_ends_it_with_no_traceback(
+    module, args, status, how, ros_domain, tmp_path
+):
+    result = subprocess.run(
+        [sys.executable, "-c", CTRL_C_AS_THE_NODE_IS_MADE, module, *args],
+        capture_output=True, text=True, timeout=TIMEOUT, cwd=tmp_path,
+        env={**os.environ, "CTRL_C": how},
+    )  # fmt: skip
+    assert "Traceback" not in result.stderr, result.stderr
+    assert result.returncode == status, result.stderr
+    assert not list(tmp_path.iterdir())  # view_frames stopped before it wrote anything
+
+
+def test_tf2_echo_ends_quietly_when_its_reader_has_gone(ros_domain):
+    # `ros2 run tf2_ros tf2_echo a a 10 | head -1`: one frame is its own transform at once.
+    echo = subprocess.Popen(
+        [ROS2, "run", "tf2_ros", "tf2_echo", "a", "a", "10"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )  # fmt: skip
+    try:
+        assert echo.stdout.readline() == "At time 0.0\n"
+        echo.stdout.close()
+        _, errors = echo.communicate(timeout=TIMEOUT)
+    finally:
+        echo.kill()
+    assert "Traceback" not in errors, errors
+    assert echo.returncode == 0, errors
+
+
+def test_sigterm_ends_tf2_echo_at_once_whatever_its_rate(ros_domain):
+    # One echo every 1000 s: SIGTERM must not wait for the next.
+    echo = subprocess.Popen(
+        [ROS2, "run", "tf2_ros", "tf2_echo", "a", "a", "0.001"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )  # fmt: skip
+    try:
+        assert echo.stdout.readline() == "At time 0.0\n"
+        echo.terminate()
+        _, errors = echo.communicate(timeout=TIMEOUT)
+    finally:
+        echo.kill()
+    assert "Traceback" not in errors, errors
+    assert echo.returncode == 0, errors
+
+
+# A Ctrl-C whose KeyboardInterrupt is lost before rclpy installs its handler (raised in code
+# whose errors C drops): the press is counted, and view_frames must not listen on regardless.
+LOST_BEFORE_RCLPY_INIT = """
+import runpy, signal, sys
+import rclpy
+original = rclpy.init
+def init(*args, **kwargs):
+    try:
+        signal.raise_signal(signal.SIGINT)
+    except KeyboardInterrupt:
+        pass
+    original(*args, **kwargs)
+rclpy.init = init
+runpy.run_module("tf2_tools.view_frames", run_name="__main__", alter_sys=True)
+"""
+
+
+def test_view_frames_stops_on_a_ctrl_c_lost_before_ros_started(ros_domain, tmp_path):
+    result = subprocess.run(
+        [sys.executable, "-c", LOST_BEFORE_RCLPY_INIT, "-t", "1000", "-o", "never_written"],
+        capture_output=True, text=True, timeout=TIMEOUT, cwd=tmp_path,
+    )  # fmt: skip
+    assert result.returncode == 130, result.stderr
+    assert "Traceback" not in result.stderr, result.stderr
+    assert not list(tmp_path.iterdir())

@@ -87,6 +87,17 @@ def test_awaiting_a_transform_now_and_later():
     assert done.value.value == sent
 
 
+def test_a_wait_given_up_is_forgotten():
+    # A program that cancels its waits (one per timer tick) must not leave a callback per wait
+    # that every new transform runs, for ever.
+    buffer = Buffer()
+    for _ in range(3):
+        buffer.wait_for_transform_async("world", "turtle9", Time()).cancel()
+    assert buffer._new_data_callbacks == []
+    buffer.set_transform(transform("world", "turtle1", Time(seconds=5)), "test")
+    assert buffer._new_data_callbacks == []
+
+
 def test_lookup_with_a_timeout_waits_then_raises_tf2s_error():
     buffer = Buffer()
     started = time.monotonic()

@@ -171,6 +171,15 @@ def test_static_broadcaster_refuses_a_wrong_count_and_world():
         "world", "0", "0", "0", "0", "0", "0",
     )  # fmt: skip
     assert result.returncode == 2 and 'Your static turtle name cannot be "world"' in result.stderr
+    result = run(
+        "ros2", "run", "turtle_tf2_py", "static_turtle_tf2_broadcaster",
+        "turtle", "0", "0", "one", "0", "0", "0",
+    )  # fmt: skip
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.strip().endswith(
+        "x y z roll pitch yaw must be numbers: could not convert string to float: 'one'"
+    ), result.stderr
+    assert "Traceback" not in result.stderr
 
 
 def test_view_frames_with_no_tf_data_and_bad_options(tmp_path, own_domain):

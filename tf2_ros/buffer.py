@@ -173,18 +173,23 @@ class Buffer(BufferCore, BufferInterface):
 
         def on_new_data() -> None:
             with lock:
-                if future.done() or not possible():
+                if not future.done() and possible():
+                    try:
+                        future.set_result(lookup())
+                    except Exception as error:  # to the awaiting code, not the listener's
+                        future.set_exception(error)
+                if not future.done():
                     return
-                try:
-                    future.set_result(lookup())
-                except Exception as error:  # to the awaiting code, not the listener's callback
-                    future.set_exception(error)
+            forget(future)
+
+        def forget(_: Future) -> None:
             with self._new_data:
                 if on_new_data in self._new_data_callbacks:
                     self._new_data_callbacks.remove(on_new_data)
 
         with self._new_data:
             self._new_data_callbacks.append(on_new_data)
+        future.add_done_callback(forget)  # a cancelled wait too
         on_new_data()
         return future
 

@@ -23,9 +23,11 @@ from collections.abc import Sequence
 import rclpy
 from geometry_msgs.msg import TransformStamped
 from rcl_interfaces.msg import ParameterDescriptor
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER, init, user_args
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
 
@@ -234,8 +236,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         rclpy.spin(node)
     except SameFrames:
         return 1
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
+        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
+    except RuntimeError as error:  # the same refusal, by rcl
+        if not is_shutdown_race(error):
+            raise
     finally:
         if node is not None:
             node.destroy_node()

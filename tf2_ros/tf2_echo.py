@@ -26,9 +26,12 @@ import time
 from collections.abc import Sequence
 
 import rclpy
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException
 from rclpy.time import Time
 
+from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import init, user_args
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
@@ -108,6 +111,16 @@ def format_transform(transform: object) -> str:
     )
 
 
+def pause(seconds: float) -> None:
+    """Sleep SECONDS, less if ROS shuts down meanwhile (SIGTERM: rclpy's handler shuts it down
+    and raises nothing here). Not Thread.join(timeout): a Ctrl-C inside one marks the thread
+    stopped while it runs (Python 3.11), and it is then not waited for at the end."""
+    deadline = time.monotonic() + seconds
+    while rclpy.ok() and (left := deadline - time.monotonic()) > 0:
+        time.sleep(min(left, 0.1))
+
+
+@quiet_on_closed_pipe  # `tf2_echo a b | head`
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
@@ -123,9 +136,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     period = min(1.0 / rate, 86400.0)  # Python's sleep refuses a period of 1e300 s
     source, target = args[0], args[1]
     init(argv)
-    node = rclpy.create_node("tf2_echo")
-    listener = None
+    node = listener = None
     try:
+        node = rclpy.create_node("tf2_echo")
         buffer = Buffer()
         listener = TransformListener(buffer, node, spin_thread=True)
         logger = node.get_logger()
@@ -136,7 +149,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             logger.info(
                 f"Waiting for transform {source} ->  {target}: {reason}", throttle_duration_sec=1.0
             )
-            time.sleep(min(period, 1.0))
+            pause(min(period, 1.0))
         printed = False
         while rclpy.ok():
             try:
@@ -149,14 +162,18 @@ def main(argv: Sequence[str] | None = None) -> int:
                 print("The current list of frames is:")
                 print(buffer.all_frames_as_string())
             sys.stdout.flush()
-            time.sleep(period)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+            pause(period)
+    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
+        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
+    except RuntimeError as error:  # the same refusal, by rcl
+        if not is_shutdown_race(error):
+            raise
     finally:
         if listener is not None:  # its thread must be done with the node before it goes
             listener.executor.shutdown()
             listener.dedicated_listener_thread.join()
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
     return 0
 

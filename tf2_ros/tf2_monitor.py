@@ -18,12 +18,15 @@ from collections import deque
 from collections.abc import Sequence
 
 import rclpy
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from rclpy.time import Time
 from tf2_msgs.msg import TFMessage
 
+from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from ros_tutorials_common.ros.node_main import init, user_args
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
@@ -90,19 +93,19 @@ class Monitor:
         return "\n".join(broadcasters)
 
 
+@quiet_on_closed_pipe
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
     init(argv)
-    node = rclpy.create_node("tf2_monitor_main")
-    if len(args) not in (0, 2):
-        node.get_logger().info("TF_Monitor: usage: tf2_monitor framea frameb")
-        node.destroy_node()
-        rclpy.try_shutdown()
-        return 255
+    node = None
     executor = SingleThreadedExecutor()
     spinner = threading.Thread(target=_spin, args=(executor,), daemon=True)
     try:
+        node = rclpy.create_node("tf2_monitor_main")
+        if len(args) not in (0, 2):
+            node.get_logger().info("TF_Monitor: usage: tf2_monitor framea frameb")
+            return 255
         buffer = Buffer(node=node)
         TransformListener(buffer, node)
         monitor = Monitor(node)
@@ -129,13 +132,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         else:
             print("Gathering data on all frames for 10 seconds...", flush=True)
         _report_forever(buffer, monitor, args, chain)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
+        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
+    except RuntimeError as error:  # the same refusal, by rcl
+        if not is_shutdown_race(error):
+            raise
     finally:
         executor.shutdown(timeout_sec=1.0)
         if spinner.is_alive():  # its thread must be done with the node before it goes
             spinner.join()
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
     return 0
 

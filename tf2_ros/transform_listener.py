@@ -10,7 +10,6 @@ that does not spin.
 
 from __future__ import annotations
 
-import contextlib
 import threading
 from threading import Thread
 
@@ -20,6 +19,7 @@ from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from tf2_msgs.msg import TFMessage
 
+from ros_tutorials_common.lesson_scripts import is_shutdown_race
 from tf2_ros.buffer import Buffer
 
 __all__ = ["TransformListener"]
@@ -67,8 +67,13 @@ class TransformListener:
 
     def _spin(self) -> None:
         self.executor.add_node(self.node)
-        with contextlib.suppress(ExternalShutdownException):  # rclpy shut down: work over
+        try:
             self.executor.spin()
+        except ExternalShutdownException:  # rclpy shut down: work over
+            pass
+        except RuntimeError as error:  # the same, when rcl saw it first (SIGTERM, Ctrl-C)
+            if not is_shutdown_race(error):
+                raise
 
     def __del__(self) -> None:
         executor = getattr(self, "executor", None)

@@ -18,13 +18,14 @@ from pathlib import Path
 
 import rclpy
 import yaml
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from tf2_msgs.srv import FrameGraph
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph_view.model import MAX_VERTICES, GraphModel
 from ros2cmd.graph_view.render import write
-from ros2cmd.wait import spin_until
+from ros2cmd.wait import Interrupted, spin_until
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
 from ros_tutorials_common.lesson_scripts import is_shutdown_race
@@ -107,7 +108,8 @@ def view_frames(node: rclpy.node.Node, args: argparse.Namespace) -> int:
     executor = SingleThreadedExecutor()
     executor.add_node(node)
     node.get_logger().info(f"Listening to tf data for {args.wait_time} seconds...")
-    spin_until(executor, lambda: False, args.wait_time)
+    # Any press so far ends it: one delivered would have, so this one was lost on its way.
+    spin_until(executor, lambda: False, args.wait_time, interrupted=lambda: ctrl_c.presses > 0)
     node.get_logger().info("Generating graph...")
     result = FrameGraph.Response(frame_yaml=buffer.all_frames_as_yaml())
     node.get_logger().info("Result:" + str(result))
@@ -134,20 +136,26 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv if argv is None else argv
     args = parse_args(user_args(argv))
     init(argv)
-    node = rclpy.create_node("view_frames")
+    node = None
     try:
+        node = rclpy.create_node("view_frames")
         return view_frames(node, args)
     except ToolError as error:
         print(f"view_frames: {error}", file=sys.stderr)
         return 1
-    except ExternalShutdownException:  # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C
+    # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C. NotInitializedException: rclpy
+    # refusing the node in the context a Ctrl-C (or SIGTERM) has just shut down.
+    except (ExternalShutdownException, NotInitializedException):
+        return EXIT_INTERRUPTED
+    except Interrupted:
         return EXIT_INTERRUPTED
     except RuntimeError as error:  # the same, seen by rcl first ("context is not valid")
         if is_shutdown_race(error):
             return EXIT_INTERRUPTED
         raise
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 

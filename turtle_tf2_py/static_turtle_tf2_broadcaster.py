@@ -63,6 +63,11 @@ def main() -> None:
     if args[0] == "world":
         logger.info('Your static turtle name cannot be "world"')
         sys.exit(2)
+    try:
+        [float(value) for value in args[1:]]
+    except ValueError as error:
+        logger.error(f"x y z roll pitch yaw must be numbers: {error}")
+        sys.exit(1)
 
     rclpy.init()
     node = StaticFramePublisher(args)
