@@ -18,7 +18,7 @@ from ros2cmd import completion
 from ros2cmd.action_goal import CtrlC, cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, ServiceInfo, absolute_name, print_names
-from ros2cmd.sub_verbs import add_count_option
+from ros2cmd.sub_verbs import VERB_HELP, add_count_option
 from ros2cmd.typenames import full_type_name, load_type
 from ros2cmd.wait import Interrupted, ServerLost, spin_until
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
@@ -249,7 +249,7 @@ def _goal_values(args: argparse.Namespace) -> Any:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("action", help="Various action related sub-commands")
+    parser = verbs.add_parser("action", help=VERB_HELP["action"])
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
     p = sub.add_parser("info", parents=[common], help="Print information about an action")

@@ -23,6 +23,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError, rclpy_error
+from ros2cmd.sub_verbs import VERB_HELP
 from ros2cmd.wait import Interrupted
 from ros_tutorials_common import ctrl_c
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
@@ -66,8 +67,7 @@ VERBS_WITH_COMMANDS = frozenset(
     {"action", "bag", "daemon", "interface", "node", "param", "pkg", "service", "topic"}
 )
 # `ros2 launch` is the launcher: its own parser, options and process (entry.py hands it over;
-# here it is only its line in `ros2 -h`).
-LAUNCH_HELP = "Run a launch file"
+# here it is only its line in `ros2 -h`, sub_verbs.VERB_HELP).
 
 
 # Each verb's module, whose register(verbs, common) adds its parser, in the order they are
@@ -94,14 +94,9 @@ def build_parser(verb: str | None = None) -> argparse.ArgumentParser:
     With a verb of VERB_MODULES, that verb's parser alone: `ros2 VERB ...` parses, helps and
     fails with it as with the whole one, without loading the other verbs' modules.
     """
-    parser = argparse.ArgumentParser(
-        prog="ros2",
-        description="ros2 is an extensible command-line tool for ROS 2.",
-        epilog="Call `ros2 <command> -h` for more detailed usage.",
-    )
-    verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
+    parser, verbs = _ros2_parser()
     if verb is None:
-        verbs.add_parser("launch", help=LAUNCH_HELP, add_help=False)
+        verbs.add_parser("launch", help=VERB_HELP["launch"], add_help=False)
     # `run` takes no graph options (and would load the graph's module for their defaults).
     common = argparse.ArgumentParser(add_help=False) if verb == "run" else common_options()
     wanted = VERB_MODULES.values() if verb is None else [VERB_MODULES[verb]]
@@ -109,6 +104,25 @@ def build_parser(verb: str | None = None) -> argparse.ArgumentParser:
         importlib.import_module(module).register(verbs, common)
     verbs._choices_actions.sort(key=lambda choice: choice.dest)  # ros2cli lists them a-z
     return parser
+
+
+def help_parser() -> argparse.ArgumentParser:
+    """What `ros2` and `ros2 -h` print: the verbs' lines (VERB_HELP) with no verb's module
+    loaded; the same help as build_parser()'s (tests/test_cli_imports.py)."""
+    parser, verbs = _ros2_parser()
+    for verb in sorted(VERB_HELP):
+        verbs.add_parser(verb, help=VERB_HELP[verb], add_help=False)
+    return parser
+
+
+def _ros2_parser() -> tuple[argparse.ArgumentParser, argparse._SubParsersAction]:
+    parser = argparse.ArgumentParser(
+        prog="ros2",
+        description="ros2 is an extensible command-line tool for ROS 2.",
+        epilog="Call `ros2 <command> -h` for more detailed usage.",
+    )
+    verbs = parser.add_subparsers(dest="verb", title="Commands", metavar="Commands", required=True)
+    return parser, verbs
 
 
 def execute(
@@ -215,6 +229,8 @@ def _ros_ok() -> bool:
 
 def main(argv: Sequence[str] | None = None) -> int:
     words = list(sys.argv[1:] if argv is None else argv)
+    if words in ([], ["-h"], ["--help"]):
+        help_parser().parse_args(["--help"])
     parser = build_parser(words[0] if words[:1] and words[0] in VERB_MODULES else None)
     if not words or (len(words) == 1 and words[0] in VERBS_WITH_COMMANDS):
         # As ros2cli: `ros2` or `ros2 topic` alone prints the help and ends well.

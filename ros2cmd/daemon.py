@@ -52,6 +52,7 @@ from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import VisibleNames, split_node_name
+from ros2cmd.sub_verbs import VERB_HELP
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 if TYPE_CHECKING:
@@ -362,7 +363,7 @@ def status_command() -> None:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("daemon", help="Various daemon related sub-commands")
+    parser = verbs.add_parser("daemon", help=VERB_HELP["daemon"])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, run, text in (
         ("start", start_command, "Start the daemon if it isn't running"),

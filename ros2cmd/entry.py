@@ -39,8 +39,10 @@ def _complete() -> None:
         from launcher.__main__ import build_parser as launch_parser
 
         completion.answer(launch_parser("ros2 launch"), skip=1)
-    from ros2cmd.cli import VERB_MODULES, build_parser
+    from ros2cmd.cli import VERB_MODULES, build_parser, help_parser
 
-    # Past the verb, that verb's parser alone (its modules only); at the verb, every verb's.
-    verb = words[1] if len(words) > 2 and words[1] in VERB_MODULES else None
-    completion.answer(build_parser(verb))
+    # Past the verb, that verb's parser alone (its modules only); at the verb, the verbs'
+    # names (what `ros2 -h` lists, no verb's module loaded).
+    if len(words) > 2 and words[1] in VERB_MODULES:
+        completion.answer(build_parser(words[1]))
+    completion.answer(help_parser())

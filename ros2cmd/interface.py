@@ -23,6 +23,7 @@ import textwrap
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
+from ros2cmd.sub_verbs import VERB_HELP
 from ros2cmd.typenames import (
     KIND_NAMES,
     KINDS,
@@ -249,7 +250,7 @@ def _kinds(args: argparse.Namespace) -> tuple[str, ...]:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("interface", help="Show information about ROS interfaces")
+    parser = verbs.add_parser("interface", help=VERB_HELP["interface"])
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
     p = sub.add_parser("list", help="List all interface types available")

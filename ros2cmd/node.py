@@ -19,7 +19,7 @@ import sys
 from ros2cmd import completion
 from ros2cmd.daemon import about_node
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
-from ros2cmd.sub_verbs import add_count_option
+from ros2cmd.sub_verbs import VERB_HELP, add_count_option
 
 # What `ros2 node list` and `ros2 node info` print (to stderr) for nodes of one name.
 DUPLICATES_WARNING = (
@@ -83,7 +83,7 @@ def info(graph: Graph, full_name: str, include_hidden: bool = False) -> None:
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("node", help="Various node related sub-commands")
+    parser = verbs.add_parser("node", help=VERB_HELP["node"])
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
 
     p = sub.add_parser("list", parents=[common], help="Output a list of available nodes")

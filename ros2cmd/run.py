@@ -18,6 +18,7 @@ from collections.abc import Sequence
 
 from ros2cmd import completion
 from ros2cmd.errors import ToolError
+from ros2cmd.sub_verbs import VERB_HELP
 from ros_tutorials_common import names, packages
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
@@ -175,7 +176,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     """`ros2 run [--prefix PREFIX] package_name executable_name ...`, as ros2run has it."""
     parser = verbs.add_parser(
         "run",
-        help="Run a package specific executable",
+        help=VERB_HELP["run"],
         description="Run a package specific executable",
     )
     parser.add_argument(

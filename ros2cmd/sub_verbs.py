@@ -7,6 +7,24 @@ from __future__ import annotations
 import argparse
 from types import ModuleType
 
+# Each verb's line in `ros2 -h`, ros2cli's words: the verbs register their parsers with it, and
+# `ros2 -h` prints it without loading any verb's module (cli.help_parser).
+VERB_HELP = {
+    "action": "Various action related sub-commands",
+    "bag": "bags: record, info, play (rosbag2, MCAP storage)",
+    "daemon": "Various daemon related sub-commands",
+    "doctor": "Check ROS setup and other potential issues",
+    "interface": "Show information about ROS interfaces",
+    "launch": "Run a launch file",
+    "node": "Various node related sub-commands",
+    "param": "Various param related sub-commands",
+    "pkg": "Various package related sub-commands",
+    "run": "Run a package specific executable",
+    "service": "Various service related sub-commands",
+    "topic": "Various topic related sub-commands",
+    "wtf": "Use `wtf` as alias to `doctor`",
+}
+
 
 def add_count_option(parser: argparse.ArgumentParser, things: str) -> None:
     """ros2cli's -c of the lists (`--count-topics`, `--count-services`)."""

@@ -259,3 +259,25 @@ def test_a_verbs_own_parser_is_the_whole_ones(verb):
     assert list(own_commands) == list(whole_commands)
     for name, command in whole_commands.items():
         assert own_commands[name].format_help() == command.format_help(), name
+
+
+def test_ros2_help_is_the_whole_parsers_and_loads_no_verb():
+    """`ros2 -h` prints the verbs' lines without loading their modules: the same help as the
+    whole parser's, and none of the verbs' modules in the process."""
+    assert cli.help_parser().format_help() == cli.build_parser().format_help()
+    probe = (
+        "import sys\nfrom ros2cmd.entry import main\ntry:\n    main(['-h'])\n"
+        "except SystemExit:\n    pass\n"
+        "print(sorted(m for m in sys.modules if m in set(sys.argv[1:])))"
+    )
+    modules = sorted(set(cli.VERB_MODULES.values()))
+    result = subprocess.run(
+        [sys.executable, "-c", probe, *modules],
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+        stdin=subprocess.DEVNULL,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "Call `ros2 <command> -h` for more detailed usage." in result.stdout
+    assert result.stdout.strip().splitlines()[-1] == "[]", result.stdout

@@ -24,6 +24,8 @@ import argparse
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from ros2cmd.sub_verbs import VERB_HELP
+
 if TYPE_CHECKING:  # the checks load with the command, not to build the parser
     from ros2cmd.doctor.api import Report, Result
     from ros2cmd.doctor.api.system import Doctor
@@ -137,13 +139,10 @@ def doctor(args: argparse.Namespace) -> None:
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     """`ros2 doctor` and its alias `ros2 wtf`."""
-    for name, summary in (
-        ("doctor", "Check ROS setup and other potential issues"),
-        ("wtf", "Use `wtf` as alias to `doctor`"),
-    ):
+    for name in ("doctor", "wtf"):
         parser = verbs.add_parser(
             name,
-            help=summary,
+            help=VERB_HELP[name],
             description=HELP,
             formatter_class=argparse.RawDescriptionHelpFormatter,
         )

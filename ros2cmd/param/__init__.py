@@ -14,7 +14,7 @@ import argparse
 from ros2cmd.param.verb import delete, describe, dump, get, load
 from ros2cmd.param.verb import list as list_verb
 from ros2cmd.param.verb import set as set_verb
-from ros2cmd.sub_verbs import add_sub_verbs
+from ros2cmd.sub_verbs import VERB_HELP, add_sub_verbs
 
 # `ros2 param -h` lists them in this order.
 SUB_VERBS = {
@@ -29,6 +29,6 @@ SUB_VERBS = {
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("param", help="Various param related sub-commands")
+    parser = verbs.add_parser("param", help=VERB_HELP["param"])
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
     add_sub_verbs(sub, SUB_VERBS, parents=[common])

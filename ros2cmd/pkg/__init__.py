@@ -16,7 +16,7 @@ import argparse
 
 from ros2cmd.pkg.verb import create, executables, prefix, xml
 from ros2cmd.pkg.verb import list as list_verb
-from ros2cmd.sub_verbs import add_sub_verbs
+from ros2cmd.sub_verbs import VERB_HELP, add_sub_verbs
 
 # `ros2 pkg -h` lists them in this order.
 SUB_VERBS = {
@@ -29,6 +29,6 @@ SUB_VERBS = {
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("pkg", help="Various package related sub-commands")
+    parser = verbs.add_parser("pkg", help=VERB_HELP["pkg"])
     sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
     add_sub_verbs(sub, SUB_VERBS, offline=True)

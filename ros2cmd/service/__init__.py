@@ -13,7 +13,7 @@ import argparse
 from ros2cmd.service.verb import call, echo, find, info
 from ros2cmd.service.verb import list as list_verb
 from ros2cmd.service.verb import type as type_verb
-from ros2cmd.sub_verbs import add_sub_verbs
+from ros2cmd.sub_verbs import VERB_HELP, add_sub_verbs
 
 # `ros2 service -h` lists them in this order.
 SUB_VERBS = {
@@ -27,7 +27,7 @@ SUB_VERBS = {
 
 
 def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("service", help="Various service related sub-commands")
+    parser = verbs.add_parser("service", help=VERB_HELP["service"])
     # As ros2cli: before the sub-command too (`ros2 service --include-hidden-services list`).
     parser.add_argument(
         "--include-hidden-services",

@@ -9,12 +9,11 @@ from __future__ import annotations
 
 import argparse
 
-from ros2cmd.sub_verbs import add_sub_verbs
+from ros2cmd.sub_verbs import VERB_HELP, add_sub_verbs
 from ros2cmd.topic.verb import bw, delay, echo, find, hz, info, pub
 from ros2cmd.topic.verb import list as list_verb
 from ros2cmd.topic.verb import type as type_verb
 
-TOPIC_HELP = "Various topic related sub-commands"
 # `ros2 topic -h` lists them in this order.
 SUB_VERBS = {
     "bw": bw,
@@ -33,8 +32,8 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
     """`ros2 topic` and its sub-verbs, as ros2topic has them."""
     parser = verbs.add_parser(
         "topic",
-        help=TOPIC_HELP,
-        description=TOPIC_HELP,
+        help=VERB_HELP["topic"],
+        description=VERB_HELP["topic"],
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument(

@@ -14,11 +14,12 @@ import argparse
 
 from ros2cmd.bag.options import add_reindex, timeout_option
 from ros2cmd.bag.ros2.verb import info, play, record
+from ros2cmd.sub_verbs import VERB_HELP
 
 
 def register(verbs: argparse._SubParsersAction, _common: argparse.ArgumentParser) -> None:
     """`ros2 bag info|play|record|reindex`."""
-    parser = verbs.add_parser("bag", help="bags: record, info, play (rosbag2, MCAP storage)")
+    parser = verbs.add_parser("bag", help=VERB_HELP["bag"])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     info.add_arguments(sub.add_parser("info", help=info.HELP))
     play.add_arguments(sub.add_parser("play", parents=[timeout_option()], help=play.HELP))
