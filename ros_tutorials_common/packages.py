@@ -30,10 +30,10 @@ sourced workspace (an overlay: a prefix other than this environment) shadows a s
 
 from __future__ import annotations
 
-import ast
 import importlib.util
 import os
 import pkgutil
+import re
 import sys
 from functools import cache
 from pathlib import Path
@@ -42,6 +42,8 @@ from ros_tutorials_common import ament, lesson_scripts
 
 PACKAGE_PREFIX = "ros_tutorials_"
 DISTRIBUTION = "ros-tutorials"
+# A module's own main(): an executable (_has_main).
+_TOP_LEVEL_MAIN = re.compile(r"^def main\(", re.MULTILINE)
 
 # The seeds' package names -> this project's package(s) holding their executables (searched
 # in order, the first that has the executable wins).
@@ -138,16 +140,20 @@ def stand_in(package: str) -> bool:
 
 
 def _has_main(source_file: Path) -> bool:
-    # Read the source instead of importing it: importing a node module loads rclpy.
+    # Read the source instead of importing it: importing a node module loads rclpy. A line
+    # that starts with `def main(` is a top-level definition (nested ones are indented); a
+    # search, not a parse: `ros2 run` reads every module of the package before it starts one.
     try:
-        tree = ast.parse(source_file.read_text(encoding="utf-8"))
-    except (OSError, SyntaxError, UnicodeDecodeError):
+        text = source_file.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
         return False
-    return any(isinstance(node, ast.FunctionDef) and node.name == "main" for node in tree.body)
+    return _TOP_LEVEL_MAIN.search(text) is not None
 
 
 def _declared_parameters(source_file: Path) -> set[str]:
     """The parameter names a node module declares by a literal name (declare_parameter("x"))."""
+    import ast  # only for the parameter lookups (rosparam, the launcher's checks)
+
     try:
         tree = ast.parse(source_file.read_text(encoding="utf-8"))
     except (OSError, SyntaxError, UnicodeDecodeError):
