@@ -27,9 +27,9 @@ from pathlib import Path
 from mcap.reader import make_reader
 
 from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, stop, wait_for_lines
-from ros2cmd.bag.metadata import TopicInfo
-from ros2cmd.bag.reader import BagReader
-from ros2cmd.bag.writer import BagWriter
+from rosbag2.metadata import TopicInfo
+from rosbag2.reader import BagReader
+from rosbag2.writer import BagWriter
 
 SECONDS = 10.0
 ROSBAG = str(Path(sys.executable).parent / "rosbag")  # the installed command, as a user runs it

@@ -1,21 +1,13 @@
-"""The one error type of the ros2 command: a message for the user, printed as one line."""
+"""The ros2 command's errors: the toolkit's ToolError (ros_tutorials_common.errors), and how
+rclpy's exceptions are caught without loading rclpy."""
 
 from __future__ import annotations
 
 import sys
 
+from ros_tutorials_common.errors import ToolError, ToolFailure
 
-class ToolError(Exception):
-    """Something the user asked for cannot be done; str(error) says why, in one line."""
-
-    prefix = "error: "  # how cli.execute prints it: `error: unknown node '/x' ...`
-
-
-class ToolFailure(ToolError):
-    """A failure ros2cli reports in its own words (`Setting parameter failed: ...`): the line
-    is printed as it is, without the 'error: ' prefix; the exit status is 1 all the same."""
-
-    prefix = ""
+__all__ = ["ToolError", "ToolFailure", "rclpy_error"]
 
 
 def rclpy_error(module: str, name: str) -> tuple[type[BaseException], ...]:

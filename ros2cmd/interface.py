@@ -27,13 +27,13 @@ from ros2cmd.sub_verbs import VERB_HELP
 from ros2cmd.typenames import (
     KIND_NAMES,
     KINDS,
-    definition_path,
     interface_index,
     interface_package,
     list_hint,
     load_type,
     parse_type_name,
 )
+from ros_tutorials_common.ament import definition_path
 from ros_tutorials_common.bounded import InputError, read_line
 
 PRIMITIVE_TYPES = {

@@ -12,7 +12,6 @@ from __future__ import annotations
 import importlib
 import os
 import sys
-from pathlib import Path
 
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import ament
@@ -128,13 +127,3 @@ def full_type_name(cls: type) -> str:
     """The ROS 2 name of a generated class, e.g. 'std_msgs/msg/String'."""
     package, kind = cls.__module__.split(".")[:2]
     return f"{package}/{kind}/{cls.__name__}"
-
-
-def definition_path(package: str, kind: str, base: str) -> Path:
-    try:
-        path = ament.share_directory(package) / kind / f"{base}.{kind}"
-    except LookupError:
-        path = None
-    if path is None or not path.is_file():
-        raise ToolError(f"no definition file for {package}/{kind}/{base}")
-    return path

@@ -26,6 +26,8 @@ from pathlib import Path
 
 import ament_index_python
 
+from ros_tutorials_common.errors import ToolError
+
 PREFIX_PATH = "AMENT_PREFIX_PATH"
 
 
@@ -79,3 +81,14 @@ def package_prefix(package: str) -> Path:
 def share_directory(package: str) -> Path:
     """<prefix>/share/<package>, where a package installs its files (package.xml, msg/, launch/)."""
     return package_prefix(package) / "share" / package
+
+
+def definition_path(package: str, kind: str, base: str) -> Path:
+    """The .msg, .srv or .action file of an interface, from its package's share folder."""
+    try:
+        path = share_directory(package) / kind / f"{base}.{kind}"
+    except LookupError:
+        path = None
+    if path is None or not path.is_file():
+        raise ToolError(f"no definition file for {package}/{kind}/{base}")
+    return path

@@ -1,5 +1,5 @@
 """rosbag2_py._reader: SequentialReader, rosbag2's Python reader (Jazzy), on this project's bag
-reader (ros2cmd/bag/reader.py): a bag folder (or one .mcap file) of any writer, its messages
+reader (rosbag2/reader.py): a bag folder (or one .mcap file) of any writer, its messages
 in time order."""
 
 from __future__ import annotations
@@ -8,9 +8,9 @@ import re
 import weakref
 from collections.abc import Iterator
 
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.mcap_file import BagMessage
-from ros2cmd.bag.reader import BagReader
+from rosbag2.errors import BagError
+from rosbag2.mcap_file import BagMessage
+from rosbag2.reader import BagReader
 from rosbag2_py._storage import (
     ConverterOptions,
     StorageFilter,

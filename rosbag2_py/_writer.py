@@ -1,5 +1,5 @@
 """rosbag2_py._writer: SequentialWriter, rosbag2's Python writer (Jazzy), on this project's bag
-writer (ros2cmd/bag/writer.py): the folder, .mcap file and metadata.yaml `ros2 bag record`
+writer (rosbag2/writer.py): the folder, .mcap file and metadata.yaml `ros2 bag record`
 writes, which `ros2 bag play` and `ros2 bag info` read.
 
 As with the real bindings, a writer that is never closed is closed when it is garbage
@@ -12,12 +12,12 @@ import weakref
 from collections.abc import Callable
 from pathlib import Path
 
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.metadata import TopicInfo
-from ros2cmd.bag.offered_qos import qos_to_dict
-from ros2cmd.bag.record import schema
-from ros2cmd.bag.writer import BagWriter
-from ros2cmd.errors import ToolError
+from ros_tutorials_common.errors import ToolError
+from rosbag2.definitions import schema
+from rosbag2.errors import BagError
+from rosbag2.metadata import TopicInfo
+from rosbag2.offered_qos import qos_to_dict
+from rosbag2.writer import BagWriter
 from rosbag2_py._storage import ConverterOptions, StorageOptions, TopicMetadata, check_options
 
 

@@ -1,4 +1,4 @@
-"""The recorder's account of what was lost before it received it (ros2cmd/bag/loss.py):
+"""The recorder's account of what was lost before it received it (rosbag2/loss.py):
 counted per topic, stored in metadata.yaml's custom_data, shown by `rosbag info`."""
 
 from __future__ import annotations
@@ -7,9 +7,9 @@ from helpers import run
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 
-from ros2cmd.bag.loss import LOST_PREFIX, LossCount, lost_in
-from ros2cmd.bag.metadata import TopicInfo
-from ros2cmd.bag.writer import BagWriter
+from rosbag2.loss import LOST_PREFIX, LossCount, lost_in
+from rosbag2.metadata import TopicInfo
+from rosbag2.writer import BagWriter
 
 
 def test_sequence_gaps_count_while_the_topic_has_one_publisher():

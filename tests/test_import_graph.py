@@ -272,3 +272,23 @@ def test_a_long_toolkit_module_says_why_at_its_top():
         if text.count("\n") > LONG_MODULE and "(About " not in text[:1500]:
             unexplained.append(f"{path.relative_to(ROOT)}: {text.count(chr(10))} lines")
     assert not unexplained, "long modules without a reason at their top:\n" + "\n".join(unexplained)
+
+
+# Which packages a library below the command line may not import (rosbag2's and geometry2's
+# layering: the library, then its Python API, then the command line on top).
+BELOW_THE_COMMAND_LINE = {
+    "rosbag2": ("ros2cmd", "rosbag2_py", "launcher"),
+    "rosbag2_py": ("ros2cmd", "launcher"),
+}
+
+
+def test_the_libraries_stand_below_the_command_line():
+    graph = import_graph(ROOT)
+    assert "rosbag2.reader" in graph and "rosbag2_py._writer" in graph
+    upward = [
+        f"{name} -> {edge.target} ({edge.where})"
+        for name in graph
+        for edge in graph[name]
+        if edge.target.split(".")[0] in BELOW_THE_COMMAND_LINE.get(name.split(".")[0], ())
+    ]
+    assert not upward, "a library imports a layer above it:\n" + "\n".join(upward)

@@ -32,13 +32,13 @@ from rclpy.serialization import serialize_message
 from rosbags.rosbag2 import Reader
 from std_msgs.msg import String
 
-from ros2cmd.bag import definitions, offered_qos
-from ros2cmd.bag import writer as bag_writer
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.metadata import FileInfo, TopicInfo, bag_metadata, dump_yaml, metadata_text
-from ros2cmd.bag.reader import BagReader
-from ros2cmd.bag.writer import BagWriter
 from ros2cmd.errors import ToolError
+from rosbag2 import definitions, offered_qos
+from rosbag2 import writer as bag_writer
+from rosbag2.errors import BagError
+from rosbag2.metadata import FileInfo, TopicInfo, bag_metadata, dump_yaml, metadata_text
+from rosbag2.reader import BagReader
+from rosbag2.writer import BagWriter
 
 ROS2_BAGS = Path(__file__).parent / "data" / "ros2_bags"
 
@@ -499,7 +499,7 @@ def test_overlapping_chunks_are_read_in_log_time_order_from_the_start(tmp_path) 
     is read merged in log-time order, from the start offset on, with no warning."""
     from mcap.writer import Writer
 
-    from ros2cmd.bag.mcap_file import McapFile
+    from rosbag2.mcap_file import McapFile
 
     path = tmp_path / "overlap.mcap"
     with open(path, "wb") as stream:
@@ -526,7 +526,7 @@ def test_chunks_overlapping_without_end_are_refused_not_held(tmp_path, monkeypat
     message waiting to be put in order: refused once what waits passes the chunk limit."""
     from mcap.writer import Writer
 
-    from ros2cmd.bag import mcap_file
+    from rosbag2 import mcap_file
 
     path = tmp_path / "spans.mcap"
     with open(path, "wb") as stream:
@@ -608,7 +608,7 @@ def test_a_decompression_bomb_is_refused_under_a_memory_cap(ros_domain, tmp_path
     """2 GiB of zeros in a 64 KB chunk: its declared size is refused before anything is
     decompressed, by info, play and reindex alike, within 1 GiB of address space (mcap's own
     reader allocated the declared size: a MemoryError under the cap, gigabytes without)."""
-    from ros2cmd.bag.mcap_file import MAX_CHUNK_BYTES
+    from rosbag2.mcap_file import MAX_CHUNK_BYTES
 
     declared = 2048 << 20
     assert declared > MAX_CHUNK_BYTES

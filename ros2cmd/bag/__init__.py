@@ -1,8 +1,7 @@
-"""Bags: record, inspect and replay topics in rosbag2's format (MCAP storage, as ROS 2 Jazzy).
+"""`ros2 bag` and `rosbag`: record, inspect and replay topics, on the bag library (rosbag2/).
 
-The bag on disk: metadata.py (metadata.yaml), offered_qos.py (the QoS profiles in it),
-mcap_file.py (one .mcap file, through the ``mcap`` package), writer.py, reader.py and
-reindex.py (repair), errors.py (BagError). definitions.py makes the schemas, and record.py,
-info.py, play.py are the verbs; ros2/ is their ``ros2 bag ...`` spelling,
-ros2cmd/ros1/rosbag.py ROS 1's ``rosbag ...``, and options.py what both spellings share.
+record.py, info.py, play.py are the verbs' work; ros2/ is their ``ros2 bag ...`` spelling,
+ros2cmd/ros1/rosbag.py ROS 1's ``rosbag ...``, options.py what both spellings share,
+keyboard.py the player's keys. The bag on disk is the library's (rosbag2/), as ros2bag stands
+on rosbag2_py and rosbag2_cpp.
 """

@@ -11,9 +11,9 @@ from __future__ import annotations
 import sys
 import time
 
-from ros2cmd.bag.metadata import NS, TopicInfo
-from ros2cmd.bag.reader import Bag, BagReader
 from ros_tutorials_common.names import SERVICE_EVENT_SUFFIX
+from rosbag2.metadata import NS, TopicInfo
+from rosbag2.reader import Bag, BagReader
 
 
 def _stamp(nanoseconds: int) -> tuple[str, str, str]:

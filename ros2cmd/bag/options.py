@@ -90,7 +90,7 @@ def run_play(graph: Any, bag: str, options: Any) -> None:
 
 
 def _reindex(path: str) -> None:
-    from ros2cmd.bag.reindex import reindex
+    from rosbag2.reindex import reindex
 
     bag = reindex(path)
     print(f"Reindexed {path}: {bag.message_count} messages, metadata.yaml rewritten")

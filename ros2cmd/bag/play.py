@@ -33,14 +33,14 @@ from rclpy.serialization import deserialize_message
 
 from ros2cmd.bag.info import is_service_event_topic, service_name, service_type
 from ros2cmd.bag.keyboard import Keyboard
-from ros2cmd.bag.mcap_file import BagMessage
-from ros2cmd.bag.metadata import NS, TopicInfo
-from ros2cmd.bag.reader import BagReader
 from ros2cmd.bag.record import message_class
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import load_type
 from ros2cmd.wait import spin_until
+from rosbag2.mcap_file import BagMessage
+from rosbag2.metadata import NS, TopicInfo
+from rosbag2.reader import BagReader
 
 ADVERTISE_WAIT = 0.2  # ROS 1's "Waiting 0.2 seconds after advertising topics"
 MATCH_TIMEOUT = 5.0  # seconds: the longest play waits to meet the subscribers already running

@@ -32,20 +32,20 @@ from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.qos import HistoryPolicy, QoSProfile
 
-from ros2cmd.bag import definitions
-from ros2cmd.bag.errors import BagError
 from ros2cmd.bag.info import is_service_event_topic, ros1_info, service_name, service_type
 from ros2cmd.bag.keyboard import Keyboard
-from ros2cmd.bag.loss import LossCount
-from ros2cmd.bag.metadata import TopicInfo
-from ros2cmd.bag.offered_qos import qos_to_dict
-from ros2cmd.bag.reader import BagReader
-from ros2cmd.bag.writer import BagWriter, default_bag_name
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name, is_hidden
 from ros2cmd.qos import compatible_qos
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.ros import RCLError
+from rosbag2.definitions import schema
+from rosbag2.errors import BagError
+from rosbag2.loss import LossCount
+from rosbag2.metadata import TopicInfo
+from rosbag2.offered_qos import qos_to_dict
+from rosbag2.reader import BagReader
+from rosbag2.writer import BagWriter, default_bag_name
 
 SPIN_PERIOD = 0.05
 FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
@@ -149,13 +149,6 @@ def message_class(type_name: str) -> type:
     if type_name.endswith("_Event") and "/srv/" in type_name:
         return load_type(service_type(type_name), ("srv",)).Event  # type: ignore[attr-defined]
     return load_type(type_name, ("msg",))
-
-
-def schema(type_name: str) -> tuple[str, str]:
-    """(definition, encoding) stored for the type, as rosbag2 stores it."""
-    if type_name.endswith("_Event") and "/srv/" in type_name:
-        return definitions.service_definition(service_type(type_name))
-    return definitions.message_definition(type_name), definitions.SCHEMA_ENCODING
 
 
 def _type_hash(endpoints: list[Any]) -> str:

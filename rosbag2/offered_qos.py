@@ -7,7 +7,7 @@ from typing import Any
 
 import yaml
 
-from ros2cmd.bag.metadata import NS
+from rosbag2.metadata import NS
 
 # QoS policies as rosbag2 serialises them since metadata version 9 (rmw's names), and the
 # numbers older bags use (rmw's enum values).

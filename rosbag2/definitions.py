@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 
-from ros2cmd.errors import ToolError
-from ros2cmd.typenames import definition_path
+from ros_tutorials_common.ament import definition_path
+from ros_tutorials_common.errors import ToolError
 
 SCHEMA_ENCODING = "ros2msg"
 DELIMITER = "=" * 80 + "\n"
@@ -98,3 +98,10 @@ def service_definition(service_type: str) -> tuple[str, str]:
             text += "\n" + DELIMITER + f"MSG: {dependency}\n" + append(dependency, MAX_DEPTH)
             encoding = SCHEMA_ENCODING
     return text, encoding
+
+
+def schema(type_name: str) -> tuple[str, str]:
+    """(definition, encoding) stored for the type, as rosbag2 stores it."""
+    if type_name.endswith("_Event") and "/srv/" in type_name:
+        return service_definition(type_name[: -len("_Event")])
+    return message_definition(type_name), SCHEMA_ENCODING

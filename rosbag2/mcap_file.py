@@ -41,7 +41,7 @@ from mcap.records import (
 )
 from mcap.stream_reader import MAGIC_SIZE, StreamReader, breakup_chunk
 
-from ros2cmd.bag.errors import BagError, short, shown
+from rosbag2.errors import BagError, short, shown
 
 PROFILE = "ros2"
 LIBRARY = "ros-tutorials ros2 bag (python mcap)"

@@ -9,10 +9,10 @@ from pathlib import Path
 
 from mcap.writer import CompressionType, Writer
 
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.mcap_file import CHUNK_SIZE, LIBRARY, PROFILE, McapFile
-from ros2cmd.bag.metadata import FileInfo, bag_metadata, write_metadata_file
-from ros2cmd.bag.reader import Bag, BagReader
+from rosbag2.errors import BagError
+from rosbag2.mcap_file import CHUNK_SIZE, LIBRARY, PROFILE, McapFile
+from rosbag2.metadata import FileInfo, bag_metadata, write_metadata_file
+from rosbag2.reader import Bag, BagReader
 
 
 def reindex(path: str | Path) -> Bag:

@@ -16,8 +16,8 @@ from typing import Any
 
 import yaml
 
-from ros2cmd.bag.errors import BagError, short, shown
 from ros_tutorials_common import bounded
+from rosbag2.errors import BagError, short, shown
 
 METADATA_FILE = "metadata.yaml"
 MAX_METADATA_BYTES = bounded.MAX_INPUT_BYTES  # about 5,000 topics' metadata.yaml

@@ -13,11 +13,11 @@ from typing import Any
 
 import yaml
 
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.loss import lost_in
-from ros2cmd.bag.mcap_file import PROFILE, BagMessage, McapFile
-from ros2cmd.bag.metadata import METADATA_FILE, STORAGE_ID, TopicInfo, load_metadata
-from ros2cmd.bag.offered_qos import safe_qos
+from rosbag2.errors import BagError
+from rosbag2.loss import lost_in
+from rosbag2.mcap_file import PROFILE, BagMessage, McapFile
+from rosbag2.metadata import METADATA_FILE, STORAGE_ID, TopicInfo, load_metadata
+from rosbag2.offered_qos import safe_qos
 
 
 @dataclass

@@ -21,9 +21,9 @@ from typing import Any
 
 from mcap.writer import CompressionType, Writer
 
-from ros2cmd.bag.errors import BagError, shown
-from ros2cmd.bag.mcap_file import CHUNK_SIZE, LIBRARY, PROFILE
-from ros2cmd.bag.metadata import FileInfo, TopicInfo, bag_metadata, dump_yaml, write_metadata_file
+from rosbag2.errors import BagError, shown
+from rosbag2.mcap_file import CHUNK_SIZE, LIBRARY, PROFILE
+from rosbag2.metadata import FileInfo, TopicInfo, bag_metadata, dump_yaml, write_metadata_file
 
 FLUSH_PERIOD = 1.0  # seconds: the most a SIGKILL can lose
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ros2cmd.errors import ToolError
+from ros_tutorials_common.errors import ToolError
 
 
 class BagError(ToolError):
