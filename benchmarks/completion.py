@@ -15,7 +15,7 @@ import time
 from benchmarks.common import Row, fmt_ms, p50, python, start, stop
 from benchmarks.daemon import _bytecode_kept
 from benchmarks.graph import BIN
-from ros2cmd import daemon
+from ros2cmd.daemon import client as daemon
 from ros_tutorials_common.completion import BUDGET, COMPLETION_BUDGET_VARIABLE
 
 PUBLISHER = """

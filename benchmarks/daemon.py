@@ -23,7 +23,7 @@ from benchmarks.common import (
     wait_for_lines,
 )
 from benchmarks.graph import BARE, BIN, EXPECTED_NODES, EXPECTED_TOPICS, _running, _timed
-from ros2cmd import daemon
+from ros2cmd.daemon import client as daemon
 from ros_tutorials_common.dds import apply_dds_defaults
 
 HELP_TARGET = 0.100  # s, p50: `ros2 -h`, `ros2 VERB -h`, `ros2 run -h` (issue 39)

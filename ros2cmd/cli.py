@@ -137,7 +137,7 @@ def execute(
     timeout: what the command waits for what it names (None: graph.DEFAULT_TIMEOUT).
 
     With use_daemon (the lists; a dict: what else to ask, daemon.ask_graph), the daemon's
-    complete answer stands in for the node where one runs and can give it (daemon.py), and
+    complete answer stands in for the node where one runs and can give it (daemon/), and
     holds what the command names; otherwise the command discovers for itself.
 
     Meant for a process's main: once the status is decided, Ctrl-C is ignored. Python and
@@ -165,7 +165,7 @@ def _execute(
             raise ToolError(problem)
         answered = False
         if use_daemon and spin_time is None:
-            from ros2cmd import daemon
+            from ros2cmd.daemon import client as daemon
 
             graph = daemon.ask_graph(use_daemon if isinstance(use_daemon, dict) else {})
             if graph is not None:
@@ -257,7 +257,7 @@ def _wants_daemon(args: argparse.Namespace) -> bool | dict[str, Any]:
     wants = wants(args) if callable(wants) else wants
     if not wants:
         return False
-    from ros2cmd import daemon
+    from ros2cmd.daemon import client as daemon
 
     if not daemon.use_daemon(getattr(args, "no_daemon", False)):
         return False

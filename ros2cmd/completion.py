@@ -4,8 +4,9 @@ argument).
 
 The running system's names come from the daemon (`ros2 daemon start`; a list started once
 starts it too): one question over its socket, answered at once with what its graph holds
-(daemon.py, ``ask_names``). No daemon running, or none answering in time: nothing completes; a
-completion never starts a daemon nor a DDS participant of its own, and never loads rclpy. This
+(daemon/client.py, ``ask_names``). No daemon running, or none answering in time: nothing
+completes; a completion never starts a daemon nor a DDS participant of its own, and never
+loads rclpy. This
 module imports what its completers need when they run, so that the verbs that name them load
 nothing for it (`ros2 run` starts without the graph module, for one). The machinery, and the
 names of the ament index (packages, executables, launch files), are in
@@ -34,7 +35,7 @@ MAX_DAEMON_WAIT = 0.1  # s: at most this of the budget goes to the daemon's answ
 @cache
 def _daemon_names() -> dict[str, Any]:
     """The daemon's answer ({} if there is none to ask, or none came in time)."""
-    from ros2cmd import daemon
+    from ros2cmd.daemon import client as daemon
 
     if not daemon.use_daemon(no_daemon=False):
         return {}
@@ -77,7 +78,7 @@ def node_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[
 def parameter_names(parsed_args: argparse.Namespace | None = None, **_: Any) -> list[str]:
     """The parameters of the node named before (`ros2 param get /turtlesim <TAB>`), which the
     daemon asks it for: the first time for a node may come too late, and complete nothing."""
-    from ros2cmd import daemon
+    from ros2cmd.daemon import client as daemon
 
     node = getattr(parsed_args, "node_name", None)
     if not node or not daemon.use_daemon(no_daemon=False):

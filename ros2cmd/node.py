@@ -17,7 +17,7 @@ import argparse
 import sys
 
 from ros2cmd import completion
-from ros2cmd.daemon import about_node
+from ros2cmd.daemon.client import about_node
 from ros2cmd.graph import Graph, is_hidden, join_node_name, split_node_name
 from ros2cmd.sub_verbs import VERB_HELP, add_count_option
 

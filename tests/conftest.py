@@ -23,7 +23,8 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from warm import Starter
 
-from ros2cmd import daemon, graph
+from ros2cmd import graph
+from ros2cmd.daemon import client as daemon
 from ros2cmd.local_participants import domain_processes
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import (

@@ -21,7 +21,7 @@ import pytest
 from helpers import BIN, TIMEOUT, run
 from rclpy.node import Node
 
-from ros2cmd import daemon
+from ros2cmd.daemon import client as daemon
 from ros_tutorials_common.completion import COMMANDS, COMPLETION_BUDGET_VARIABLE
 
 

@@ -1,4 +1,4 @@
-"""`ros2 daemon start|stop|status` and the lists it answers (ros2cmd/daemon.py).
+"""`ros2 daemon start|stop|status` and the lists it answers (ros2cmd/daemon/).
 
 The suite's lists discover for themselves (tests/conftest.py sets ROS_TUTORIALS_NO_DAEMON);
 these tests run `ros2` without it, so lists go through the daemon as a learner's do. The
@@ -18,7 +18,7 @@ from typing import TypeVar
 import pytest
 from helpers import TIMEOUT, ready, run
 
-from ros2cmd import daemon
+from ros2cmd.daemon import client as daemon
 
 T = TypeVar("T")
 

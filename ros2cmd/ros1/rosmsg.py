@@ -3,7 +3,7 @@
     rosmsg show turtlesim/Pose              ROS 1's pkg/Name: the tool says msg or srv
     rosservice type /spawn | rossrv show    the type read from a pipe, as ROS 1 did
 
-Each command runs ros2cmd/interface.py's function, for one kind of type: msg or srv.
+Each command runs ros2cmd/interface/api.py's function, for one kind of type: msg or srv.
 """
 
 from __future__ import annotations
@@ -12,13 +12,15 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from ros2cmd import completion, interface
+from ros2cmd import completion
+from ros2cmd.interface import api as interface
 from ros2cmd.ros1 import tool
+from ros2cmd.typenames import KIND_NAMES
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 
 
 def _interface_parser(name: str, kind: str) -> argparse.ArgumentParser:
-    what = interface.KIND_NAMES[kind]
+    what = KIND_NAMES[kind]
     parser, sub, _common = tool.new_parser(name, f"ROS 1's {name}, on ROS 2 (ros2 interface)")
 
     show = sub.add_parser("show", help=f"a {what}")

@@ -6,7 +6,7 @@ import argparse
 from collections.abc import Sequence
 
 from ros2cmd import completion, node
-from ros2cmd.daemon import about_node
+from ros2cmd.daemon.client import about_node
 from ros2cmd.ros1 import tool
 from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
 

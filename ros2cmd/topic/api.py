@@ -221,7 +221,7 @@ class _GivenAction(argparse.Action):
 
 
 def add_graph_options(parser: argparse.ArgumentParser, timeout_help: str | None = None) -> None:
-    """--spin-time and --timeout (this project's waits), --no-daemon (see daemon.py)."""
+    """--spin-time and --timeout (this project's waits), --no-daemon (see daemon/client.py)."""
     parser.add_argument(
         "--spin-time",
         type=positive_seconds,

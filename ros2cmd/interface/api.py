@@ -1,4 +1,4 @@
-"""`ros2 interface ...`: the message, service and action types installed (ROS 2's ros2interface).
+"""What `ros2 interface`'s sub-verbs and ROS 1's rosmsg/rossrv share (ROS 2's ros2interface).
 
     ros2 interface list [-m|-s|-a]          Messages: / Services: / Actions:, types indented
     ros2 interface show geometry_msgs/msg/Twist [--all-comments | --no-comments]
@@ -21,16 +21,13 @@ import re
 import sys
 import textwrap
 
-from ros2cmd import completion
 from ros2cmd.errors import ToolError
-from ros2cmd.sub_verbs import VERB_HELP
 from ros2cmd.typenames import (
     KIND_NAMES,
     KINDS,
     interface_index,
     interface_package,
     list_hint,
-    load_type,
     parse_type_name,
 )
 from ros_tutorials_common.ament import definition_path
@@ -172,26 +169,6 @@ def show(
             print(*lines, sep="\n")
 
 
-def proto(type_name: str, quotes: bool = True) -> None:
-    """`ros2 interface proto`: a default message (a goal, a request) as YAML."""
-    import yaml
-
-    from ros2cmd.messages import message_to_data  # loads rclpy's generated classes: only here
-
-    cls = load_type(type_name)
-    kind = parse_type_name(type_name)[1]
-    instance = cls.Goal() if kind == "action" else cls.Request() if kind == "srv" else cls()
-    # rosidl_runtime_py's message_to_yaml: block style, lines never wrapped, "{}\n" if empty.
-    text = yaml.safe_dump(
-        message_to_data(instance),
-        default_flow_style=False,
-        sort_keys=False,
-        allow_unicode=True,
-        width=sys.maxsize,
-    )
-    print(f'"{text}"' if quotes else text)
-
-
 def list_types(
     kinds: tuple[str, ...] = KINDS, package: str | None = None, sort: bool = False
 ) -> list[str]:
@@ -207,28 +184,11 @@ def list_types(
     return sorted(found) if sort else found
 
 
-def list_command(kinds: tuple[str, ...]) -> None:
-    for kind in kinds:
-        print(f"{KIND_TITLES[kind]}:")
-        for name in list_types((kind,), sort=True):
-            print(f"    {name}")
-
-
-def package_command(package: str, kinds: tuple[str, ...] | None) -> None:
-    """`ros2 interface package PKG`: its types, sorted (ros2interface's order is a set's),
-    or kind by kind as -m/-s/-a are given."""
-    names = list_types(KINDS, package, sort=True) if kinds is None else []
-    for kind in kinds or ():
-        names += list_types((kind,), package, sort=True)
-    if names:
-        print(*names, sep="\n")
-
-
 def packages(kinds: tuple[str, ...] = KINDS) -> list[str]:
     return sorted({name.split("/")[0] for name in list_types(kinds)})
 
 
-def _kind_flags(parser: argparse.ArgumentParser, verb: str) -> None:
+def add_kind_flags(parser: argparse.ArgumentParser, verb: str) -> None:
     for short, long, kind in (
         ("-m", "--only-msgs", "msg"),
         ("-s", "--only-srvs", "srv"),
@@ -244,61 +204,6 @@ def _kind_flags(parser: argparse.ArgumentParser, verb: str) -> None:
         )
 
 
-def _kinds(args: argparse.Namespace) -> tuple[str, ...]:
+def chosen_kinds(args: argparse.Namespace) -> tuple[str, ...]:
     """The kinds -m/-s/-a chose, in ros2interface's order; all three if none."""
     return tuple(kind for kind in KINDS if kind in (args.kinds or KINDS))
-
-
-def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
-    parser = verbs.add_parser("interface", help=VERB_HELP["interface"])
-    sub = parser.add_subparsers(dest="command", metavar="Commands", required=True)
-
-    p = sub.add_parser("list", help="List all interface types available")
-    _kind_flags(p, "Print out")
-    p.set_defaults(offline=True, run=lambda _, a: list_command(_kinds(a)))
-
-    p = sub.add_parser(
-        "package", help="Output a list of available interface types within one package"
-    )
-    _kind_flags(p, "Print out")
-    p.add_argument("package", help="Name of the ROS package (e.g. 'example_interfaces')")
-    completion.attach(p, package=completion.interface_packages)
-    p.set_defaults(offline=True, run=lambda _, a: package_command(a.package, a.kinds and _kinds(a)))
-
-    p = sub.add_parser("packages", help="Output a list of packages that provide interfaces")
-    _kind_flags(p, "List")
-    p.set_defaults(offline=True, run=lambda _, a: print(*packages(_packages_kind(a)), sep="\n"))
-
-    p = sub.add_parser("proto", help="Output an interface prototype")
-    p.add_argument(
-        "type", help="Show an interface definition (e.g. 'example_interfaces/msg/String')"
-    )
-    completion.attach(p, type=completion.all_types)
-    p.add_argument("--no-quotes", action="store_true", help="if true output has no outer quotes.")
-    p.set_defaults(offline=True, run=lambda _, a: proto(a.type, quotes=not a.no_quotes))
-
-    p = sub.add_parser("show", help="Output the interface definition")
-    comments = p.add_mutually_exclusive_group()
-    comments.add_argument(
-        "--all-comments",
-        action="store_true",
-        help="Show all comments, including for nested interface definitions",
-    )
-    comments.add_argument(
-        "--no-comments", action="store_true", help="Show no comments or whitespace"
-    )
-    p.add_argument(
-        "type",
-        help="Show an interface definition (e.g. 'example_interfaces/msg/String'). Passing '-' "
-        "reads the argument from stdin (e.g. 'ros2 topic type /chatter | ros2 interface show -').",
-    )
-    completion.attach(p, type=completion.all_types)
-    p.set_defaults(
-        offline=True,
-        run=lambda _, a: show(a.type, comments=not a.no_comments, all_comments=a.all_comments),
-    )
-
-
-def _packages_kind(args: argparse.Namespace) -> tuple[str, ...]:
-    """`packages -m -s` lists the message packages: ros2interface takes the first flag only."""
-    return _kinds(args)[:1] if args.kinds else KINDS
