@@ -190,6 +190,32 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 SNAPSHOT_TEXT = b"Software\0ros_tutorials turtlesim"
 
 
+def open_canvas(logger, headless: bool, png_hint: str) -> Canvas:
+    """A window if one can open and ``headless`` is false, else drawing in memory; each case
+    logged as turtlesim says it (png_hint: how to get a PNG of the canvas)."""
+    if headless:
+        logger.info(f"Running headless (parameter headless is true); {png_hint}")
+        return Canvas(window=False)
+    if not display_available():
+        logger.info(f"Running headless (no DISPLAY or WAYLAND_DISPLAY, so no window); {png_hint}")
+        return Canvas(window=False)
+    try:
+        drawn = Canvas(window=True)
+    except Exception as error:  # pygame.error: the display named cannot be opened
+        shown = ", ".join(
+            f"{name}={os.environ[name]}"
+            for name in ("DISPLAY", "WAYLAND_DISPLAY")
+            if os.environ.get(name)
+        )
+        logger.warning(f"Running headless: no window could open on {shown} ({error}); {png_hint}")
+        return Canvas(window=False)
+    logger.info(
+        f"Drawing in a window (pygame {pygame.version.ver}, "
+        f"SDL video driver {drawn.video_driver()})"
+    )
+    return drawn
+
+
 class SnapshotRefused(Exception):
     """A snapshot that is not written, and why (the service's answer says it)."""
 
