@@ -18,7 +18,8 @@ import time
 import pytest
 from helpers import TIMEOUT
 
-from ros2cmd import cli, daemon
+from ros2cmd import cli
+from ros2cmd.daemon import client as daemon
 
 # What a command's help, parsing or daemon answer must not load.
 HEAVY = ("rclpy", "numpy", "rosidl_parser", "action_msgs", "rcl_interfaces", "rmw_dds_common")

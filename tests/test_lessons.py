@@ -2,7 +2,7 @@
 packages; no code of this project) and carries none of the toolkit's hardening; only the lesson
 that teaches changing a log level at run time serves the logger-level services; and the docs'
 table of lengths (docs/lesson-files.md) is the files' own and keeps its target. tests/
-test_take_home.py runs them in a package of one's own."""
+test_lessons_in_own_package.py runs them in a package of one's own."""
 
 from __future__ import annotations
 

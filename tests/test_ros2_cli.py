@@ -56,8 +56,8 @@ def test_a_domain_id_dds_cannot_use_is_one_line(value, problem, command):
 
 
 def test_ros2_launch_does_not_load_rclpy():
-    """The launcher does not use rclpy; a `ros2 launch` that had loaded it (and Fast DDS)
-    ended with a segmentation fault in 2 of 3 runs after Ctrl-C (C++ code run at exit)."""
+    """The launcher does not use rclpy: a process that has loaded it (and Fast DDS) can end
+    with a segmentation fault after Ctrl-C (C++ code run at exit)."""
     code = (
         "import sys; from ros2cmd.entry import main; "
         "status = main(['launch', '--print', 'ros_tutorials_topic', 'union.launch.xml']); "

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 from helpers import TIMEOUT
-from test_hardening_launcher import BOMB
+from test_launcher_bad_input import BOMB
 from test_ros2 import BIN, fails, ok, tool
 
 

@@ -89,8 +89,7 @@ def record_while(recorder: NodeProcess, teleop: NodeProcess, commands: int) -> N
 
     The teleop publishes two more than that: one that may go out while the new subscription
     is still being matched with the teleop's publisher (a volatile topic keeps nothing for a
-    late subscriber, in ROS 2 too), and one still on its way when Ctrl-C comes (a fresh
-    clone's run once had 9 of 10 in the bag)."""
+    late subscriber, in ROS 2 too), and one still on its way when Ctrl-C comes."""
     recorder.wait_for_text("Recording...")
     recorder.wait_for_text("All requested topics are subscribed. Stopping discovery...")
     sent = teleop.output.count("publishing #")

@@ -59,8 +59,8 @@ PRELOAD = (
 )
 # The packages whose commands start warm. Not the launcher: it imports no rclpy (little to
 # gain), the tests of its guardian find its processes by their initial environment
-# (/proc/PID/environ, which a fork keeps), and a launcher forked from here died by SIGSEGV at
-# exit in 7 of 24 tries (its guardian forks again, with the ROS libraries loaded).
+# (/proc/PID/environ, which a fork keeps), and a launcher forked from here can die by SIGSEGV
+# at exit (its guardian forks again, with the ROS libraries loaded).
 PROJECT = frozenset(name.split(".")[0] for name in PRELOAD if not name.startswith("rclpy"))
 ENDED = b"ended "
 
