@@ -104,8 +104,8 @@ def lists(runs: int = 10) -> list[Row]:
 
 def picture(runs: int = 5) -> list[Row]:
     """Layout and drawing alone (no ROS), for a made-up graph of 50 nodes and 100 topics."""
-    from ros2cmd.graph_view.model import example_model
-    from ros2cmd.graph_view.render import write
+    from ros_tutorials_common.drawing.model import example_model
+    from ros_tutorials_common.drawing.render import write
 
     model = example_model(50, 100)
     rows = []

@@ -28,7 +28,7 @@ from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
 from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop
-from ros2cmd import wait
+from ros_tutorials_common import wait
 
 STEPS = 20
 POSE_PERIOD = 0.016  # turtlesim's

@@ -22,7 +22,7 @@ from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
 from benchmarks.common import Row, fmt_ms, p99, python, start, stop, wait_for_lines
-from ros2cmd import wait
+from ros_tutorials_common import wait
 
 PERIOD = 0.016
 TURTLES = 10

@@ -14,9 +14,9 @@ from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, form
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve
 from ros_tutorials_common import completion, packages
-from ros_tutorials_common.cli import positive_seconds, quiet_on_closed_pipe
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.cli import positive_seconds
 from ros_tutorials_common.dds import environment_problem
+from ros_tutorials_common.shutdown import program_main
 
 EXAMPLES = """\
 examples:
@@ -187,13 +187,13 @@ def format_args(infos: list[ArgInfo]) -> str:
     return "\n".join(lines)
 
 
-@quiet_on_closed_pipe  # `roslaunch --print FILE | head`
+@program_main  # `roslaunch --print FILE | head`
 def _print_and_end(text: str) -> int:
     print(text)
     return 0
 
 
-@exits_130_on_ctrl_c  # until the supervisor handles it (Supervisor.run)
+@program_main  # until the supervisor handles it (Supervisor.run)
 def main(
     argv: list[str] | None = None, program: str | None = None, standalone: bool | None = None
 ) -> int:

@@ -24,10 +24,10 @@ from typing import TYPE_CHECKING, Any
 
 from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.sub_verbs import VERB_HELP
-from ros2cmd.wait import Interrupted
-from ros_tutorials_common import ctrl_c
-from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds, stdout_closed
+from ros_tutorials_common import shutdown
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
 from ros_tutorials_common.dds import environment_problem
+from ros_tutorials_common.wait import Interrupted
 
 if TYPE_CHECKING:
     from ros2cmd.graph import Graph
@@ -193,16 +193,15 @@ def _execute(
         *rclpy_error("rclpy.executors", "ExternalShutdownException"),
     ):
         status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
-    except BrokenPipeError:
-        # `ros2 topic echo /t | head`: the reader left; leave quietly too.
-        stdout_closed()
-        status = 0
     except Exception as error:
-        if ctrl_c.interrupted(error) and _ros_ok():
+        status = shutdown.output_failed(error)  # `| head` (0), `> /dev/full` (one line, 1)
+        if status is not None:
+            pass
+        elif shutdown.interrupted(error) and _ros_ok():
             # An error a Ctrl-C caused on its way up (the KeyboardInterrupt in its context:
             # rclpy code cleaning up after it raised anew): the Ctrl-C it is.
             status = 0 if graph is not None and graph.finished else EXIT_INTERRUPTED
-        elif _ros_ok():
+        elif _ros_ok() or "rclpy" not in sys.modules:
             raise
         else:
             # SIGTERM: rclpy's handler shut ROS down while the command was creating its node,

@@ -13,10 +13,10 @@ import sys
 from collections.abc import Sequence
 
 from ros_tutorials_common import completion
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 
-@exits_130_on_ctrl_c  # while rclpy loads, too
+@program_main  # while rclpy loads, too
 def main(argv: Sequence[str] | None = None) -> int:
     if completion.requested():  # the shell asking for TAB's completions: ends here
         _complete()

@@ -44,8 +44,8 @@ from ros2cmd.local_participants import (
     still_there,
     unexplained,
 )
-from ros2cmd.wait import spin_until
-from ros_tutorials_common import bounded, ctrl_c
+from ros_tutorials_common import bounded, shutdown
+from ros_tutorials_common.wait import spin_until
 
 if TYPE_CHECKING:
     from rclpy.qos import QoSProfile
@@ -110,7 +110,7 @@ def until_stopped() -> contextlib.AbstractContextManager:
     Ctrl-C ("publishing and latching message. Press ctrl-C to terminate"): a Ctrl-C
     answering that line must find the command already in this state, however late the
     process gets the CPU back after printing. An error the Ctrl-C caused on its way up
-    (ctrl_c.interrupted: rclpy's C++ had called the Python code it interrupted) ends it the
+    (shutdown.interrupted: rclpy's C++ had called the Python code it interrupted) ends it the
     same way.
     """
     return _UntilStopped()
@@ -122,7 +122,7 @@ class _UntilStopped(contextlib.AbstractContextManager):
             return False
         stopped = (KeyboardInterrupt, *rclpy_error("rclpy.executors", "ExternalShutdownException"))
         return isinstance(error, stopped) or (
-            isinstance(error, Exception) and ctrl_c.interrupted(error)
+            isinstance(error, Exception) and shutdown.interrupted(error)
         )
 
 
@@ -274,7 +274,7 @@ class Graph(VisibleNames):
         except KeyboardInterrupt:  # pressed meanwhile: everything exists, close it first
             self.close()
             raise
-        ctrl_c.count_presses()  # a Ctrl-C lost on its way still ends a wait (see ctrl_c.py)
+        shutdown.count_presses()  # a Ctrl-C lost on its way still ends a wait (see shutdown.py)
         # SIGTERM shuts ROS down (rclpy's handler) and nothing more: a wait for a file's
         # bytes (`rosparam load FIFO`) asks whether it happened.
         bounded.stop_requested = lambda: not self.node.context.ok()

@@ -30,8 +30,8 @@ from catkin_pkg.packages import find_packages
 
 from ros2cmd.errors import ToolError
 from ros_tutorials_common import ament
-from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.pypi_packages import PYPI_NAMES, not_available_line
+from ros_tutorials_common.shutdown import program_main
 
 DEPENDENCY_TYPES = ("build", "buildtool", "build_export", "buildtool_export", "exec", "test")
 ALL_TYPES = (*DEPENDENCY_TYPES, "doc")
@@ -244,7 +244,7 @@ def run(args: argparse.Namespace) -> int:
     return 1
 
 
-@quiet_on_closed_pipe
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     args = parser().parse_intermixed_args(argv)
     try:

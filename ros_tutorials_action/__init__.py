@@ -1,7 +1,1 @@
 """The action lesson: a Fibonacci action server and a one-shot action client."""
-
-# Started as `python -m` (ros2 run, the launcher): rclpy's shutdown race on Ctrl-C is the stop
-# (docs/lesson-files.md). Here, not in the lesson files, which stay plain rclpy.
-from ros_tutorials_common.lesson_scripts import take_shutdown_race_for_the_stop
-
-take_shutdown_race_for_the_stop()

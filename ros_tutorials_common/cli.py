@@ -1,6 +1,6 @@
 """Command-line plumbing shared by the tutorial clients and the tools: argument types that
-refuse bad values with a clear usage error, the exit status of an interrupted command, and
-a quiet end when the reader of the output has gone (`rospack list | head`).
+refuse bad values with a clear usage error, and the exit status of an interrupted command
+(how a program ends: shutdown.py).
 
     parser.add_argument("order", type=signed_int(32))
     parser.add_argument("--timeout", type=positive_seconds, default=5.0)
@@ -9,11 +9,8 @@ a quiet end when the reader of the output has gone (`rospack list | head`).
 from __future__ import annotations
 
 import argparse
-import functools
 import math
-import os
 import re
-import sys
 from collections.abc import Callable
 
 EXIT_INTERRUPTED = 130  # what shells report for a command ended by Ctrl-C (128 + SIGINT)
@@ -78,29 +75,3 @@ def _positive_number(text: str, what: str) -> float:
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"{text!r} is not {what}")
     return value
-
-
-def stdout_closed() -> None:
-    """The reader of our output has gone (`ros2 topic list | head`): call this on
-    BrokenPipeError, then end with status 0, as ROS 1's tools and `ls | head` do.
-
-    Standard output goes to /dev/null from here on, so that Python's flush of it at exit
-    does not fail again ("Exception ignored ... BrokenPipeError", Python's "Note on SIGPIPE").
-    """
-    os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-
-
-def quiet_on_closed_pipe(main: Callable[..., int]) -> Callable[..., int]:
-    """A console script's main that ends quietly (status 0) when its reader has gone."""
-
-    @functools.wraps(main)
-    def run(*args: object, **kwargs: object) -> int:
-        try:
-            status = main(*args, **kwargs)
-            sys.stdout.flush()  # here, where a closed pipe is still caught
-        except BrokenPipeError:
-            stdout_closed()
-            return 0
-        return status
-
-    return run

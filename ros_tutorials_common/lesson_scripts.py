@@ -1,93 +1,104 @@
-"""The lessons' console scripts (``topic_publisher``, ``service_client 2 3``, ...): this
-project's DDS defaults (after the environment check `ros2 run` makes), then the lesson's own
-``main()``.
+"""Where the project starts a lesson node: this project's DDS defaults (after the environment
+check `ros2 run` makes), then the lesson's own ``main()``, and rclpy's shutdown race taken for
+the stop it is. Two ways in, one ``start``:
 
-A lesson file is plain rclpy and sets no defaults: the environment it starts in does
-(``source .venv/bin/activate``, ``ros2 run``, rosrun and the launcher apply ``dds.py``'s).
-A console script typed without activating the environment (``.venv/bin/topic_publisher``)
-gets them here. pyproject.toml's [project.scripts] is the one place a lesson's script is named:
-its value names the lesson module after this module,
-``ros_tutorials_common.lesson_scripts:ros_tutorials_topic.publisher``, and the script pip
-writes runs ``from ros_tutorials_common.lesson_scripts import ros_tutorials_topic`` then
-``ros_tutorials_topic.publisher()``: the defaults, then ``ros_tutorials_topic.publisher.main()``.
-The lesson is imported by the name the script gives, after the defaults, so nothing here
-imports a lesson package (the lessons sit above this floor). The package index
-(ros_tutorials_common/packages.py, ``lesson_module``) reads the same values.
+- the lessons' console scripts (``topic_publisher``, ``service_client 2 3``, ...).
+  pyproject.toml's [project.scripts] is the one place a lesson's script is named: its value
+  names the lesson module after this module,
+  ``ros_tutorials_common.lesson_scripts:ros_tutorials_topic.publisher``, and the script pip
+  writes runs ``from ros_tutorials_common.lesson_scripts import ros_tutorials_topic`` then
+  ``ros_tutorials_topic.publisher()``: ``run("ros_tutorials_topic.publisher")``;
+- `ros2 run`, rosrun and the launcher (ros_tutorials_common/packages.py's command lines):
+  ``python -m ros_tutorials_common.lesson_scripts ros_tutorials_topic.talker ARGS``, which runs
+  the module as ``python -m ros_tutorials_topic.talker ARGS`` would.
 
-Here too, not in the lessons: rclpy's shutdown race on Ctrl-C (docs/lesson-files.md).
+A lesson file is plain rclpy and handles none of this, and its package imports nothing of the
+project: a learner's copy behaves like the original (docs/lesson-files.md). The lesson is
+imported by the name given, after the defaults, so nothing here imports a lesson package (the
+lessons sit above this floor).
 """
 
 from __future__ import annotations
 
 import importlib
-import os
+import runpy
 import sys
 from collections.abc import Callable
 from typing import Any
 
+from ros_tutorials_common import shutdown
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
-# rclpy's race on Ctrl-C/SIGTERM: its signal handler shuts ROS down in its own thread, and a
-# timer's publish, or the spin's next wait, then fails on the shut-down context (RCLError
-# "publisher's context is invalid", "the given context is not valid"). That is the stop.
-SHUT_DOWN_CONTEXT = ("context is invalid", "context is not valid")
-
-
-def is_shutdown_race(error: BaseException) -> bool:
-    return isinstance(error, RuntimeError) and any(m in str(error) for m in SHUT_DOWN_CONTEXT)
-
-
-def take_shutdown_race_for_the_stop() -> None:
-    """For a lesson started as ``python -m PKG.MODULE`` (ros2 run, rosrun, the launcher): the
-    race above ends the process with status 0 and no traceback, as the console scripts' run()
-    does. Called by the lesson packages' __init__, which such a start imports first (a lesson
-    file stays plain rclpy); only while Python is locating a -m module."""
-    if sys.argv[:1] != ["-m"]:
-        return
-    previous, previous_unraisable = sys.excepthook, sys.unraisablehook
-
-    def hook(kind: type[BaseException], error: BaseException, trace: Any) -> None:
-        if not is_shutdown_race(error):
-            previous(kind, error, trace)
-            return
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os._exit(0)
-
-    def unraisable(what: Any) -> None:
-        # The Ctrl-C landed in a __del__ (rclpy's Future's), where Python only prints it:
-        # rclpy's handler has shut ROS down all the same, which ends the spin (hook above).
-        if not isinstance(what.exc_value, KeyboardInterrupt):
-            previous_unraisable(what)
-
-    sys.excepthook, sys.unraisablehook = hook, unraisable
-
-
-# The packages whose modules a script may name (the lessons and the demo nodes).
+THIS = "ros_tutorials_common.lesson_scripts"  # also when run as __main__
+# The packages whose modules a console script may name (the lessons and the demo nodes).
 LESSON_PACKAGE_PREFIX = "ros_tutorials_"
+# The packages of plain rclpy nodes that `ros2 run` and the launcher start through here: the
+# lessons, ROS 2's demo nodes, and the tf2 pages' demo package.
+PLAIN_NODE_PACKAGES = (
+    "ros_tutorials_topic",
+    "ros_tutorials_service",
+    "ros_tutorials_parameter",
+    "ros_tutorials_action",
+    "ros_tutorials_demo_nodes",
+    "turtle_tf2_py",
+)
 
 
 def lesson_module(script_value: str) -> str | None:
     """The lesson module a console script's ``module:attr`` value runs, or None if it is not
     a lesson's script."""
     module, _, attribute = script_value.partition(":")
-    if module.strip() != __name__:
+    if module.strip() != THIS:
         return None
     return attribute.strip()
 
 
-def run(module: str) -> int | None:
-    """Check the environment, apply the DDS defaults, then run ``module``'s main()."""
+def command(module: str) -> list[str]:
+    """The command line that starts MODULE, a plain rclpy node's module, through here."""
+    return [sys.executable, "-m", THIS, module]
+
+
+def started_module(line: list[str]) -> str | None:
+    """The module a command line of ``command()`` starts, or None for another command line."""
+    return line[3] if line[1:3] == ["-m", THIS] and len(line) > 3 else None
+
+
+def start(main: Callable[[], Any]) -> Any:
+    """Check the environment, apply the DDS defaults, then run ``main``: rclpy's race on
+    Ctrl-C/SIGTERM (``shutdown.is_shutdown_race``: its handler shut ROS down under the spin or a
+    timer's publish) ends it with status 0 and nothing printed, and a Ctrl-C that Python lost in
+    a ``__del__`` (rclpy's Future's) is not printed: rclpy's handler has shut ROS down all the
+    same, which ends the spin."""
     problem = environment_problem()  # as `ros2 run` checks: rclpy.init would fail
     if problem:
         raise SystemExit(f"error: {problem}")
     apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
+    previous = sys.unraisablehook
+
+    def unraisable(what: Any) -> None:
+        if not isinstance(what.exc_value, KeyboardInterrupt):
+            previous(what)
+
+    sys.unraisablehook = unraisable
     try:
-        return importlib.import_module(module).main()
+        return main()
     except RuntimeError as error:
-        if not is_shutdown_race(error):
+        if not shutdown.is_shutdown_race(error):
             raise
         return 0
+    finally:
+        sys.unraisablehook = previous
+
+
+def run(module: str) -> int | None:
+    """A lesson's console script: ``module``'s main(), started as ``start`` says."""
+    return start(lambda: importlib.import_module(module).main())
+
+
+def run_as_main(module: str, args: list[str]) -> None:
+    """``python -m module ARGS``, started as ``start`` says."""
+    sys.argv = [module, *args]  # runpy puts the module's file first, as `python -m` does
+    start(lambda: runpy.run_module(module, run_name="__main__", alter_sys=True))
 
 
 class _Package:
@@ -107,3 +118,9 @@ def __getattr__(name: str) -> _Package:
     if not name.startswith(LESSON_PACKAGE_PREFIX):
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     return _Package(name)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(f"usage: python -m {THIS} PACKAGE.MODULE [ARGS ...]")
+    run_as_main(sys.argv[1], sys.argv[2:])

@@ -35,6 +35,7 @@ import os
 import pkgutil
 import re
 import sys
+from collections.abc import Sequence
 from functools import cache
 from pathlib import Path
 
@@ -176,7 +177,7 @@ def executables_declaring(parameter: str) -> list[tuple[str, str]]:
     found: dict[str, tuple[str, str]] = {}
     for package, directory in package_dirs().items():
         for name, line in executables(package).items():
-            module = line[2] if line[1] == "-m" else ""
+            module = module_of(line) or ""
             if not module.startswith(f"{package}."):
                 continue
             short = module.rpartition(".")[2]
@@ -206,7 +207,7 @@ def executables(package: str) -> dict[str, list[str]]:
         if module.ispkg or qualified in on_path:
             continue
         if _has_main(directory / f"{module.name}.py"):
-            found[module.name] = [sys.executable, "-m", qualified]
+            found[module.name] = module_command(qualified)
     if not stand_in(package):
         found.update((name, _script_command(target)) for name, target in scripts.items())
     return dict(sorted(found.items()))
@@ -256,11 +257,28 @@ def console_scripts() -> dict[str, str]:
     return found
 
 
+def module_command(module: str) -> list[str]:
+    """``python -m MODULE``; a plain rclpy node's module (a lesson's) starts through
+    lesson_scripts, where the project starts lessons."""
+    if module.partition(".")[0] in lesson_scripts.PLAIN_NODE_PACKAGES:
+        return lesson_scripts.command(module)
+    return [sys.executable, "-m", module]
+
+
+def module_of(line: Sequence[str]) -> str | None:
+    """The module of this project a command line of ``module_command`` runs, else None."""
+    line = list(line)
+    started = lesson_scripts.started_module(line)
+    if started is not None:
+        return started
+    return line[2] if line[1:2] == ["-m"] and len(line) > 2 else None
+
+
 def _script_command(target: str) -> list[str]:
     module, _, function = target.partition(":")
     function = function.strip()
     if function == "main":
-        return [sys.executable, "-m", module]
+        return module_command(module.strip())
     code = f"import sys; from {module} import {function}; sys.exit({function}())"
     return [sys.executable, "-c", code]
 
@@ -389,7 +407,7 @@ def executable_files(package: str) -> dict[str, Path]:
         elif name in scripts:
             files[name] = Path(sys.executable).parent / name
         else:  # a module of this project's: its source
-            package_name, _, module = line[2].rpartition(".")
+            package_name, _, module = (module_of(line) or "").rpartition(".")
             files[name] = package_dirs()[package_name] / f"{module}.py"
     return dict(sorted(files.items()))
 

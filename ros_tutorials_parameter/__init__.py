@@ -1,8 +1,2 @@
 """The parameter lesson: a service server whose operator is the parameter
 ``calculation_method``, its client, and a talker whose text is the parameter ``talker_str``."""
-
-# Started as `python -m` (ros2 run, the launcher): rclpy's shutdown race on Ctrl-C is the stop
-# (docs/lesson-files.md). Here, not in the lesson files, which stay plain rclpy.
-from ros_tutorials_common.lesson_scripts import take_shutdown_race_for_the_stop
-
-take_shutdown_race_for_the_stop()

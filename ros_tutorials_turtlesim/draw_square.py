@@ -20,6 +20,7 @@ from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 
 from ros_tutorials_common.ros import run_node
+from ros_tutorials_common.shutdown import program_main
 
 SIDE = 2.0  # m
 FORWARD, STOP_FORWARD, TURN, STOP_TURN = "forward", "stop_forward", "turn", "stop_turn"
@@ -111,6 +112,7 @@ class DrawSquare(Node):
                 self.command(0.0, 0.0)
 
 
+@program_main
 def main(argv: list[str] | None = None) -> int:
     return run_node(DrawSquare, argv)  # rclpy.init with the DDS defaults, spin until Ctrl-C
 

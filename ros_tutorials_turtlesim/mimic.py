@@ -22,6 +22,7 @@ from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.msg import Pose
 
 from ros_tutorials_common.ros import run_node
+from ros_tutorials_common.shutdown import program_main
 
 
 class Mimic(Node):
@@ -40,6 +41,7 @@ class Mimic(Node):
         self.publisher.publish(twist)
 
 
+@program_main
 def main(argv: list[str] | None = None) -> int:
     return run_node(Mimic, argv)  # rclpy.init with the DDS defaults, spin until Ctrl-C
 

@@ -49,6 +49,7 @@ from std_srvs.srv import Empty, Trigger
 from turtlesim.srv import Kill, Spawn
 
 from ros_tutorials_common.ros import init
+from ros_tutorials_common.shutdown import StopSignals, program_main
 from ros_tutorials_turtlesim import canvas
 from ros_tutorials_turtlesim.parameters import (
     DEFAULT_BACKGROUND,
@@ -335,35 +336,19 @@ class TurtlesimNode(Node):
         return response
 
 
-class StopSignals:
-    """Ctrl-C and SIGTERM, noted and nothing more: the spin loop ends between two callbacks,
-    never inside rclpy's own code or close(), where an exception raised by a signal can leave a
-    half-made object behind (and a traceback from its __del__)."""
-
-    def __init__(self) -> None:
-        self.received: list[int] = []
-        self.wake = None  # the node's guard condition, while the loop spins
-        signal.signal(signal.SIGINT, self.note)
-        signal.signal(signal.SIGTERM, self.note)
-
-    def note(self, signum: int, _frame) -> None:
-        if not self.received and self.wake is not None:
-            self.wake.trigger()  # the executor's wait returns, the loop sees it
-        self.received.append(signum)
-
-
+@program_main
 def main(argv: list[str] | None = None) -> int:
     # Ctrl-C and SIGTERM are handled here, not by rclpy (whose handler shuts ROS down at once,
     # racing close()): the node is destroyed and the PNG written while ROS is still up.
     init(argv, signal_handler_options=SignalHandlerOptions.NO)
-    stop = StopSignals()
+    stop = StopSignals()  # the loop ends between two callbacks, never inside close()
     executor = SingleThreadedExecutor()
     node = None
     # kill -USR1 PID: a PNG now (set first: SIGUSR1's default would end the process)
     signal.signal(signal.SIGUSR1, lambda *_: node and node.request_snapshot())
     try:
         node = TurtlesimNode()
-        stop.wake = node.create_guard_condition(lambda: None)
+        stop.wake = node.create_guard_condition(lambda: None).trigger
         executor.add_node(node)
         while not stop.received:
             executor.spin_once()

@@ -25,11 +25,11 @@ from rclpy.qos import QoSProfile
 
 from ros2cmd.console import LEVEL_NAMES, ROSOUT_QOS
 from ros2cmd.graph import Graph, Snapshot
-from ros2cmd.graph_view.layout import layout, monospace_measure
 from ros2cmd.graph_view.model import model_from_snapshot
-from ros2cmd.graph_view.render import to_svg
 from ros2cmd.qos import qos_for
 from ros2cmd.typenames import load_type
+from ros_tutorials_common.drawing.layout import layout, monospace_measure
+from ros_tutorials_common.drawing.render import to_svg
 from ros_tutorials_web.frames import FrameWatch
 
 IMAGE_TYPE = "sensor_msgs/msg/CompressedImage"

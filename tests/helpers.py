@@ -25,7 +25,7 @@ import pytest
 from rclpy.executors import Executor
 from warm import Starter
 
-from ros2cmd import wait
+from ros_tutorials_common import wait
 
 T = TypeVar("T")
 TIMEOUT = 30.0

@@ -68,7 +68,7 @@ def test_rosrun_refuses_a_bad_ros1_name_in_one_line_before_the_node_starts(arg, 
 
 def test_the_seeds_package_names_find_this_projects_executables():
     def module(package: str, executable: str) -> str:
-        return packages.command(package, executable)[2]
+        return packages.module_of(packages.command(package, executable))
 
     assert module("beginner_tutorials", "talker") == "ros_tutorials_topic.talker"
     assert module("beginner_tutorials", "add_two_ints_server") == (
@@ -97,7 +97,7 @@ def test_the_seeds_package_names_find_this_projects_executables():
     with pytest.raises(packages.UnknownExecutable, match="has no executable 'nope'; it has: "):
         packages.command("beginner_tutorials", "nope")
     # ROS 1's `rosrun rqt_graph rqt_graph`: a tool of this project, named twice.
-    assert packages.command("ros2", "ros2")[2] == "ros2cmd.entry"
+    assert packages.module_of(packages.command("ros2", "ros2")) == "ros2cmd.entry"
     with pytest.raises(packages.UnknownExecutable, match="unknown package 'ros2'"):
         packages.command("ros2", "rosrun")
 

@@ -18,10 +18,10 @@ from pathlib import Path
 import pytest
 from helpers import TIMEOUT, NodeProcess
 
-from ros2cmd.graph_view import render
-from ros2cmd.graph_view.layout import GROUP_LABEL, PAD_X, layout, monospace_measure
-from ros2cmd.graph_view.model import GraphModel, Vertex
-from ros2cmd.graph_view.model import example_model as generated_model
+from ros_tutorials_common.drawing import render
+from ros_tutorials_common.drawing.layout import GROUP_LABEL, PAD_X, layout, monospace_measure
+from ros_tutorials_common.drawing.model import GraphModel, Vertex
+from ros_tutorials_common.drawing.model import example_model as generated_model
 
 BIN = Path(sys.executable).parent
 

@@ -84,8 +84,10 @@ def test_book_type_and_ros2_exec_name_the_same_command(tmp_path):
     by_module = plan(tmp_path, ros1(node1(type_="publisher")))[0]
     by_script = plan(tmp_path, ros1(node1(type_="talker.py")))[0]
     assert by_type.command == by_module.command
-    assert by_type.command[:3] == [sys.executable, "-m", "ros_tutorials_topic.publisher"]
-    assert by_script.command[:3] == [sys.executable, "-m", "ros_tutorials_topic.talker"]
+    # A lesson starts where the project handles rclpy's shutdown race (lesson_scripts).
+    start = [sys.executable, "-m", "ros_tutorials_common.lesson_scripts"]
+    assert by_type.command[:4] == [*start, "ros_tutorials_topic.publisher"]
+    assert by_script.command[:4] == [*start, "ros_tutorials_topic.talker"]
 
 
 def test_executables_are_discovered_from_modules_and_console_scripts():

@@ -352,7 +352,8 @@ def test_print_and_show_args_start_nothing(node_process):
     assert printed.wait() == 0
     assert "[ns2/topic_subscriber]" in printed.output
     command = (
-        "-m ros_tutorials_topic.subscriber --ros-args -r __node:=topic_subscriber -r __ns:=/ns2"
+        "-m ros_tutorials_common.lesson_scripts ros_tutorials_topic.subscriber"
+        " --ros-args -r __node:=topic_subscriber -r __ns:=/ns2"
     )
     assert command in printed.output
     assert "[launcher] started" not in printed.output

@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from helpers import spin_until
 
-from ros_tutorials_common import lesson_scripts
+from ros_tutorials_common import lesson_scripts, packages
 from ros_tutorials_topic.publisher import TopicPublisher
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -178,18 +178,17 @@ def test_the_console_scripts_take_rclpys_shutdown_race_for_the_stop(monkeypatch,
         ('RuntimeError("another error")', 1),
     ],
 )
-def test_a_lesson_started_with_python_m_takes_the_race_for_the_stop(tmp_path, raised, status):
-    """`ros2 run` and the launcher start a lesson as `python -m PKG.MODULE`, which imports the
-    lesson package first: its __init__ takes rclpy's shutdown race for the stop there (status
-    0, nothing printed), and a Ctrl-C that Python lost in a __del__ is not printed either;
-    any other error stays one."""
+def test_a_lesson_started_by_ros2_run_takes_the_race_for_the_stop(tmp_path, raised, status):
+    """`ros2 run` and the launcher start a lesson as `python -m
+    ros_tutorials_common.lesson_scripts PKG.MODULE` (packages.py): rclpy's shutdown race is the
+    stop there (status 0, nothing printed), and a Ctrl-C that Python lost in a __del__ is not
+    printed either; any other error stays one. The lesson's package imports nothing of it."""
     package = tmp_path / "racing"
     package.mkdir()
-    (package / "__init__.py").write_text(
-        "from ros_tutorials_common.lesson_scripts import take_shutdown_race_for_the_stop\n"
-        "take_shutdown_race_for_the_stop()\n"
-    )
+    (package / "__init__.py").write_text("")
     (package / "lesson.py").write_text(
+        "import sys\n"
+        "assert sys.argv[1:] == ['--ros-args'], sys.argv\n"
         "class Late:\n"
         "    def __del__(self):\n"
         "        raise KeyboardInterrupt\n"
@@ -198,10 +197,20 @@ def test_a_lesson_started_with_python_m_takes_the_race_for_the_stop(tmp_path, ra
     )
     env = {**os.environ, "PYTHONPATH": f"{tmp_path}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
     result = subprocess.run(
-        [sys.executable, "-m", "racing.lesson"], capture_output=True, text=True, env=env, timeout=60
-    )
+        [*lesson_scripts.command("racing.lesson"), "--ros-args"],
+        capture_output=True, text=True, env=env, timeout=60,
+    )  # fmt: skip
     assert result.returncode == status, result.stderr
     if status == 0:
         assert result.stdout == result.stderr == ""
     else:
         assert "another error" in result.stderr
+
+
+def test_lessons_packages_run_through_the_lesson_start():
+    """`ros2 run` and the launcher start a lesson where the project handles rclpy's shutdown
+    race (lesson_scripts), not through the lesson's package."""
+    line = packages.command("ros_tutorials_topic", "talker")
+    assert line[:3] == [sys.executable, "-m", "ros_tutorials_common.lesson_scripts"]
+    assert packages.module_of(line) == "ros_tutorials_topic.talker"
+    assert packages.module_of(packages.command("tf2_ros", "tf2_echo")) == "tf2_ros.tf2_echo"

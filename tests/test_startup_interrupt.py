@@ -17,7 +17,8 @@ whole process group for the launcher, as a terminal does), and collects stderr. 
 run from 0 to well past the import of rclpy, so they fall into every phase of the start:
 Python's own, the .pth files and the re-exec, the imports, rclpy.init, the node's creation.
 Nothing here asserts a time: a slower machine moves the phases, and the sweep still crosses
-them (the runs go in parallel, which loads the machine further). See ros_tutorials_common/ctrl_c.py.
+them (the runs go in parallel, which loads the machine further). See
+ros_tutorials_common/shutdown.py.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ import pytest
 from helpers import ROS_SHUT_DOWN, TIMEOUT, error_reports, tracebacks_after_start
 from rclpy.context import Context
 
-from ros_tutorials_common import ctrl_c
+from ros_tutorials_common import shutdown
 
 BIN = Path(sys.executable).parent
 ROOT = Path(__file__).resolve().parents[1]
@@ -270,11 +271,11 @@ def test_a_ctrl_c_that_pybind11_turned_into_an_error_ends_quietly(monkeypatch):
         "Unable to convert call argument '0' to Python object (#define "
         "PYBIND11_DETAILED_ERROR_MESSAGES or compile in debug mode for details)"
     )
-    monkeypatch.setattr(ctrl_c, "presses", 0)
-    assert not ctrl_c.interrupted(converted)
-    monkeypatch.setattr(ctrl_c, "presses", 1)
-    assert ctrl_c.interrupted(converted)
-    assert not ctrl_c.interrupted(RuntimeError("another error"))
+    monkeypatch.setattr(shutdown, "presses", 0)
+    assert not shutdown.interrupted(converted)
+    monkeypatch.setattr(shutdown, "presses", 1)
+    assert shutdown.interrupted(converted)
+    assert not shutdown.interrupted(RuntimeError("another error"))
 
 
 def test_a_command_that_runs_until_ctrl_c_ends_normally_on_an_error_the_ctrl_c_caused():
@@ -319,11 +320,11 @@ def test_rclpy_objects_cut_short_by_ctrl_c_are_not_reported_and_other_errors_are
         return type("Unraisable", (), {"exc_value": exc_value, "object": where})()
 
     monkeypatch.setattr(sys, "__unraisablehook__", seen.append)  # Python's, which prints
-    ctrl_c._unraisable(unraisable(failed.value, Future.__del__))
-    ctrl_c._unraisable(unraisable(executor_failed.value, SingleThreadedExecutor.__del__))
+    shutdown._unraisable(unraisable(failed.value, Future.__del__))
+    shutdown._unraisable(unraisable(executor_failed.value, SingleThreadedExecutor.__del__))
     assert seen == []
     other = unraisable(AttributeError("x"), stopped_well)
-    ctrl_c._unraisable(other)
+    shutdown._unraisable(other)
     assert seen == [other]
 
 
@@ -332,9 +333,9 @@ def test_keyboard_interrupt_waits_until_rclpy_has_shut_ros_down(context):
     KeyboardInterrupt only once the context is down: here it waits for a thread that shuts
     the context down later, as rclpy's signal handler thread does, and gives up after its
     timeout while the context stays up."""
-    from ros_tutorials_common.ros.node_main import _CtrlCOnceRosIsDown
+    from ros_tutorials_common.ros.node_main import _RosDown
 
-    handler = _CtrlCOnceRosIsDown(context)
+    handler = _RosDown(context)
     assert handler.ros_is_up()
     assert not handler.wait_until_down(0.2), "the context is up: the wait must give up"
     shutting_down = threading.Timer(0.3, context.shutdown)
@@ -344,7 +345,7 @@ def test_keyboard_interrupt_waits_until_rclpy_has_shut_ros_down(context):
         assert not context.ok(), "the wait ended before the context was down"
     finally:
         shutting_down.join()
-    assert not _CtrlCOnceRosIsDown(Context()).ros_is_up(), "a context never initialised"
+    assert not _RosDown(Context()).ros_is_up(), "a context never initialised"
 
 
 def test_a_node_sees_ros_down_when_ctrl_c_reaches_it(node_process):
@@ -371,12 +372,12 @@ def test_a_node_sees_ros_down_when_ctrl_c_reaches_it(node_process):
 def test_a_ctrl_c_that_lands_in_a_del_is_not_lost(node_process):
     """Python cannot raise a KeyboardInterrupt out of a __del__ (rclpy's Future and Task have
     one; the executor drops one per callback): it reports it as unraisable and runs on. The
-    tools' hook (ctrl_c.count_presses) delivers that Ctrl-C again, so the tool stops (`rostopic
+    tools' hook (shutdown.count_presses) delivers that Ctrl-C again, so the tool stops (`rostopic
     echo` ran on for 30 s after a Ctrl-C under load). Here the Ctrl-C lands in a __del__."""
     code = (
         "import os, signal, sys, time\n"
-        "from ros_tutorials_common import ctrl_c\n"
-        "ctrl_c.count_presses()\n"
+        "from ros_tutorials_common import shutdown\n"
+        "shutdown.count_presses()\n"
         "class Collected:\n"
         "    pressed = False\n"
         "    def __del__(self):\n"

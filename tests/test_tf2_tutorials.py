@@ -36,8 +36,7 @@ from test_workspace import (
 )
 from turtlesim.msg import Pose
 
-from ros_tutorials_common.ctrl_c import CONVERSION_FAILED
-from ros_tutorials_common.lesson_scripts import SHUT_DOWN_CONTEXT
+from ros_tutorials_common.shutdown import CONVERSION_FAILED, SHUT_DOWN_CONTEXT
 
 TF2 = DATA / "tf2"
 PAGE_FILES = [
@@ -174,7 +173,7 @@ def launched(workspace: Path, launch: str) -> NodeProcess:
 # Ctrl-C handler has already shut ROS down: in ROS 2 Jazzy that prints rclpy's traceback, as
 # does a spin or timer that meets the shut-down context first ("context is not valid"); a
 # Ctrl-C that lands while rclpy's C++ converts a message comes out as pybind11's RuntimeError
-# (ros_tutorials_common/ctrl_c.py).
+# (ros_tutorials_common/shutdown.py).
 ALREADY_SHUT_DOWN = "failed to shutdown: rcl_shutdown already called on the given context"
 
 

@@ -1,6 +1,6 @@
-"""The tools' wait loop (ros2cmd/wait.py): a Ctrl-C ends it even when its KeyboardInterrupt
-is lost on the way (Python raises it in whatever code runs; code that C calls may drop it):
-ros_tutorials_common/ctrl_c.py counts the presses."""
+"""The tools' wait loop (ros_tutorials_common/wait.py): a Ctrl-C ends it even when its
+KeyboardInterrupt is lost on the way (Python raises it in whatever code runs; code that C calls
+may drop it): ros_tutorials_common/shutdown.py counts the presses."""
 
 from __future__ import annotations
 
@@ -12,8 +12,7 @@ import time
 import pytest
 from rclpy.executors import SingleThreadedExecutor
 
-from ros2cmd import wait
-from ros_tutorials_common import ctrl_c
+from ros_tutorials_common import shutdown, wait
 
 
 def test_a_ctrl_c_whose_keyboardinterrupt_was_swallowed_still_ends_the_wait(
@@ -21,7 +20,7 @@ def test_a_ctrl_c_whose_keyboardinterrupt_was_swallowed_still_ends_the_wait(
 ):
     previous = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(sys, "unraisablehook", sys.unraisablehook)  # restored afterwards
-    ctrl_c.count_presses()
+    shutdown.count_presses()
     swallowed = []
 
     def condition() -> bool:
@@ -47,7 +46,7 @@ def test_a_ctrl_c_before_the_wait_does_not_end_it(executor: SingleThreadedExecut
     """Presses counted before spin_until started (and handled then) are not its business."""
     previous = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(sys, "unraisablehook", sys.unraisablehook)
-    ctrl_c.count_presses()
+    shutdown.count_presses()
     try:
         with pytest.raises(KeyboardInterrupt):
             os.kill(os.getpid(), signal.SIGINT)
@@ -71,14 +70,14 @@ def test_a_lost_ctrl_c_is_delivered_again_once_not_twice(monkeypatch):
     delivered a second time by the hook: a running echo once ended 0, then 130."""
     previous = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(sys, "unraisablehook", sys.unraisablehook)
-    ctrl_c.count_presses()
+    shutdown.count_presses()
     try:
-        monkeypatch.setattr(ctrl_c, "presses", ctrl_c.presses + 1)  # the press, counted
-        monkeypatch.setattr(ctrl_c, "delivered", ctrl_c.presses)  # and delivered by the wait
-        ctrl_c._unraisable(_Unraisable())
+        monkeypatch.setattr(shutdown, "presses", shutdown.presses + 1)  # the press, counted
+        monkeypatch.setattr(shutdown, "delivered", shutdown.presses)  # and delivered by the wait
+        shutdown._unraisable(_Unraisable())
         time.sleep(0.5)  # the hook's redelivery would come 0.01 s later: nothing may come
-        monkeypatch.setattr(ctrl_c, "presses", ctrl_c.presses + 1)  # a press nobody delivered
-        ctrl_c._unraisable(_Unraisable())
+        monkeypatch.setattr(shutdown, "presses", shutdown.presses + 1)  # a press nobody delivered
+        shutdown._unraisable(_Unraisable())
         with pytest.raises(KeyboardInterrupt):
             time.sleep(5)  # the hook delivers this one again
     finally:

@@ -23,12 +23,10 @@ from collections.abc import Sequence
 import rclpy
 from geometry_msgs.msg import TransformStamped
 from rcl_interfaces.msg import ParameterDescriptor
-from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER, init, user_args
+from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
 
 USAGE = """\
@@ -236,10 +234,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         rclpy.spin(node)
     except SameFrames:
         return 1
-    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
-        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
-    except RuntimeError as error:  # the same refusal, by rcl
-        if not is_shutdown_race(error):
+    except BaseException as error:
+        if not node_stopped(error):  # Ctrl-C, SIGTERM: the normal end
             raise
     finally:
         if node is not None:

@@ -26,13 +26,10 @@ import time
 from collections.abc import Sequence
 
 import rclpy
-from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException
 from rclpy.time import Time
 
-from ros_tutorials_common.cli import quiet_on_closed_pipe
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import init, user_args
+from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.shutdown import program_main
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
 from tf2_ros.transform_listener import TransformListener
@@ -120,7 +117,7 @@ def pause(seconds: float) -> None:
         time.sleep(min(left, 0.1))
 
 
-@quiet_on_closed_pipe  # `tf2_echo a b | head`
+@program_main  # `tf2_echo a b | head`
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
@@ -163,15 +160,12 @@ def main(argv: Sequence[str] | None = None) -> int:
                 print(buffer.all_frames_as_string())
             sys.stdout.flush()
             pause(period)
-    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
-        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
-    except RuntimeError as error:  # the same refusal, by rcl
-        if not is_shutdown_race(error):
+    except BaseException as error:
+        if not node_stopped(error):  # Ctrl-C, SIGTERM: the normal end
             raise
     finally:
         if listener is not None:  # its thread must be done with the node before it goes
-            listener.executor.shutdown()
-            listener.dedicated_listener_thread.join()
+            listener.stop_spinning()
         if node is not None:
             node.destroy_node()
         rclpy.try_shutdown()

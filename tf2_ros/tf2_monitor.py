@@ -10,7 +10,6 @@ main's -1).
 
 from __future__ import annotations
 
-import contextlib
 import sys
 import threading
 import time
@@ -18,16 +17,13 @@ from collections import deque
 from collections.abc import Sequence
 
 import rclpy
-from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from rclpy.time import Time
 from tf2_msgs.msg import TFMessage
 
-from ros_tutorials_common.cli import quiet_on_closed_pipe
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import init, user_args
+from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.shutdown import program_main
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
 from tf2_ros.transform_listener import TransformListener
@@ -93,24 +89,21 @@ class Monitor:
         return "\n".join(broadcasters)
 
 
-@quiet_on_closed_pipe
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
     init(argv)
-    node = None
-    executor = SingleThreadedExecutor()
-    spinner = threading.Thread(target=_spin, args=(executor,), daemon=True)
+    node = listener = None
     try:
         node = rclpy.create_node("tf2_monitor_main")
         if len(args) not in (0, 2):
             node.get_logger().info("TF_Monitor: usage: tf2_monitor framea frameb")
             return 255
         buffer = Buffer(node=node)
-        TransformListener(buffer, node)
         monitor = Monitor(node)
-        executor.add_node(node)
-        spinner.start()
+        # Its thread spins the node, the monitor's subscription too, as tf2_monitor's listener.
+        listener = TransformListener(buffer, node, spin_thread=True)
         chain = None
         if args:
             framea, frameb = args
@@ -132,24 +125,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         else:
             print("Gathering data on all frames for 10 seconds...", flush=True)
         _report_forever(buffer, monitor, args, chain)
-    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
-        pass  # NotInitializedException: rclpy refusing a node once a Ctrl-C shut ROS down
-    except RuntimeError as error:  # the same refusal, by rcl
-        if not is_shutdown_race(error):
+    except BaseException as error:
+        if not node_stopped(error):  # Ctrl-C, SIGTERM: the normal end
             raise
     finally:
-        executor.shutdown(timeout_sec=1.0)
-        if spinner.is_alive():  # its thread must be done with the node before it goes
-            spinner.join()
+        if listener is not None:  # its thread must be done with the node before it goes
+            listener.stop_spinning()
         if node is not None:
             node.destroy_node()
         rclpy.try_shutdown()
     return 0
-
-
-def _spin(executor: SingleThreadedExecutor) -> None:
-    with contextlib.suppress(ExternalShutdownException):  # rclpy shut down: the spin is over
-        executor.spin()
 
 
 def _report_forever(

@@ -5,7 +5,7 @@ local (so a late listener still gets every latched static transform). Its callba
 reentrant group, so a lookup with a timeout in another callback of the node can be answered
 while it waits (with a multi-threaded executor). ``spin_thread=True`` spins the node in a
 thread of the listener's own, as tf2_ros does, so a lookup with a timeout works in a program
-that does not spin.
+that does not spin; the thread ends when ROS shuts down or the listener goes (``stop_spinning``).
 """
 
 from __future__ import annotations
@@ -14,12 +14,12 @@ import threading
 from threading import Thread
 
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from tf2_msgs.msg import TFMessage
 
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
+from ros_tutorials_common.ros import node_stopped
 from tf2_ros.buffer import Buffer
 
 __all__ = ["TransformListener"]
@@ -60,6 +60,7 @@ class TransformListener:
         )
         if spin_thread:
             self.executor = SingleThreadedExecutor(context=node.context)
+            self.spinning = True
             self.dedicated_listener_thread = Thread(
                 target=self._spin, name="tf2_listener", daemon=True
             )
@@ -68,19 +69,28 @@ class TransformListener:
     def _spin(self) -> None:
         self.executor.add_node(self.node)
         try:
-            self.executor.spin()
-        except ExternalShutdownException:  # rclpy shut down: work over
-            pass
-        except RuntimeError as error:  # the same, when rcl saw it first (SIGTERM, Ctrl-C)
-            if not is_shutdown_race(error):
+            while self.spinning:
+                self.executor.spin_once()
+        except Exception as error:
+            if not node_stopped(error):  # rclpy shut down (SIGTERM, Ctrl-C): work over
                 raise
 
-    def __del__(self) -> None:
+    def stop_spinning(self) -> None:
+        """End the spin thread, then its executor. In this order: rclpy's Executor.shutdown
+        destroys the executor's guard condition at once, also under a thread that waits on it
+        (which then fails: "InvalidHandle: cannot use Destroyable because destruction was
+        requested")."""
         executor = getattr(self, "executor", None)
-        if executor is not None:
-            executor.shutdown()
-            if threading.current_thread() is not self.dedicated_listener_thread:
-                self.dedicated_listener_thread.join()
+        if executor is None:
+            return
+        self.spinning = False
+        executor.wake()
+        if threading.current_thread() is not self.dedicated_listener_thread:
+            self.dedicated_listener_thread.join()
+        executor.shutdown()
+
+    def __del__(self) -> None:
+        self.stop_spinning()
 
     def unregister(self) -> None:
         """Stop listening: destroy the two subscriptions."""

@@ -18,18 +18,15 @@ from pathlib import Path
 
 import rclpy
 import yaml
-from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from tf2_msgs.srv import FrameGraph
 
-from ros2cmd.errors import ToolError
-from ros2cmd.graph_view.model import MAX_VERTICES, GraphModel
-from ros2cmd.graph_view.render import write
-from ros2cmd.wait import Interrupted, spin_until
-from ros_tutorials_common import ctrl_c
+from ros_tutorials_common import shutdown
 from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import init, user_args
+from ros_tutorials_common.drawing.model import MAX_VERTICES, GraphModel
+from ros_tutorials_common.drawing.render import CannotWrite, write
+from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.wait import Interrupted, spin_until
 
 
 class Parser(argparse.ArgumentParser):
@@ -109,7 +106,7 @@ def view_frames(node: rclpy.node.Node, args: argparse.Namespace) -> int:
     executor.add_node(node)
     node.get_logger().info(f"Listening to tf data for {args.wait_time} seconds...")
     # Any press so far ends it: one delivered would have, so this one was lost on its way.
-    spin_until(executor, lambda: False, args.wait_time, interrupted=lambda: ctrl_c.presses > 0)
+    spin_until(executor, lambda: False, args.wait_time, interrupted=lambda: shutdown.presses > 0)
     node.get_logger().info("Generating graph...")
     result = FrameGraph.Response(frame_yaml=buffer.all_frames_as_yaml())
     node.get_logger().info("Result:" + str(result))
@@ -121,17 +118,17 @@ def view_frames(node: rclpy.node.Node, args: argparse.Namespace) -> int:
     try:
         Path(name + ".gv").write_text(to_dot(frames, sec + nanosec / 1e9))
     except OSError as error:
-        raise ToolError(f"cannot write '{name}.gv': {error.strerror or error}") from None
+        raise CannotWrite(f"cannot write '{name}.gv': {error.strerror or error}") from None
     model = to_model(frames, sec + nanosec / 1e9)
     if len(model.vertices) > MAX_VERTICES:  # the layout's limit of a readable picture
-        raise ToolError(
+        raise CannotWrite(
             f"{len(frames)} frames are too many to draw readably; {name}.gv has them all"
         )
     write(model, picture)
     return 0
 
 
-@ctrl_c.exits_130_on_ctrl_c
+@shutdown.program_main
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv if argv is None else argv
     args = parse_args(user_args(argv))
@@ -140,17 +137,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         node = rclpy.create_node("view_frames")
         return view_frames(node, args)
-    except ToolError as error:
+    except CannotWrite as error:
         print(f"view_frames: {error}", file=sys.stderr)
         return 1
-    # SIGTERM: rclpy's handler shut ROS down; as Ctrl-C. NotInitializedException: rclpy
-    # refusing the node in the context a Ctrl-C (or SIGTERM) has just shut down.
-    except (ExternalShutdownException, NotInitializedException):
-        return EXIT_INTERRUPTED
     except Interrupted:
         return EXIT_INTERRUPTED
-    except RuntimeError as error:  # the same, seen by rcl first ("context is not valid")
-        if is_shutdown_race(error):
+    except Exception as error:  # SIGTERM (rclpy's handler shut ROS down): as Ctrl-C
+        if node_stopped(error):
             return EXIT_INTERRUPTED
         raise
     finally:

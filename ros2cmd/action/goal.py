@@ -1,26 +1,25 @@
 """Waiting on an action goal without hanging, and canceling it on Ctrl-C.
 
 Used by ``ros2 action send_goal``. A goal may run for long, so its waits
-(``wait.spin_until``) stop at once on a Ctrl-C noted by ``CtrlC`` (``Interrupted``) and when
+(``wait.spin_until``) stop at once on a Ctrl-C noted by ``StopSignals`` (``Interrupted``) and when
 the action server goes away (``ServerLost``).
 
 After Ctrl-C, ``cancel_goal`` asks the server to cancel the goal and waits a bounded time for
 the answer. That needs ROS still running, so the program must not let rclpy shut ROS down on
-SIGINT: it initialises with ``signal_handler_options`` NO (or SIGTERM) and installs ``CtrlC``::
+SIGINT: it initialises with ``signal_handler_options`` NO (or SIGTERM) and notes Ctrl-C with
+ros_tutorials_common/shutdown.py's ``StopSignals`` (a second Ctrl-C: KeyboardInterrupt)::
 
-    ctrl_c = CtrlC()
-    signal.signal(signal.SIGINT, ctrl_c)
-    spin_until(executor, future.done, 30.0, client=client, interrupted=ctrl_c.is_pressed)
+    ctrl_c = StopSignals((signal.SIGINT,), second_raises=True)
+    spin_until(executor, future.done, 30.0, client=client, interrupted=lambda: ctrl_c.received)
 """
 
 from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from types import FrameType
 from typing import TYPE_CHECKING, Any
 
-from ros2cmd.wait import ServerLost, spin_until
+from ros_tutorials_common.wait import ServerLost, spin_until
 
 if TYPE_CHECKING:
     from rclpy.action import ActionClient
@@ -28,22 +27,6 @@ if TYPE_CHECKING:
     from rclpy.task import Future
 
 CANCEL_TIMEOUT = 5.0
-
-
-class CtrlC:
-    """A SIGINT handler that only notes the Ctrl-C: the goal is canceled from the main loop,
-    between two spins. A second Ctrl-C means "leave now" and raises KeyboardInterrupt."""
-
-    def __init__(self) -> None:
-        self.pressed = False
-
-    def __call__(self, signum: int, frame: FrameType | None) -> None:
-        if self.pressed:
-            raise KeyboardInterrupt
-        self.pressed = True
-
-    def is_pressed(self) -> bool:
-        return self.pressed
 
 
 def cancel_goal(
@@ -57,7 +40,7 @@ def cancel_goal(
 
     Calls on_canceling() just before the cancel request goes out (to say so). Returns the
     server's CancelGoal response, or None: the goal was never accepted, or the server did not
-    answer in time. Not interruptible: a second Ctrl-C raises KeyboardInterrupt (see CtrlC).
+    answer in time. Not interruptible: a second Ctrl-C raises KeyboardInterrupt (StopSignals).
     """
     deadline = time.monotonic() + timeout
 

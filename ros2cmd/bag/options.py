@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
 from typing import Any
 
 from ros_tutorials_common.cli import positive_int, positive_seconds
+from ros_tutorials_common.shutdown import terminate_as_ctrl_c
 
 UNITS = {"s": 1.0, "m": 60.0, "h": 3600.0}
 
@@ -81,7 +81,7 @@ def run_play(graph: Any, bag: str, options: Any) -> None:
     from ros2cmd.graph import until_stopped
 
     # SIGTERM like Ctrl-C: stop publishing, no traceback from a context shut down under us.
-    signal.signal(signal.SIGTERM, signal.default_int_handler)
+    terminate_as_ctrl_c()
     if options.loop and options.ros1:  # runs until Ctrl-C: that is its normal end
         with until_stopped():
             play(graph, bag, options)

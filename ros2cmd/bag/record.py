@@ -21,7 +21,6 @@ in the middle of a write.
 from __future__ import annotations
 
 import re
-import signal
 import sys
 import time
 from dataclasses import dataclass, field
@@ -46,6 +45,7 @@ from rosbag2.metadata import TopicInfo
 from rosbag2.offered_qos import qos_to_dict
 from rosbag2.reader import BagReader
 from rosbag2.writer import BagWriter, default_bag_name
+from ros_tutorials_common.shutdown import StopSignals
 
 SPIN_PERIOD = 0.05
 FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
@@ -333,18 +333,6 @@ class Recorder:
         self.info("Pausing recording." if self.paused else "Resuming recording.")
 
 
-class _StopFlag:
-    """Ctrl-C and SIGTERM set it; the loop looks at it between callbacks."""
-
-    def __init__(self) -> None:
-        self.signal_name = ""
-        for number in (signal.SIGINT, signal.SIGTERM):
-            signal.signal(number, self._handle)
-
-    def _handle(self, number: int, _frame: Any) -> None:
-        self.signal_name = signal.Signals(number).name
-
-
 def _check_names(graph: Graph, names: list[str]) -> None:
     """A name rcl refuses ('bad topic') can never appear: refuse it now instead of waiting."""
     for name in names:
@@ -357,7 +345,7 @@ def _check_names(graph: Graph, names: list[str]) -> None:
 
 def record(graph: Graph, options: RecordOptions, output: str | None) -> None:
     _check_names(graph, [*options.topics, *options.services, *options.exclude_topics])
-    stop = _StopFlag()
+    stop = StopSignals()  # the loop looks between callbacks
     writer = BagWriter(output or default_bag_name(), custom_data=options.custom_data)
     node = None
     if not options.ros1:
@@ -394,7 +382,7 @@ def record(graph: Graph, options: RecordOptions, output: str | None) -> None:
     if error is not None:
         raise error
     if options.ros1:
-        reason = recorder.stop_reason or f"{stop.signal_name} received"
+        reason = recorder.stop_reason or f"{stop.name} received"
         print(f"Recording stopped ({reason}): {writer.message_count} messages", flush=True)
         with BagReader(writer.folder) as reader:
             print(ros1_info(reader.bag), flush=True)
@@ -405,7 +393,7 @@ def _run(
     recorder: Recorder,
     writer: BagWriter,
     options: RecordOptions,
-    stop: _StopFlag,
+    stop: StopSignals,
     keyboard: Keyboard,
 ) -> None:
     if options.ros1:
@@ -432,7 +420,7 @@ def _run(
     start = time.monotonic()
     last_discovery = 0.0  # the discovery thread's first round comes at once
     last_loss_report = start
-    while not (stop.signal_name or recorder.stop_reason):
+    while not (stop.name or recorder.stop_reason):
         now = time.monotonic()
         if options.duration is not None and now - start >= options.duration:
             recorder.stop_reason = f"--duration {options.duration:g} s reached"

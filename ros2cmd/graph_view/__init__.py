@@ -11,9 +11,9 @@ is not a lasting connection).
     rqt_graph --window             a window that follows nodes as they come and go
     rqt_graph                          the window where there is a display, else DOT
 
-This module is the command (its options, what it writes where); model.py is what the picture
-holds, layout.py where each thing goes, render.py the DOT, SVG and PNG output, window.py the
-window.
+This module is the command (its options, what it writes where); model.py takes the picture
+from the graph, window.py is the window; the drawing itself (the model, where each thing goes,
+the DOT, SVG and PNG output) is ros_tutorials_common/drawing/, which view_frames draws with too.
 """
 
 from __future__ import annotations
@@ -22,10 +22,12 @@ import argparse
 import sys
 from pathlib import Path
 
+from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, until_stopped
-from ros2cmd.graph_view.model import GraphModel, current_model
-from ros2cmd.graph_view.render import to_dot, write
+from ros2cmd.graph_view.model import current_model
 from ros2cmd.graph_view.window import window as show_window  # the module keeps its name
+from ros_tutorials_common.drawing.model import GraphModel
+from ros_tutorials_common.drawing.render import CannotWrite, to_dot, write
 
 
 def run(graph: Graph, args: argparse.Namespace) -> None:
@@ -37,7 +39,10 @@ def run(graph: Graph, args: argparse.Namespace) -> None:
     graph.settle()
     model = current_model(graph, groups, all_topics)
     if args.output:
-        write(model, Path(args.output))
+        try:
+            write(model, Path(args.output))
+        except CannotWrite as error:
+            raise ToolError(str(error)) from None
         print(f"wrote {args.output}: {_counts(model)}", file=sys.stderr)
     else:
         sys.stdout.write(to_dot(model))

@@ -8,9 +8,9 @@ import time
 
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph
-from ros2cmd.graph_view.layout import layout
 from ros2cmd.graph_view.model import current_model
-from ros2cmd.graph_view.render import PNG_FONT_SIZE, draw, load_pygame, pygame_measure
+from ros_tutorials_common.drawing.layout import layout
+from ros_tutorials_common.drawing.render import PNG_FONT_SIZE, draw, load_pygame, pygame_measure
 
 
 def window(graph: Graph, groups: bool, all_topics: bool, refresh: float = 1.0) -> None:

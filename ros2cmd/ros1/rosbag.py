@@ -24,8 +24,8 @@ from ros2cmd.bag.options import (
     wait_argument,
 )
 from ros2cmd.errors import ToolError
-from ros_tutorials_common.cli import positive_rate, stdout_closed
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.cli import positive_rate
+from ros_tutorials_common.shutdown import program_main
 
 
 def _record_arguments(parser: argparse.ArgumentParser) -> None:
@@ -110,7 +110,7 @@ def rosbag_parser() -> argparse.ArgumentParser:
     return parser
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rosbag(argv: Sequence[str] | None = None) -> int:
     completion.answer(rosbag_parser())  # the shell asking for TAB's completions: ends here
     argv = sys.argv[1:] if argv is None else list(argv)
@@ -138,6 +138,4 @@ def _offline_only(command: str, argv: list[str]) -> int:
     except ToolError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
-    except BrokenPipeError:
-        stdout_closed()
     return 0

@@ -13,8 +13,8 @@ import sys
 from collections.abc import Sequence
 
 from ros_tutorials_common import completion
-from ros_tutorials_common.cli import quiet_on_closed_pipe
 from ros_tutorials_common.dds import apply_dds_defaults
+from ros_tutorials_common.shutdown import program_main, terminate_as_ctrl_c
 
 
 def explanation(env: dict[str, str]) -> str:
@@ -45,7 +45,7 @@ def explanation(env: dict[str, str]) -> str:
 
 def show_and_wait() -> None:
     """Print the explanation, then sleep until Ctrl-C (SIGINT) or SIGTERM: a normal end."""
-    signal.signal(signal.SIGTERM, signal.default_int_handler)
+    terminate_as_ctrl_c()
     try:
         print(explanation(dict(os.environ)), flush=True)
         while True:
@@ -54,7 +54,7 @@ def show_and_wait() -> None:
         pass
 
 
-@quiet_on_closed_pipe
+@program_main
 def roscore(argv: Sequence[str] | None = None) -> int:
     """The `roscore` command (console script)."""
     parser = argparse.ArgumentParser(

@@ -16,7 +16,7 @@ from ros2cmd import completion
 from ros2cmd.interface import api as interface
 from ros2cmd.ros1 import tool
 from ros2cmd.typenames import KIND_NAMES
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 
 def _interface_parser(name: str, kind: str) -> argparse.ArgumentParser:
@@ -62,11 +62,11 @@ def _show(type_name: str, kind: str) -> None:
     interface.show(type_name, ros1_style=True, kinds=(kind,))
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rosmsg(argv: Sequence[str] | None = None) -> int:
     return tool.run(_interface_parser("rosmsg", "msg"), argv)
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rossrv(argv: Sequence[str] | None = None) -> int:
     return tool.run(_interface_parser("rossrv", "srv"), argv)

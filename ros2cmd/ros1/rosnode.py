@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from ros2cmd import completion, node
 from ros2cmd.daemon.client import about_node
 from ros2cmd.ros1 import tool
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 
 def rosnode_parser() -> argparse.ArgumentParser:
@@ -28,6 +28,6 @@ def rosnode_parser() -> argparse.ArgumentParser:
     return parser
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rosnode(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosnode_parser(), argv)

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from ros2cmd import completion
 from ros_tutorials_common import ament, packages
-from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.shutdown import program_main
 
 
 def all_packages() -> dict[str, Path]:
@@ -31,7 +31,7 @@ def find(name: str) -> Path:
     return packages.package_folder(name)
 
 
-@quiet_on_closed_pipe
+@program_main
 def rospack(argv: Sequence[str] | None = None) -> int:
     """The `rospack` command (console script): find and list."""
     parser = argparse.ArgumentParser(prog="rospack", description=__doc__.split("\n")[0])

@@ -20,7 +20,7 @@ from ros2cmd.messages import parse_yaml
 from ros2cmd.param import api as param
 from ros2cmd.ros1 import tool
 from ros_tutorials_common import packages
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 # How many running nodes an error names.
 NODES_NAMED = 4
@@ -224,6 +224,6 @@ def rosparam_parser() -> argparse.ArgumentParser:
     return parser
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rosparam(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosparam_parser(), argv)

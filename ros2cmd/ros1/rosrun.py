@@ -32,14 +32,12 @@ from ros2cmd import completion
 from ros2cmd.errors import ToolError
 from ros2cmd.run import run
 from ros_tutorials_common import packages
-from ros_tutorials_common.cli import quiet_on_closed_pipe
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 USAGE = "usage: rosrun PKG EXECUTABLE [ARGS ...]"
 
 
-@quiet_on_closed_pipe
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main
 def rosrun(argv: Sequence[str] | None = None) -> int:
     """The `rosrun` command (console script)."""
     if completion.requested():  # the shell asking for TAB's completions: ends here

@@ -20,7 +20,7 @@ from ros2cmd.service.verb.find import find
 from ros2cmd.service.verb.list import list_services
 from ros2cmd.service.verb.type import print_type
 from ros2cmd.typenames import load_type
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 
 def rosservice_parser() -> argparse.ArgumentParser:
@@ -90,6 +90,6 @@ def _service_info(graph: Graph, name: str) -> None:
     print(f"Args: {' '.join(fields)}")
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rosservice(argv: Sequence[str] | None = None) -> int:
     return tool.run(rosservice_parser(), argv)

@@ -28,7 +28,7 @@ from ros2cmd.ros1 import tool
 from ros2cmd.topic.api import HzMeter, node_names_known, publish_one
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_common.cli import positive_int, positive_rate
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 if TYPE_CHECKING:
     from rclpy.publisher import Publisher
@@ -101,7 +101,7 @@ def _pub(graph: Graph, args: argparse.Namespace) -> None:
         pub(graph, args.topic, args.type, values, rate=None, latch=True)
 
 
-@exits_130_on_ctrl_c  # the console script's entry
+@program_main  # the console script's entry
 def rostopic(argv: Sequence[str] | None = None) -> int:
     return tool.run(rostopic_parser(), argv)
 

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from ros2cmd import completion, console, graph_view, log
 from ros2cmd.cli import common_options, execute
 from ros2cmd.graph import DEFAULT_TIMEOUT, Graph
-from ros_tutorials_common.ctrl_c import exits_130_on_ctrl_c
+from ros_tutorials_common.shutdown import program_main
 
 
 def _parser(prog: str, description: str) -> argparse.ArgumentParser:
@@ -33,7 +33,7 @@ def _execute(args: argparse.Namespace, run, offline: bool = False) -> int:
     )
 
 
-@exits_130_on_ctrl_c
+@program_main
 def rqt_graph(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_graph", "The running graph: a window, or DOT/SVG/PNG")
     graph_view.add_arguments(parser)
@@ -47,7 +47,7 @@ def rqt_graph(argv: Sequence[str] | None = None) -> int:
     return _execute(args, graph_view.run)
 
 
-@exits_130_on_ctrl_c
+@program_main
 def rqt_console(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_console", "The live /rosout log lines")
     console.add_arguments(parser)
@@ -55,7 +55,7 @@ def rqt_console(argv: Sequence[str] | None = None) -> int:
     return _execute(parser.parse_args(argv), console.run)
 
 
-@exits_130_on_ctrl_c
+@program_main
 def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
     parser = _parser("rqt_logger_level", "Show or change node logger levels")
     log.add_level_arguments(parser)

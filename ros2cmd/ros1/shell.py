@@ -23,7 +23,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from ros_tutorials_common import ament, completion, packages
-from ros_tutorials_common.cli import quiet_on_closed_pipe
+from ros_tutorials_common.shutdown import program_main
 
 
 def _folder(where: str) -> str:
@@ -69,7 +69,7 @@ def _pointed(argv: Sequence[str] | None, count: int, usage: str, instead: str) -
     return _say(instead.format(folder=folder, args=args))
 
 
-@quiet_on_closed_pipe
+@program_main
 def roscd(argv: Sequence[str] | None = None) -> int:
     _complete_package("roscd")
     return _pointed(
@@ -80,7 +80,7 @@ def roscd(argv: Sequence[str] | None = None) -> int:
     )
 
 
-@quiet_on_closed_pipe
+@program_main
 def rosed(argv: Sequence[str] | None = None) -> int:
     _complete_package("rosed", "file")
     return _pointed(
@@ -95,7 +95,7 @@ INTERFACE_KINDS = ("msg", "srv", "action")
 OWN_INTERFACES = "ros_tutorials_interfaces"  # the seeds' .msg and .srv files are here
 
 
-@quiet_on_closed_pipe
+@program_main
 def roscp(argv: Sequence[str] | None = None) -> int:
     """The `cp` of the file, as ROS 1's roscp found it by name in the package; a .msg, .srv
     or .action the package does not hold here is the interface package's that has it."""
@@ -141,7 +141,7 @@ def _interface_file(name: str) -> Path | None:
     return None
 
 
-@quiet_on_closed_pipe
+@program_main
 def catkin_make(argv: Sequence[str] | None = None) -> int:
     return _say(
         "catkin_make is ROS 1's; in your workspace (~/ros2_ws) type: colcon build, then "
@@ -153,7 +153,7 @@ def catkin_make(argv: Sequence[str] | None = None) -> int:
 ROS2_DEPENDENCIES = {"rospy": "rclpy", "roscpp": "rclpy", "message_generation": "", "": ""}
 
 
-@quiet_on_closed_pipe
+@program_main
 def catkin_create_pkg(argv: Sequence[str] | None = None) -> int:
     """Not catkin_pkg's tool (a catkin package that nothing here builds): the ROS 2 line."""
     args = [arg for arg in _args(argv) if not arg.startswith("-")]
@@ -171,7 +171,7 @@ def catkin_create_pkg(argv: Sequence[str] | None = None) -> int:
     )
 
 
-@quiet_on_closed_pipe
+@program_main
 def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
     return _say(
         "catkin_init_workspace is ROS 1's; a ROS 2 workspace needs no set-up: mkdir -p "
@@ -179,7 +179,7 @@ def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
     )
 
 
-@quiet_on_closed_pipe
+@program_main
 def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
     """A console script for a GUI tool this project does not have: one line, what instead."""
 

@@ -5,8 +5,18 @@ for the tools and turtlesim; the lessons are plain rclpy and use none of it. A t
 
     options = parse_args(user_args(argv))   # the program's own arguments
     init(argv)                              # rclpy.init, with the DDS defaults
+
+and ends as ros_tutorials_common/shutdown.py says, its spin's stop told by ``node_stopped``.
 """
 
-from ros_tutorials_common.ros.node_main import RCLError, init, ros_args, run_node, user_args
+from ros_tutorials_common.ros.node_main import (
+    NODE_STOPPED,
+    RCLError,
+    init,
+    node_stopped,
+    ros_args,
+    run_node,
+    user_args,
+)
 
-__all__ = ["RCLError", "init", "ros_args", "run_node", "user_args"]
+__all__ = ["NODE_STOPPED", "RCLError", "init", "node_stopped", "ros_args", "run_node", "user_args"]

@@ -11,12 +11,14 @@ the program with one clear line and exit status 1 instead of a traceback from rc
 ``user_args`` is the command line without the ROS arguments, for argparse. ``init`` does both
 steps at once.
 
-``ros_args`` also orders the two things a Ctrl-C does (``_CtrlCOnceRosIsDown``): rclpy's signal
-handler shuts ROS down in a thread of its own, and Python raises KeyboardInterrupt in the main
-thread. Left to chance, the program's ``except KeyboardInterrupt`` / ``finally:
-rclpy.try_shutdown()`` can run while that thread is still shutting down: try_shutdown then
-fails with "rcl_shutdown already called", and the node ends killed by SIGINT (status 130)
-instead of exiting 0.
+``ros_args`` also orders the two things a Ctrl-C does (``_RosDown``): rclpy's signal handler
+shuts ROS down in a thread of its own, and Python raises KeyboardInterrupt in the main thread.
+Left to chance, the program's ``except KeyboardInterrupt`` / ``finally: rclpy.try_shutdown()``
+can run while that thread is still shutting down: try_shutdown then fails with "rcl_shutdown
+already called", and the node ends killed by SIGINT (status 130) instead of exiting 0.
+
+How a node of the toolkit stops is ros_tutorials_common/shutdown.py's design; its rclpy half is
+here: ``NODE_STOPPED`` and ``node_stopped`` (what ends a node's spin normally), ``run_node``.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from collections.abc import Callable, Sequence
 
 import rclpy
 from rclpy.context import Context
+from rclpy.exceptions import NotInitializedException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
 from rclpy.impl.rcutils_logger import RcutilsLogger
@@ -36,6 +39,7 @@ from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions, get_current_signal_handlers_options
 from rclpy.utilities import remove_ros_args
 
+from ros_tutorials_common import shutdown
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
 
 # The error rcl raises (malformed ROS arguments, publishing after shutdown). rclpy Jazzy exports
@@ -69,18 +73,18 @@ def ros_args(argv: Sequence[str] | None = None) -> list[str]:
     if problem:
         raise SystemExit(f"error: {problem}")
     apply_dds_defaults()
-    _CtrlCOnceRosIsDown.install()
+    _RosDown.install()
     return argv
 
 
-class _CtrlCOnceRosIsDown:
-    """Python's SIGINT handler for a program of this project: KeyboardInterrupt, as Python's
-    own, raised once rclpy's signal handler has shut the default context down (at most
-    ``WAIT`` seconds later), when rclpy handles SIGINT at all.
+class _RosDown:
+    """What shutdown.py's Ctrl-C handler does before it raises KeyboardInterrupt in a program of
+    this project: wait until rclpy's signal handler has shut the default context down (at most
+    ``WAIT`` seconds), when rclpy handles SIGINT at all.
 
-    Installed before rclpy.init, which then installs rclpy's handler in front of it and calls
-    it after its own. Reads the context's handle, not Context.ok(): a signal handler must not
-    take a lock that the code it interrupted may hold.
+    Installed before rclpy.init, which then installs rclpy's handler in front of Python's and
+    calls it after its own. Reads the context's handle, not Context.ok(): a signal handler must
+    not take a lock that the code it interrupted may hold.
     """
 
     WAIT = 2.0
@@ -93,7 +97,9 @@ class _CtrlCOnceRosIsDown:
         if threading.current_thread() is not threading.main_thread():
             return  # signal.signal works in the main thread only
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:  # not the program's
-            signal.signal(signal.SIGINT, cls(rclpy.get_default_context()))
+            shutdown.count_presses()
+        if shutdown.counts_presses():
+            shutdown.before_ctrl_c = cls(rclpy.get_default_context())
 
     def ros_is_up(self) -> bool:
         handle = self.context.handle
@@ -111,11 +117,21 @@ class _CtrlCOnceRosIsDown:
             time.sleep(0.001)
         return True
 
-    def __call__(self, signum: int, frame: object) -> None:
+    def __call__(self) -> None:
         options = get_current_signal_handlers_options()
         if options in (SignalHandlerOptions.SIGINT, SignalHandlerOptions.ALL):
             self.wait_until_down(self.WAIT)
-        raise KeyboardInterrupt
+
+
+# What ends a node's spin normally: Ctrl-C; SIGTERM (rclpy's handler shut ROS down:
+# ExternalShutdownException); rclpy refusing a node or an executor in the context a signal has
+# just shut down (NotInitializedException); and rcl seeing it first (shutdown.is_shutdown_race).
+NODE_STOPPED = (KeyboardInterrupt, ExternalShutdownException, NotInitializedException)
+
+
+def node_stopped(error: BaseException) -> bool:
+    """Whether ERROR is how a Ctrl-C or SIGTERM ended a node's spin: the stop, not a failure."""
+    return isinstance(error, NODE_STOPPED) or shutdown.is_shutdown_race(error)
 
 
 def init(
@@ -135,8 +151,9 @@ def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -
     try:
         node = make_node()
         rclpy.spin(node, executor)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+    except BaseException as error:
+        if not node_stopped(error):
+            raise
     finally:
         if node is not None:
             node.destroy_node()

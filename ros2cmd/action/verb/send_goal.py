@@ -16,12 +16,13 @@ from typing import TYPE_CHECKING, Any
 
 from ros2cmd import completion
 from ros2cmd.action.api import server_types, status_name
-from ros2cmd.action.goal import CtrlC, cancel_goal
+from ros2cmd.action.goal import cancel_goal
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import full_type_name, load_type
-from ros2cmd.wait import Interrupted, ServerLost, spin_until
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES
+from ros_tutorials_common.shutdown import StopSignals
+from ros_tutorials_common.wait import Interrupted, ServerLost, spin_until
 
 if TYPE_CHECKING:
     from rclpy.action import ActionClient
@@ -131,9 +132,11 @@ def send_goal(
             print(_block("Feedback", message.feedback), flush=True)
 
     # While the goal is ours, Ctrl-C only sets a flag: ROS must keep running to cancel it.
-    ctrl_c = CtrlC()
-    previous_handler = signal.signal(signal.SIGINT, ctrl_c)
-    interrupted = ctrl_c.is_pressed
+    ctrl_c = StopSignals((signal.SIGINT,), second_raises=True)
+
+    def interrupted() -> bool:
+        return bool(ctrl_c.received)
+
     sent = result = None
     try:
         print("Waiting for an action server to become available...", flush=True)
@@ -178,7 +181,7 @@ def send_goal(
             f"the action server of '{action}' went away before the goal finished"
         ) from None
     finally:
-        signal.signal(signal.SIGINT, previous_handler)
+        ctrl_c.restore()
     answer = result.result()
     status = status_name(answer.status)
     if status == "SUCCEEDED":

@@ -18,8 +18,8 @@ from ros2cmd.doctor.api import Report
 from ros2cmd.doctor.api.settings import Settings
 from ros2cmd.graph import Graph, is_hidden
 from ros2cmd.local_participants import EPROSIMA, domain_processes, heard_from_all, process_of
-from ros2cmd.wait import spin_until
 from ros_tutorials_common.dds import PRIVATE_DOMAIN_IDS
+from ros_tutorials_common.wait import spin_until
 
 FREE_DOMAIN_TRIES = 3  # domains listened to at once for a free one (SUBNET)
 

@@ -18,9 +18,9 @@ from ros2cmd.messages import fill_message, parse_yaml
 from ros2cmd.qos import add_qos_arguments, qos_from_args
 from ros2cmd.topic.api import OtherType, add_graph_options, nonnegative_int, publish_one
 from ros2cmd.typenames import load_type
-from ros2cmd.wait import spin_until
 from ros_tutorials_common.bounded import InputError, read_text
 from ros_tutorials_common.cli import positive_rate, positive_seconds
+from ros_tutorials_common.wait import spin_until
 
 if TYPE_CHECKING:
     from rclpy.publisher import Publisher

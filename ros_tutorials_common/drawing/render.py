@@ -8,8 +8,7 @@ import os
 from collections import defaultdict
 from pathlib import Path
 
-from ros2cmd.errors import ToolError
-from ros2cmd.graph_view.layout import (
+from ros_tutorials_common.drawing.layout import (
     GROUP_LABEL,
     Layout,
     Measure,
@@ -17,7 +16,7 @@ from ros2cmd.graph_view.layout import (
     layout,
     monospace_measure,
 )
-from ros2cmd.graph_view.model import ROOT, GraphModel, Vertex
+from ros_tutorials_common.drawing.model import ROOT, GraphModel, Vertex
 
 
 def to_dot(model: GraphModel) -> str:
@@ -157,11 +156,15 @@ def write_png(model: GraphModel, path: Path) -> None:
     pygame.image.save(surface, str(path))
 
 
+class CannotWrite(Exception):
+    """The file cannot be written; str(error) says why, in one line."""
+
+
 def write(model: GraphModel, path: Path) -> None:
-    """Write DOT, SVG or PNG, chosen by the file's extension."""
+    """Write DOT, SVG or PNG, chosen by the file's extension (CannotWrite if it cannot)."""
     suffix = path.suffix.lower()
     if suffix not in (".dot", ".gv", ".svg", ".png"):
-        raise ToolError(f"cannot write '{path}': choose a .svg, .png or .dot file")
+        raise CannotWrite(f"cannot write '{path}': choose a .svg, .png or .dot file")
     try:
         if suffix == ".png":
             write_png(model, path)
@@ -170,8 +173,8 @@ def write(model: GraphModel, path: Path) -> None:
         else:
             path.write_text(to_dot(model))
     except OSError as error:
-        raise ToolError(f"cannot write '{path}': {error.strerror or error}") from None
+        raise CannotWrite(f"cannot write '{path}': {error.strerror or error}") from None
     except Exception as error:  # pygame.error: e.g. a picture too large to save
         if type(error).__name__ != "error":
             raise
-        raise ToolError(f"cannot write '{path}': {error}") from None
+        raise CannotWrite(f"cannot write '{path}': {error}") from None

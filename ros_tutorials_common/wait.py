@@ -1,11 +1,12 @@
-"""The one wait loop of the tools: spin until something is true, a bounded time.
+"""The one wait loop of the tools and the toolkit's nodes (view_frames): spin until something
+is true, a bounded time.
 
 ``Graph.wait_for`` (a name to appear, a service to answer), ``Graph.settle`` (discovery to
 complete) and ``action send_goal`` (a goal's answer) all wait here. A goal may run for long,
 so this loop can also:
 
 - stop at once when ``interrupted()`` says Ctrl-C was pressed (``Interrupted``), or when a
-  Ctrl-C was counted whose KeyboardInterrupt never reached it (ros_tutorials_common/ctrl_c.py);
+  Ctrl-C was counted whose KeyboardInterrupt never reached it (ros_tutorials_common/shutdown.py);
 - check every SERVER_CHECK_PERIOD that an action server is still in the graph: a server that
   crashed or was stopped never answers, and waiting for it would last forever (``ServerLost``).
 """
@@ -17,7 +18,7 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
-from ros_tutorials_common import ctrl_c
+from ros_tutorials_common import shutdown
 
 if TYPE_CHECKING:
     from rclpy.action import ActionClient
@@ -61,10 +62,10 @@ def spin_until(
     start = time.monotonic()
     deadline = start + timeout
     next_check = start + SERVER_CHECK_PERIOD
-    presses = ctrl_c.presses
+    presses = shutdown.presses
     while not (result := condition()):
-        if ctrl_c.presses != presses:  # a Ctrl-C came and its KeyboardInterrupt was lost
-            ctrl_c.delivered = ctrl_c.presses  # delivered here: not again by the hook
+        if shutdown.presses != presses:  # a Ctrl-C came and its KeyboardInterrupt was lost
+            shutdown.delivered = shutdown.presses  # delivered here: not again by the hook
             raise KeyboardInterrupt
         if interrupted is not None and interrupted():
             raise Interrupted

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import pairwise
 
-from ros2cmd.graph_view.model import ROOT, GraphModel, Vertex
+from ros_tutorials_common.drawing.model import ROOT, GraphModel, Vertex
 
 # Layout measures, in pixels.
 PAD_X, PAD_Y = 10, 6  # around a label inside its box or ellipse
