@@ -2,9 +2,9 @@
 code, as the official tutorial "Recording a bag from a node (Python)" uses it.
 
 rosbag2_py is not on PyPI; this is its API over this project's bag library (rosbag2/: the
-writer and reader `ros2 bag` uses too), so a bag written here is what `ros2 bag record` writes (mcap storage) and
-`ros2 bag play` and `ros2 bag info` read it. What is here: SequentialWriter (open,
-create_topic, write, close), SequentialReader (open, open_uri, has_next, read_next,
+writer and reader `ros2 bag` uses too), so a bag written here is what `ros2 bag record` writes
+(mcap storage) and `ros2 bag play` and `ros2 bag info` read it. What is here: SequentialWriter
+(open, create_topic, write, close), SequentialReader (open, open_uri, has_next, read_next,
 get_all_topics_and_types, set_filter, reset_filter, seek), and in ``rosbag2_py._storage``
 StorageOptions, ConverterOptions, TopicMetadata and StorageFilter. Not here: compression,
 the Player and Recorder classes, bag splitting; `ros2 bag` does what they do.
