@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from launch._base import Condition, LaunchContext, SomeSubstitutionsType, perform
 from launch._missing import module_getattr
-from launcher.substitutions import to_bool
+from launch_foundation.substitutions import to_bool
 
 __all__ = [
     "IfCondition", "LaunchConfigurationEquals", "LaunchConfigurationNotEquals", "UnlessCondition",

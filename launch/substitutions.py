@@ -21,8 +21,8 @@ from launch._base import (
     perform,
 )
 from launch._missing import module_getattr
-from launcher.parse import Element
-from launcher.substitutions import substitute, to_bool
+from launch_foundation.parse import Element
+from launch_foundation.substitutions import substitute, to_bool
 
 __all__ = [
     "AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution",
@@ -187,7 +187,7 @@ class Command(Substitution):
         self.on_stderr = on_stderr
 
     def perform(self, context: LaunchContext) -> str:
-        from launcher.substitutions import run_command
+        from launch_foundation.substitutions import run_command
 
         words = [perform(part, context) for part in normalize(self.command, self.where)]
         text = " ".join(words) if len(words) > 1 else words[0]

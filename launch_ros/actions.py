@@ -9,6 +9,9 @@ from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess, NameValueAction, command_words, frontend_attr
 from launch.frontend.expose import expose_action
+from launch_foundation.declarations import ComponentDecl, ContainerDecl, NodeDecl
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import join_namespace, namespace_under, remap_problem, valid_name
 from launch_ros.utilities import (
     frontend_node_parts,
     node_parameters,
@@ -16,9 +19,6 @@ from launch_ros.utilities import (
     parameter_value,
     relative_namespace,
 )
-from launcher import LaunchError
-from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
-from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
 __all__ = [

@@ -8,11 +8,11 @@ from typing import Any
 
 from launch._base import LaunchContext, Substitution, element_at, perform
 from launch.actions import enabled, flag
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import flatten, namespace_under, remap_problem, yaml_parameter
+from launch_foundation.parse import Element
+from launch_foundation.substitutions import substitute, substituted_params_file, to_bool
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
-from launcher import LaunchError
-from launcher.naming import flatten, namespace_under, remap_problem, yaml_parameter
-from launcher.parse import Element
-from launcher.substitutions import substitute, substituted_params_file, to_bool
 from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
 
 

@@ -13,8 +13,8 @@ import types
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
-from launcher.declarations import ArgInfo, When
+from launch_foundation.declarations import ArgInfo, When
+from launch_foundation.errors import LaunchError
 from ros_tutorials_common.bounded import InputError, read_text
 
 if TYPE_CHECKING:  # the resolver calls this module with its scope

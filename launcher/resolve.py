@@ -31,8 +31,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from launcher import CodeRefused, LaunchError
-from launcher.declarations import (
+from launch_foundation.declarations import (
     AT_START,
     ArgInfo,
     ContainerDecl,
@@ -41,15 +40,16 @@ from launcher.declarations import (
     Step,
     When,
 )
-from launcher.naming import (
+from launch_foundation.errors import CodeRefused, LaunchError
+from launch_foundation.naming import (
     flatten,
     join_namespace,
     namespace_under,
     remap_problem,
     valid_name,
 )
-from launcher.parse import YAML_SUFFIXES, Element, parse_file
-from launcher.substitutions import (
+from launch_foundation.parse import YAML_SUFFIXES, Element, parse_file
+from launch_foundation.substitutions import (
     MAX_LAUNCH_SUBSTITUTED,
     run_command,
     substitute,

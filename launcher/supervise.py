@@ -60,8 +60,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import IO, ClassVar
 
-from launcher import LaunchError, guardian
-from launcher.declarations import Step, shown_line
+from launch_foundation.declarations import Step, shown_line
+from launch_foundation.errors import LaunchError
+from launcher import guardian
 from launcher.plan import ProcessSpec, program_path
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults

@@ -22,11 +22,11 @@ PLAIN = sorted(
 )
 LAUNCHER = [
     "launcher.__main__",
-    "launcher.declarations",
-    "launcher.parse",
+    "launch_foundation.declarations",
+    "launch_foundation.parse",
     "launcher.plan",
     "launcher.resolve",
-    "launcher.substitutions",
+    "launch_foundation.substitutions",
     "launcher.supervise",
 ]
 PROBE = """

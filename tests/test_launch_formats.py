@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 from helpers import ok, run
 
+from launch_foundation.declarations import When
 from launcher import LaunchError
-from launcher.declarations import When
 from launcher.plan import make_plan
 from launcher.python_files import LaunchFileRaised
 from launcher.resolve import Options, describe_args, resolve

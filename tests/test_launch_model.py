@@ -493,9 +493,9 @@ def generate_launch_description():
 def test_a_command_ends_or_is_ended_within_its_time(tmp_path, monkeypatch):
     """$(command) (as Command and <param command>): no terminal input, so `cat` ends at once;
     a command that leaves a child holding its output is ended at its time limit, child too."""
-    import launcher.substitutions
+    import launch_foundation.substitutions
 
-    monkeypatch.setattr(launcher.substitutions, "COMMAND_SECONDS", 3.0)
+    monkeypatch.setattr(launch_foundation.substitutions, "COMMAND_SECONDS", 3.0)
     reads = write(tmp_path, "reads.launch.xml", '<launch><let name="x" value="[$(command cat)]"/>'
                   '<log message="got $(var x)"/></launch>')  # fmt: skip
     assert resolve(reads, {}, Options(allow_code=True)).messages == ["got []"]

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from helpers import fails, ok, run
 
+from launch_foundation.parse import parse_file
 from launcher import CodeRefused, LaunchError
-from launcher.parse import parse_file
 from launcher.plan import make_plan
 from launcher.resolve import Options, detect, resolve
 

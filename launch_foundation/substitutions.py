@@ -8,7 +8,7 @@ Substitutions nest (``$(var $(var which))``). In the ROS 2 format a backslash ma
 character plain text (``\$(`` is no substitution, ``\'`` no quote), as launch's grammar reads it;
 roslaunch has no escapes. $(command) runs a program, so it is refused
 unless the user passes --allow-code; so is an $(eval) that needs code to compute
-(launcher/expressions.py reads the rest without running any).
+(launch_foundation/expressions.py reads the rest without running any).
 """
 
 from __future__ import annotations
@@ -28,9 +28,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Protocol
 
-from launcher import CodeRefused, LaunchError
-from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
-from launcher.parse import Element
+from launch_foundation.errors import CodeRefused, LaunchError
+from launch_foundation.expressions import BUILTINS, MATH, NeedsCode, evaluate
+from launch_foundation.parse import Element
 from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES, InputError, read_text
 
@@ -260,7 +260,7 @@ def _equals(words: list[str], _context: Context, _element: Element) -> str:
 
 
 def _python_eval(expression: str, names: dict, context: Context, element: Element) -> str:
-    """An expression read by launcher/expressions.py, or, if it needs code and the user
+    """An expression read by launch_foundation/expressions.py, or, if it needs code and the user
     allowed it, by Python's eval with the same names (and the whole math module)."""
     shown = f"$(eval {expression})"
     try:
