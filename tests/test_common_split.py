@@ -25,7 +25,9 @@ LAUNCHER = [
     "launch_foundation.declarations",
     "launch_foundation.parse",
     "launcher.plan",
-    "launcher.resolve",
+    "launcher.loading",
+    "launcher.ros1",
+    "launcher.ros2_markup",
     "launch_foundation.substitutions",
     "launcher.supervise",
 ]

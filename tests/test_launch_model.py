@@ -13,8 +13,9 @@ import pytest
 from helpers import TIMEOUT, run
 
 from launcher import CodeRefused, LaunchError
+from launcher.loading import resolve
 from launcher.plan import make_plan
-from launcher.resolve import Options, resolve
+from launcher.scope import Options
 from ros_tutorials_common.bounded import read_params_file
 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
