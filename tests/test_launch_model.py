@@ -507,18 +507,86 @@ def test_a_command_ends_or_is_ended_within_its_time(tmp_path, monkeypatch):
         '<launch><let name="x" value="$(command \'sh -c &quot;sleep 600 &amp; echo $! > '
         f"{marker}; echo hi&quot;')\"/></launch>",
     )
-    with pytest.raises(LaunchError, match=r":1: \$\(command sh -c .*\) failed: still running"):
+    with pytest.raises(LaunchError, match=r":1: \$\(command sh -c .*\) failed: it ended, but a "
+                       "process it left in the background keeps its output open"):  # fmt: skip
         resolve(leaves, {}, Options(allow_code=True))
-    # SIGKILL is delivered after kill() returns: wait (bounded) for the child to end.
+    assert _ends(int(marker.read_text())), "the child the command left behind is still running"
+    runs = write(tmp_path, "runs.launch.xml",
+                 '<launch><let name="x" value="$(command \'sleep 600\')"/></launch>')  # fmt: skip
+    with pytest.raises(
+        LaunchError, match=r"\$\(command sleep 600\) failed: still running after 3 s"
+    ):
+        resolve(runs, {}, Options(allow_code=True))
+
+
+def _ends(pid: int) -> bool:
+    """Process ``pid`` ends (or has ended) within TIMEOUT: SIGKILL is delivered after kill()
+    returns, so wait for it, bounded."""
     try:
-        child = os.pidfd_open(int(marker.read_text()))
+        process = os.pidfd_open(pid)
     except ProcessLookupError:
-        return  # gone already
+        return True
     try:
-        ended, _, _ = select.select([child], [], [], TIMEOUT)
+        ended, _, _ = select.select([process], [], [], TIMEOUT)
     finally:
-        os.close(child)
-    assert ended, "the child the command left behind is still running"
+        os.close(process)
+    return bool(ended)
+
+
+def _setsid_grandchild(marker: Path, then: str) -> str:
+    """A $(command) whose grandchild leaves the command's session (setsid) keeping its output
+    open, its pid written to ``marker``; the command then runs ``then``."""
+    return (
+        "$(command 'sh -c &quot;( setsid sh -c &apos;echo $$ > "
+        f"{marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600&apos; &amp; ); {then}&quot;')"
+    )
+
+
+def test_a_grandchild_in_a_session_of_its_own_neither_holds_the_launch_nor_outlives_it(
+    tmp_path,
+):
+    # ( setsid sleep & ); echo hi: the command has ended, but the grandchild holds its output
+    # and is no longer in its process group. ros2 launch would wait for it; here it is refused
+    # within BACKGROUND_SECONDS, and ended.
+    marker = tmp_path / "grandchild.pid"
+    let = f'<let name="x" value="{_setsid_grandchild(marker, "echo hi")}"/>'
+    path = write(tmp_path, "t.launch.xml", f"<launch>{let}</launch>")
+    with pytest.raises(LaunchError, match="keeps its output open"):
+        resolve(path, {}, Options(allow_code=True))
+    assert _ends(int(marker.read_text())), "the setsid grandchild is still running"
+
+
+@pytest.mark.parametrize("signal_name", ["SIGINT", "SIGTERM"])
+def test_ctrl_c_or_sigterm_during_a_command_ends_it_and_its_setsid_grandchild(
+    tmp_path, signal_name
+):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    marker = tmp_path / "grandchild.pid"
+    let = f'<let name="x" value="{_setsid_grandchild(marker, "sleep 600")}"/>'
+    path = write(tmp_path, "t.launch.xml", f"<launch>{let}</launch>")
+    launcher = subprocess.Popen(
+        [sys.executable, "-m", "launcher", str(path), "--allow-code", "--print"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+    )  # fmt: skip
+    try:
+        deadline = time.monotonic() + TIMEOUT
+        while not marker.exists() and launcher.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)  # a wait on a condition, bounded
+        assert marker.exists(), launcher.stderr.read() if launcher.poll() is not None else ""
+        grandchild = int(marker.read_text())
+        launcher.send_signal(getattr(signal, signal_name))
+        code = launcher.wait(TIMEOUT)
+    finally:
+        if launcher.poll() is None:
+            os.killpg(launcher.pid, signal.SIGKILL)
+            launcher.wait()
+    assert code == (130 if signal_name == "SIGINT" else -signal.SIGTERM), launcher.stderr.read()
+    assert "Traceback" not in launcher.stderr.read()
+    assert _ends(grandchild), "the command's setsid grandchild outlived the launcher"
 
 
 def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
