@@ -366,7 +366,9 @@ class Supervisor:
         else:
             reason = self.shutdown_reason or "idle"
         for step in self.steps:
-            if step.when.event == "shutdown" and step.kind != "shutdown":
+            # A timer inside an OnShutdown handler is cancelled by the shutdown it waits in, as
+            # ros2 launch's TimerAction cancels itself on Shutdown: only its undelayed steps run.
+            if step.when.event == "shutdown" and step.kind != "shutdown" and not step.when.delay:
                 self.do_step(step, {"reason": reason})
 
     def _on_signal(self, signum: int, _frame: object) -> None:
