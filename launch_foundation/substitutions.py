@@ -26,7 +26,7 @@ import subprocess
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Protocol
+from typing import Any, Protocol
 
 from launch_foundation.errors import CodeRefused, LaunchError
 from launch_foundation.expressions import BUILTINS, MATH, NeedsCode, evaluate
@@ -54,6 +54,7 @@ class Context(Protocol):
     fmt: str
     file: Path
     args: dict[str, str]
+    params: list[tuple[str, Any]]  # launch_ros's global parameters (SetParameter)
 
     @property
     def allow_code(self) -> bool: ...
@@ -256,6 +257,17 @@ def _and(words: list[str], _context: Context, element: Element) -> str:
 
 def _or(words: list[str], _context: Context, element: Element) -> str:
     return str(any(to_bool(word, element, "$(or) argument") for word in words)).lower()
+
+
+def _param(words: list[str], context: Context, element: Element) -> str:
+    """launch_ros's $(param NAME [DEFAULT]): the value a <set_parameter> before it in its scope
+    gave NAME (the first such, as launch_ros reads its global parameters), as Python's str."""
+    for name, value in context.params:
+        if name == words[0]:
+            return str(value)
+    if len(words) > 1:
+        return words[1]
+    raise element.error(f"parameter {words[0]!r} not found (no <set_parameter> gave it before)")
 
 
 def _equals(words: list[str], _context: Context, _element: Element) -> str:
@@ -531,4 +543,5 @@ ROS2 = {
     "eval": (_ros2_eval, ANY),
     "command": (_command, ANY),
     "file-content": (_file_content, range(1, 2)),
+    "param": (_param, range(1, 3)),
 }

@@ -621,3 +621,37 @@ def test_respawn_max_retries_means_the_same_in_every_format(tmp_path, fmt):
     }[fmt]
     default, forever = resolve(write(tmp_path, f"t.launch.{fmt}", text), {}, Options()).nodes
     assert (default.respawn_max_retries, forever.respawn_max_retries) == (10, -1)
+
+
+def test_param_substitution_reads_what_set_parameter_gave_in_xml_yaml_and_python(tmp_path):
+    # launch_ros's $(param NAME [DEFAULT]) / Parameter: the value a SetParameter gave before
+    # it in its scope (as Python's str of the typed value), the default, else an error.
+    xml = write(tmp_path, "p.launch.xml", """<launch>
+<set_parameter name="use_sim_time" value="true"/>
+<set_parameter name="rate" value="10"/>
+<log message="$(param use_sim_time) $(param rate) $(param missing fallback)"/>
+</launch>
+""")  # fmt: skip
+    yaml = write(tmp_path, "p.launch.yaml", """launch:
+- set_parameter: {name: use_sim_time, value: "true"}
+- set_parameter: {name: rate, value: "10"}
+- log: {message: "$(param use_sim_time) $(param rate) $(param missing fallback)"}
+""")  # fmt: skip
+    python = write(tmp_path, "p.launch.py", """from launch import LaunchDescription
+from launch.actions import LogInfo
+from launch_ros.actions import SetParameter
+from launch_ros.substitutions import Parameter
+
+def generate_launch_description():
+    return LaunchDescription([
+        SetParameter(name="use_sim_time", value=True),
+        SetParameter(name="rate", value=10),
+        LogInfo(msg=[Parameter("use_sim_time"), " ", Parameter("rate"), " ",
+                     Parameter("missing", default="fallback")]),
+    ])
+""")  # fmt: skip
+    for path in (xml, yaml, python):
+        assert resolve(path, {}, Options()).messages == ["True 10 fallback"], path.name
+    unknown = write(tmp_path, "u.launch.xml", '<launch>\n<log message="$(param nope)"/>\n</launch>')
+    with pytest.raises(LaunchError, match=r"u.launch.xml:2: parameter 'nope' not found"):
+        resolve(unknown, {}, Options())
