@@ -17,9 +17,10 @@ from launch_ros.utilities import (
     node_parameters,
     node_remaps,
     parameter_value,
+    params_file_checked,
     relative_namespace,
 )
-from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import parameter_problem
 
 __all__ = [
     "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
@@ -245,11 +246,7 @@ class SetParametersFromFile(Action):
 
     def execute(self, context: LaunchContext) -> None:
         path = Path(perform(self.filename, context))
-        try:
-            read_params_file(path)
-        except InputError as error:
-            raise self.error(str(error)) from None
-        context.ros_params_files.append(str(path))
+        context.ros_params_files.append(str(params_file_checked(path, self.where, context)))
 
 
 @expose_action("set_remap")

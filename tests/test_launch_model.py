@@ -655,3 +655,36 @@ def generate_launch_description():
     unknown = write(tmp_path, "u.launch.xml", '<launch>\n<log message="$(param nope)"/>\n</launch>')
     with pytest.raises(LaunchError, match=r"u.launch.xml:2: parameter 'nope' not found"):
         resolve(unknown, {}, Options())
+
+
+def test_a_params_file_rcl_will_refuse_is_passed_as_its_path_with_a_warning(tmp_path):
+    # ros2 launch passes a node's parameters file on as its path, unread: a list of mixed
+    # types plans (rcl refuses it when the node reads it: said once as a warning), while a
+    # file that is no parameters file at all is refused at the launch file's line.
+    params = tmp_path / "params.yaml"
+    params.write_text("talker:\n  ros__parameters:\n    mixed: [1, 'two', 3.0]\n")
+    python = write(tmp_path, "p.launch.py", f"""from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_tutorials_topic", executable="talker", parameters=[{str(params)!r}]),
+    ])
+""")  # fmt: skip
+    xml = write(tmp_path, "p.launch.xml", f"""<launch>
+<node pkg="ros_tutorials_topic" exec="talker"><param from="{params}"/></node>
+</launch>
+""")  # fmt: skip
+    for path in (python, xml):
+        launch = resolve(path, {}, Options())
+        assert launch.nodes[0].params_files == [str(params)]
+        assert any(
+            "'mixed' mixes types in one list; a ROS list holds one type; passed to the node"
+            in warning
+            for warning in launch.warnings
+        ), launch.warnings
+        command = make_plan(launch)[0].command
+        assert command[command.index("--params-file") + 1] == str(params)
+    params.write_text("talker: [1, 2]\n")
+    with pytest.raises(LaunchError, match=r"p.launch.xml:2: .*has no 'ros__parameters:' mapping"):
+        resolve(xml, {}, Options())
