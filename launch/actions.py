@@ -499,7 +499,7 @@ class ExecuteProcess(Action):
         """<executable> (with ``ignore=("cmd",)``: what launch_ros's <node> shares with it).
         Each attribute is performed when the process is planned and checked at its tag's
         line; <env> children are its additional_env."""
-        from launch.substitutions import FrontendText, FrontendWords, split_words
+        from launch.frontend.frontend_text import FrontendText, FrontendWords, split_words
 
         _, kwargs = super().parse(entity, parser)
         if "cmd" not in ignore:  # a <node> reads its name and args itself
@@ -649,7 +649,7 @@ def frontend_attr(
 ) -> Any:
     """Attribute ``name`` of a front-end's entity as text performed when the action needs it
     and then checked (``check``, at the entity's line); None if not written."""
-    from launch.substitutions import FrontendText
+    from launch.frontend.frontend_text import FrontendText
 
     text = entity.get_attr(name, optional=optional)
     return None if text is None else (kind or FrontendText)(text, entity.element, check)

@@ -59,7 +59,7 @@ class Node(ExecuteProcess):
     def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
         """<node>: what <executable> has (ExecuteProcess.parse) but its command, and the
         node's own attributes; its <param>s and <remap>s are its parameters and remappings."""
-        from launch.substitutions import FrontendWords, split_words
+        from launch.frontend.frontend_text import FrontendWords, split_words
 
         _, kwargs = super().parse(entity, parser, ignore=("cmd",))
         kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"), optional=False)

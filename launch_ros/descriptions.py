@@ -50,7 +50,7 @@ class ComposableNode:
         <param>s, <remap>s and <extra_arg>s read when the container is planned."""
         from launch.actions import frontend_attr
         from launch.frontend.entity import Entity
-        from launch.substitutions import FrontendText
+        from launch.frontend.frontend_text import FrontendText
 
         kwargs: dict[str, Any] = {
             "package": frontend_attr(entity, "pkg", optional=False),

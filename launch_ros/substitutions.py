@@ -31,6 +31,12 @@ class _Locate(Substitution):
         except LookupError as error:
             raise self.error(str(error)) from None
 
+    @classmethod
+    def parse(cls, data: list[Any]) -> tuple[type, dict[str, Any]]:
+        if len(data) != 1:
+            raise TypeError(f"takes 1 argument (a package), got {len(data)}")
+        return cls, {"package": data[0]}
+
     def find(self, *parts: Any) -> Any:
         from launch.substitutions import PathJoinSubstitution
 
@@ -40,10 +46,12 @@ class _Locate(Substitution):
         return self.find(other)
 
 
+@expose_substitution("find-pkg-prefix")
 class FindPackagePrefix(_Locate):
     locate = staticmethod(packages.prefix)
 
 
+@expose_substitution("find-pkg-share")
 class FindPackageShare(_Locate):
     locate = staticmethod(packages.share_directory)
 
@@ -52,10 +60,17 @@ class FindPackage(FindPackagePrefix):
     pass
 
 
+@expose_substitution("exec-in-pkg")
 class ExecutableInPackage(Substitution):
     def __init__(self, executable: Any, package: Any) -> None:
         super().__init__()
         self.executable, self.package = executable, package
+
+    @classmethod
+    def parse(cls, data: list[Any]) -> tuple[type, dict[str, Any]]:
+        if len(data) != 2:
+            raise TypeError(f"takes 2 arguments (an executable and a package), got {len(data)}")
+        return cls, {"executable": data[0], "package": data[1]}
 
     def perform(self, context: LaunchContext) -> str:
         package, executable = perform(self.package, context), perform(self.executable, context)

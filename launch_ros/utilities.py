@@ -127,7 +127,7 @@ def frontend_node_parts(entity: Any) -> tuple[list[Any], list[Any]]:
     """The parameters and remappings a front-end's <node> or <composable_node> gives its
     action: its <param>s (each read when the node is planned) and <remap>s (from, to)."""
     from launch.frontend.entity import Entity
-    from launch.substitutions import FrontendText
+    from launch.frontend.frontend_text import FrontendText
 
     params = entity.get_attr("param", data_type=list[Entity], optional=True) or []
     remaps = entity.get_attr("remap", data_type=list[Entity], optional=True) or []
@@ -201,7 +201,7 @@ class FrontendParameter:
 
 
 def _holds(element: Element, context: LaunchContext) -> bool:
-    from launch.substitutions import frontend_enabled
+    from launch.frontend.frontend_text import frontend_enabled
 
     return frontend_enabled(element, context)
 

@@ -361,7 +361,7 @@ def test_a_bad_params_file_is_refused_at_the_params_line(tmp_path):
 
 def test_timer_as_launch_xmls_test():  # launch_xml/test/launch_xml/test_timer.py
     from launch.actions import TimerAction
-    from launch.substitutions import FrontendText
+    from launch.frontend.frontend_text import FrontendText
 
     ld = load('<launch>\n<timer period="5">\n  <let name="a" value="b"/>\n</timer>\n</launch>\n')
     (timer,) = ld.entities

@@ -536,10 +536,12 @@ def _ends(pid: int) -> bool:
 def _setsid_grandchild(marker: Path, then: str) -> str:
     """A $(command) whose grandchild leaves the command's session (setsid) keeping its output
     open, its pid written to ``marker``; the command then runs ``then``."""
-    return (
-        "$(command 'sh -c &quot;( setsid sh -c &apos;echo $$ > "
-        f"{marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600&apos; &amp; ); {then}&quot;')"
+    script = marker.with_suffix(".sh")
+    script.write_text(
+        f"( setsid sh -c 'echo $$ > {marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600' & )\n"
+        f"{then}\n"
     )
+    return f"$(command 'sh {script}')"
 
 
 def test_a_grandchild_in_a_session_of_its_own_neither_holds_the_launch_nor_outlives_it(

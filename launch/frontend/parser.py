@@ -100,7 +100,7 @@ class Parser:
         """An attribute's text as substitutions, performed when an action needs it (errors
         name the line of the entity being parsed)."""
         from launch._base import element_at
-        from launch.substitutions import FrontendText
+        from launch.frontend.frontend_text import FrontendText
 
         stack = self.__dict__.get("_parsing") or [None]
         element = getattr(stack[-1], "element", None) or element_at("<launch>")
