@@ -34,15 +34,9 @@ class FrontendText(Substitution):
         return self._parts
 
     def perform(self, context: LaunchContext) -> str:
-        scope = context.frontend_scope
-        if getattr(scope, "fmt", "ros2") == "ros1":  # the ROS 1 dialect: roslaunch's names
-            from launch_foundation.substitutions import substitute
+        from launch.frontend.parse_substitution import perform_capped
 
-            value = substitute(self.text, scope, self.element)
-        else:
-            from launch.frontend.parse_substitution import perform_capped
-
-            value = perform_capped(self.parts(), context, self.where)
+        value = perform_capped(self.parts(), context, self.where)
         return self.check(value, self.element) if self.check else value
 
     def describe(self) -> str:
