@@ -690,3 +690,28 @@ def generate_launch_description():
     params.write_text("talker: [1, 2]\n")
     with pytest.raises(LaunchError, match=r"p.launch.xml:2: .*has no 'ros__parameters:' mapping"):
         resolve(xml, {}, Options())
+
+
+def test_planning_calls_no_function_of_an_on_shutdown_handler(tmp_path):
+    # An OnShutdown handler's OpaqueFunction is the launch file's clean-up: ros2 launch calls
+    # it when the launch shuts down, so planning (--print) must not.
+    marker = tmp_path / "cleaned"
+    path = write(tmp_path, "t.launch.py", f"""from pathlib import Path
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction, RegisterEventHandler
+from launch.event_handlers import OnShutdown
+from launch_ros.actions import Node
+
+def cleanup(context):
+    Path({str(marker)!r}).write_text("cleaned")
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_tutorials_topic", executable="talker"),
+        RegisterEventHandler(OnShutdown(on_shutdown=[OpaqueFunction(function=cleanup)])),
+    ])
+""")  # fmt: skip
+    done = run("ros2", "launch", str(path), "--print")
+    assert done.returncode == 0, done.stderr
+    assert "when the launch shuts down" in done.stdout
+    assert not marker.exists(), "planning ran the OnShutdown handler's function"
