@@ -715,3 +715,28 @@ def generate_launch_description():
     assert done.returncode == 0, done.stderr
     assert "when the launch shuts down" in done.stdout
     assert not marker.exists(), "planning ran the OnShutdown handler's function"
+
+
+def test_a_lifecycle_node_plans_as_its_node_and_needs_a_name_and_namespace(tmp_path):
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker",
+                      namespace="demo", output="screen", parameters=[{"rate": 2}]),
+    ])
+""")  # fmt: skip
+    (node,) = resolve(path, {}, Options()).nodes
+    assert (node.name, node.namespace, node.params) == ("lc_talker", "/demo", [("rate", 2)])
+    unnamed = write(tmp_path, "u.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker"),
+    ])
+""")  # fmt: skip
+    with pytest.raises(LaunchError, match=r"u.launch.py:6: .*missing 1 required keyword-only "
+                       r"argument: 'namespace'"):  # fmt: skip
+        resolve(unnamed, {}, Options())
