@@ -63,7 +63,15 @@ def number(element: Element, name: str, scope: Scope, kind: type = float) -> Any
 
 
 def enabled(element: Element, scope: Scope) -> bool:
-    """The tag's ``if`` or ``unless``, performed in its scope."""
+    """The tag's ``if`` or ``unless``, performed in its scope: in the ROS 2 formats by the
+    model's own reading (launch.frontend's frontend_enabled, launch.conditions'), in ROS 1's
+    by roslaunch's."""
+    if scope.fmt == "ros2":
+        if "if" not in element.attrs and "unless" not in element.attrs:
+            return True
+        from launch.frontend.frontend_text import frontend_enabled
+
+        return frontend_enabled(element, scope.loader.context(scope))
     if "if" in element.attrs:
         return to_bool(text(element, "if", scope), element, "'if'")
     if "unless" in element.attrs:
