@@ -740,3 +740,25 @@ def generate_launch_description():
     with pytest.raises(LaunchError, match=r"u.launch.py:6: .*missing 1 required keyword-only "
                        r"argument: 'namespace'"):  # fmt: skip
         resolve(unnamed, {}, Options())
+
+
+def test_a_lifecycle_transition_asked_by_the_launch_file_is_refused_in_one_line(tmp_path):
+    # The launcher hosts no ROS node to call change_state: ChangeState builds, and its
+    # EmitEvent is refused at the launch file's line (not a wrong plan, not a traceback).
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch.actions import EmitEvent
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+
+def generate_launch_description():
+    node = LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc",
+                         namespace="")
+    return LaunchDescription([node, EmitEvent(event=ChangeState(
+        lifecycle_node_matcher=lambda action: action is node, transition_id=1))])
+""")  # fmt: skip
+    with pytest.raises(LaunchError) as raised:
+        resolve(path, {}, Options())
+    assert str(raised.value) == (
+        f"{path}:9: EmitEvent(ChangeState) is not supported here; only "
+        "EmitEvent(event=Shutdown(...))"
+    )
