@@ -6,7 +6,7 @@ A Python launch file builds these objects; ``launcher/python_files.py`` calls it
 YAML front-ends build (``launcher/resolve.py`` builds these actions for its tags, many by the
 parse methods of launch.frontend, and executes them the same way): executing an action hands
 a process or a step to the context's sink
-(``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
+(``launch_foundation.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
 line of the launch file that created it, so an error names the user's file:line, never a line
 in here.
 """
@@ -20,18 +20,16 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
-from launcher.declarations import AT_START, NodeDecl, PlanSink, Step, When
-from launcher.parse import Element
+from launch_foundation.declarations import AT_START, NodeDecl, PlanSink, Step, When
+from launch_foundation.errors import LaunchError
+from launch_foundation.parse import Element
 
 if TYPE_CHECKING:
-    from launcher.resolve import Scope
+    from launch_foundation.substitutions import Context as Scope
 
 # The folders of the stand-in: frames in them are not the user's.
-_OURS = tuple(
-    str(Path(__file__).resolve().parent.parent / name) + os.sep
-    for name in ("launch", "launch_ros", "launch_xml", "launch_yaml", "launcher")
-)
+_STACK = ("launch", "launch_ros", "launch_xml", "launch_yaml", "launch_foundation", "launcher")
+_OURS = tuple(str(Path(__file__).resolve().parent.parent / name) + os.sep for name in _STACK)
 
 
 def is_ours(filename: str) -> bool:
@@ -239,7 +237,8 @@ class _DetachedScope:
     def anon(self, name: str) -> str:
         return f"{name}_{os.getpid()}_{id(self) % 10000}"
 
-    # What a front-end's substitutions read of their context (launcher.substitutions.Context).
+    # What a front-end's substitutions read of their context
+    # (launch_foundation.substitutions.Context).
     allow_code = True  # made by Python code: its own $(command) and $(eval) are its own code
 
     def read_arg(self, name: str, element: Element) -> str:
@@ -335,7 +334,7 @@ class LaunchContext:
     """What actions and substitutions see, as ros2/launch's LaunchContext: the launch
     configurations, the environment, launch_ros's namespace, remaps and parameters for the
     nodes that follow, and in an event handler the event (``locals``). Executing an entity
-    hands its result to ``sink`` (launcher.declarations.PlanSink), the one interface to the
+    hands its result to ``sink`` (launch_foundation.declarations.PlanSink), the one interface to the
     launcher. ``scope`` holds the values (the front-ends' scope, launcher/resolve.py): only
     this class reads it, through the properties below."""
 

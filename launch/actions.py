@@ -34,8 +34,7 @@ from launch.event_handlers import OnProcessExit
 from launch.events import Shutdown as ShutdownEvent
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
-from launcher import LaunchError
-from launcher.declarations import (
+from launch_foundation.declarations import (
     DEFAULT_RESPAWN_MAX_RETRIES,
     MAX_SECONDS,
     NodeDecl,
@@ -43,6 +42,7 @@ from launcher.declarations import (
     When,
     shown_line,
 )
+from launch_foundation.errors import LaunchError
 
 __all__ = [
     "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
@@ -673,7 +673,7 @@ def _output_check(text: str, element: Any) -> str:
 
 def _flag_check(name: str) -> Callable[[str, Any], str]:
     def check(text: str, element: Any) -> str:
-        from launcher.substitutions import to_bool
+        from launch_foundation.substitutions import to_bool
 
         return "true" if to_bool(text, element, f"{name!r}") else "false"
 

@@ -9,17 +9,18 @@ from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess, NameValueAction, command_words, frontend_attr
 from launch.frontend.expose import expose_action
+from launch_foundation.declarations import ComponentDecl, ContainerDecl, NodeDecl
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import join_namespace, namespace_under, remap_problem, valid_name
 from launch_ros.utilities import (
     frontend_node_parts,
     node_parameters,
     node_remaps,
     parameter_value,
+    params_file_checked,
     relative_namespace,
 )
-from launcher import LaunchError
-from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
-from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
-from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import parameter_problem
 
 __all__ = [
     "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
@@ -245,11 +246,7 @@ class SetParametersFromFile(Action):
 
     def execute(self, context: LaunchContext) -> None:
         path = Path(perform(self.filename, context))
-        try:
-            read_params_file(path)
-        except InputError as error:
-            raise self.error(str(error)) from None
-        context.ros_params_files.append(str(path))
+        context.ros_params_files.append(str(params_file_checked(path, self.where, context)))
 
 
 @expose_action("set_remap")

@@ -1,4 +1,5 @@
-"""launch_ros.substitutions: where packages are, in this environment's ament index."""
+"""launch_ros.substitutions: where packages are, in this environment's ament index, and the
+value a SetParameter gave (Parameter, ``$(param NAME)``)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,9 @@ from launch._missing import module_getattr
 from launch.frontend.expose import expose_substitution
 from ros_tutorials_common import packages
 
-__all__ = ["ExecutableInPackage", "FindPackage", "FindPackagePrefix", "FindPackageShare"]
+__all__ = [
+    "ExecutableInPackage", "FindPackage", "FindPackagePrefix", "FindPackageShare", "Parameter",
+]  # fmt: skip
 
 
 class _Locate(Substitution):
@@ -75,6 +78,40 @@ class ExecutableInPackage(Substitution):
             return packages.command(package, executable)[0]
         except packages.UnknownExecutable as error:
             raise self.error(str(error)) from None
+
+
+@expose_substitution("param")
+class Parameter(Substitution):
+    """launch_ros's Parameter (``$(param NAME [DEFAULT])``): the value a SetParameter before it
+    gave NAME (the first such), as Python's str of it; ``default`` if none did, else an error."""
+
+    def __init__(self, name: Any, *, default: Any = None) -> None:
+        super().__init__()
+        self.name = name
+        if default is not None and not isinstance(default, (str, Substitution, list, tuple)):
+            default = str(default)
+        elif isinstance(default, (list, tuple)):
+            default = [item if isinstance(item, (str, Substitution)) else str(item)
+                       for item in default]  # fmt: skip
+        self.default = default
+
+    @classmethod
+    def parse(cls, data: list[Any]) -> tuple[type, dict[str, Any]]:
+        if not 1 <= len(data) <= 2:
+            raise TypeError("param substitution expects 1 or 2 arguments")
+        return cls, {"name": data[0], **({"default": data[1]} if len(data) == 2 else {})}
+
+    def describe(self) -> str:
+        return f"Parameter(name={self.name!r})"
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform(self.name, context)
+        for given, value in context.ros_params:
+            if given == name:
+                return str(value)
+        if self.default is None:
+            raise self.error(f"parameter {name!r} not found (no SetParameter gave it before)")
+        return perform(self.default, context)
 
 
 __getattr__ = module_getattr("launch_ros.substitutions", lambda: __all__)

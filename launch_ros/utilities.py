@@ -8,12 +8,17 @@ from typing import Any
 
 from launch._base import LaunchContext, Substitution, element_at, perform
 from launch.actions import enabled, flag
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import flatten, namespace_under, remap_problem, yaml_parameter
+from launch_foundation.parse import Element
+from launch_foundation.substitutions import substitute, substituted_params_file, to_bool
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
-from launcher import LaunchError
-from launcher.naming import flatten, namespace_under, remap_problem, yaml_parameter
-from launcher.parse import Element
-from launcher.substitutions import substitute, substituted_params_file, to_bool
-from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import (
+    InputError,
+    parameter_problem,
+    parameters_problem,
+    read_params_file,
+)
 
 
 def _is_substitutions(value: Any) -> bool:
@@ -86,12 +91,28 @@ def node_parameters(
             if isinstance(item, ParameterFile) and flag(item.allow_substs, context):
                 element = element_at(where)
                 path = substituted_params_file(path, context.frontend_scope, element)
-            try:  # checked now: the node would fail on it later
-                read_params_file(path)
-            except InputError as error:
-                raise LaunchError(f"{where}: {error}") from None
-            files.append(str(path))
+            files.append(str(params_file_checked(path, where, context)))
     return params, files
+
+
+def params_file_checked(path: Path, where: str, context: LaunchContext) -> Path:
+    """A parameters file for a node, passed on as its path, as ros2 launch passes it. What
+    would make it no parameters file at all (missing, too large, not YAML, no
+    ``ros__parameters``) is refused now, at ``where``; a value rcl will refuse when the node
+    reads it (a list of mixed types, a date) is said once, as a warning."""
+    try:
+        entries = read_params_file(path, values=False)
+    except InputError as error:
+        raise LaunchError(f"{where}: {error}") from None
+    for entry in entries.values():
+        problem = parameters_problem(entry["ros__parameters"])
+        if problem:
+            context.sink.warn(
+                f"{where}: {path}: {problem}; passed to the node as it is (as ros2 launch "
+                "passes it), where rcl will refuse it"
+            )
+            break
+    return path
 
 
 # A front-end's <param type=...>: (the Python type, whether a list); "yaml": read as YAML.

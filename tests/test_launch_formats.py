@@ -10,11 +10,12 @@ from pathlib import Path
 import pytest
 from helpers import ok, run
 
+from launch_foundation.declarations import When
 from launcher import LaunchError
-from launcher.declarations import When
+from launcher.loading import describe_args, resolve
 from launcher.plan import make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import Options, describe_args, resolve
+from launcher.scope import Options
 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
 TUTORIAL = TUTORIAL_PREFIX / "share" / "launch_tutorial" / "launch"

@@ -25,7 +25,8 @@ from launch.launch_context import LaunchContext
 from launch.utilities import perform_substitutions
 from launch_ros.actions import PushRosNamespace, SetParameter, SetRemap
 from launcher import LaunchError
-from launcher.resolve import Options, resolve
+from launcher.loading import resolve
+from launcher.scope import Options
 
 
 def load(text: str, name: str | None = None):

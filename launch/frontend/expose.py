@@ -8,7 +8,7 @@ import inspect
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 
 if TYPE_CHECKING:
     from launch.frontend.entity import Entity

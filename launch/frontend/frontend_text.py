@@ -10,7 +10,7 @@ from collections.abc import Callable
 from typing import Any
 
 from launch._base import LaunchContext, Substitution
-from launcher.parse import Element
+from launch_foundation.parse import Element
 
 
 class FrontendText(Substitution):
@@ -36,7 +36,7 @@ class FrontendText(Substitution):
     def perform(self, context: LaunchContext) -> str:
         scope = context.frontend_scope
         if getattr(scope, "fmt", "ros2") == "ros1":  # the ROS 1 dialect: roslaunch's names
-            from launcher.substitutions import substitute
+            from launch_foundation.substitutions import substitute
 
             value = substitute(self.text, scope, self.element)
         else:

@@ -22,7 +22,7 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from launcher import LaunchError
+from launch_foundation import LaunchError
 
 MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 _ESCAPE = re.compile(r"\\(.)", re.DOTALL)
@@ -58,14 +58,17 @@ def _template(
     pieces: list[Piece] = []
     plain: list[str] = []
     length = len(text)
+    parens = 0  # in a quoted argument, a quote inside parentheses is a plain character
     while position < length:
         char = text[position]
         if escapes and char == "\\" and position + 1 < length:
             plain.append(text[position + 1])
             position += 2
             continue
-        if quote and char == quote:
+        if quote and char == quote and parens == 0:
             break
+        if inside and char in "()":
+            parens = max(0, parens + (1 if char == "(" else -1))
         if char == "$" and text.startswith("$(", position):
             if plain:
                 pieces.append("".join(plain))
@@ -234,7 +237,7 @@ def perform_capped(parts: list[Any], context: Any, where: str) -> str:
     """The text of a front-end's attribute: its substitutions performed, refused past
     MAX_SUBSTITUTED characters, and counted toward the launch's MAX_LAUNCH_SUBSTITUTED."""
     from launch._base import element_at
-    from launcher.substitutions import MAX_SUBSTITUTED
+    from launch_foundation.substitutions import MAX_SUBSTITUTED
 
     out: list[str] = []
     size = 0

@@ -10,7 +10,7 @@ from typing import IO, TYPE_CHECKING, Any
 
 from launch.frontend.entity import Entity
 from launch.frontend.expose import instantiate_action
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 
 if TYPE_CHECKING:
     from launch.launch_description import LaunchDescription

@@ -53,8 +53,8 @@ class Command(Substitution):
         return f"Command({' + '.join(s.describe() for s in self.command)})"
 
     def perform(self, context: LaunchContext) -> str:
-        from launcher import CodeRefused
-        from launcher.substitutions import run_command
+        from launch_foundation import CodeRefused
+        from launch_foundation.substitutions import run_command
 
         text = perform(self.command, context)
         if self.frontend and not context.allow_code:

@@ -100,8 +100,8 @@ class PythonExpression(Substitution):
     def _frontend_value(self, text: str, names: dict[str, Any], context: LaunchContext) -> str:
         """$(eval): read by launcher.expressions without running code; code only with the
         user's --allow-code."""
-        from launcher import CodeRefused
-        from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
+        from launch_foundation import CodeRefused
+        from launch_foundation.expressions import BUILTINS, MATH, NeedsCode, evaluate
 
         safe = {**(MATH if "math" in names else {}), **BUILTINS}
         try:

@@ -8,7 +8,7 @@ Substitutions nest (``$(var $(var which))``). In the ROS 2 format a backslash ma
 character plain text (``\$(`` is no substitution, ``\'`` no quote), as launch's grammar reads it;
 roslaunch has no escapes. $(command) runs a program, so it is refused
 unless the user passes --allow-code; so is an $(eval) that needs code to compute
-(launcher/expressions.py reads the rest without running any).
+(launch_foundation/expressions.py reads the rest without running any).
 """
 
 from __future__ import annotations
@@ -24,13 +24,13 @@ import shutil
 import signal
 import subprocess
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Protocol
+from typing import Any, Protocol
 
-from launcher import CodeRefused, LaunchError
-from launcher.expressions import BUILTINS, MATH, NeedsCode, evaluate
-from launcher.parse import Element
+from launch_foundation.errors import CodeRefused, LaunchError
+from launch_foundation.expressions import BUILTINS, MATH, NeedsCode, evaluate
+from launch_foundation.parse import Element
 from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import MAX_INPUT_BYTES, InputError, read_text
 
@@ -39,6 +39,9 @@ _ESCAPE = re.compile(r"\\(.)", re.DOTALL)
 MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 MAX_SUBSTITUTED = 1024 * 1024  # characters one attribute's substitutions may expand to
 COMMAND_SECONDS = 60.0  # how long a command of $(command), Command or <param command> may run
+# How long a command's output may stay open after the command ended (held by a process it
+# left in the background, which would otherwise hold the launch until COMMAND_SECONDS).
+BACKGROUND_SECONDS = 2.0
 # Characters all the substitutions of one launch may expand to: each attribute within its cap,
 # a large argument used in thousands of attributes would still fill the memory.
 MAX_LAUNCH_SUBSTITUTED = 64 * 1024 * 1024
@@ -51,6 +54,7 @@ class Context(Protocol):
     fmt: str
     file: Path
     args: dict[str, str]
+    params: list[tuple[str, Any]]  # launch_ros's global parameters (SetParameter)
 
     @property
     def allow_code(self) -> bool: ...
@@ -255,12 +259,23 @@ def _or(words: list[str], _context: Context, element: Element) -> str:
     return str(any(to_bool(word, element, "$(or) argument") for word in words)).lower()
 
 
+def _param(words: list[str], context: Context, element: Element) -> str:
+    """launch_ros's $(param NAME [DEFAULT]): the value a <set_parameter> before it in its scope
+    gave NAME (the first such, as launch_ros reads its global parameters), as Python's str."""
+    for name, value in context.params:
+        if name == words[0]:
+            return str(value)
+    if len(words) > 1:
+        return words[1]
+    raise element.error(f"parameter {words[0]!r} not found (no <set_parameter> gave it before)")
+
+
 def _equals(words: list[str], _context: Context, _element: Element) -> str:
     return str(words[0] == words[1]).lower()
 
 
 def _python_eval(expression: str, names: dict, context: Context, element: Element) -> str:
-    """An expression read by launcher/expressions.py, or, if it needs code and the user
+    """An expression read by launch_foundation/expressions.py, or, if it needs code and the user
     allowed it, by Python's eval with the same names (and the whole math module)."""
     shown = f"$(eval {expression})"
     try:
@@ -335,11 +350,12 @@ def run_command(
     # Its output is read with the same limit as a file (1 MiB), within COMMAND_SECONDS in all;
     # stderr goes to a file, so neither pipe can fill up and block it, nor fill the launcher's
     # memory. No terminal input (a command that reads stdin ends at once), and a session of its
-    # own, so that one kill reaches what it left running in the background too.
+    # own, so that one kill reaches what it left running in the background too; what left that
+    # session and still holds its output is found by the output it holds (_end_command).
     import tempfile  # here, as below: most launches run no command and substitute no file
 
     deadline = time.monotonic() + COMMAND_SECONDS
-    with tempfile.TemporaryFile() as errors:
+    with tempfile.TemporaryFile() as errors, _sigterm_raises():
         try:
             process = subprocess.Popen(
                 command, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=errors,
@@ -347,18 +363,17 @@ def run_command(
             )  # fmt: skip
         except OSError as problem:
             raise error(f"{shown} failed: {problem}") from None
+        assert process.stdout is not None
+        ended = False
         try:
             out = _read_until(process, deadline, error, shown)
+            ended = True
             try:
                 code = process.wait(timeout=max(0.0, deadline - time.monotonic()))
             except subprocess.TimeoutExpired:
                 raise error(f"{shown} failed: still running after {COMMAND_SECONDS:g} s") from None
         finally:
-            with contextlib.suppress(ProcessLookupError):
-                os.killpg(process.pid, signal.SIGKILL)  # ended: what it left behind
-            process.wait()
-            assert process.stdout is not None
-            process.stdout.close()
+            _end_command(process, holders=not ended)
         errors.seek(0)
         stderr = errors.read(64 * 1024).decode(errors="replace")
     if code != 0 or (stderr.strip() and on_stderr == "fail"):
@@ -371,19 +386,98 @@ def run_command(
     return text + stderr if on_stderr == "capture" else text
 
 
+class Terminated(BaseException):
+    """SIGTERM arrived while a command ran: raised to end the command first (run_command's
+    finally), then the signal is delivered again as it would have been."""
+
+
+@contextlib.contextmanager
+def _sigterm_raises() -> Iterator[None]:
+    """While a command runs, SIGTERM (as Ctrl-C already does) unwinds through run_command, so
+    that its processes are ended before the launcher ends; then the signal takes its course."""
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def raise_terminated(_signum: int, _frame: object) -> None:
+        raise Terminated
+
+    previous = signal.signal(signal.SIGTERM, raise_terminated)
+    try:
+        yield
+    except Terminated:
+        signal.signal(signal.SIGTERM, previous)
+        signal.raise_signal(signal.SIGTERM)  # the default ends this process with SIGTERM
+        raise SystemExit(128 + signal.SIGTERM) from None  # a handler of its own returned
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _end_command(process: subprocess.Popen, holders: bool) -> None:
+    """End the command's session and, if its output is still open (``holders``: it was not
+    read to its end), every process that holds it: a background process that called setsid
+    left the session but not the pipe. Then reap the command."""
+    assert process.stdout is not None
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signal.SIGKILL)  # ended, or being ended: what it left behind
+    if holders:
+        pipe = os.fstat(process.stdout.fileno()).st_ino
+        for pid in _pipe_holders(pipe):
+            with contextlib.suppress(ProcessLookupError, PermissionError):
+                group = os.getpgid(pid)
+                if group != os.getpgrp():  # its own group, made by setsid: all of it
+                    os.killpg(group, signal.SIGKILL)
+                else:
+                    os.kill(pid, signal.SIGKILL)
+    process.wait()
+    process.stdout.close()
+
+
+def _pipe_holders(inode: int) -> list[int]:
+    """The processes (other than this one) with a file descriptor on pipe ``inode``: Linux's
+    /proc, read only where this user may (the command's processes are this user's)."""
+    link = f"pipe:[{inode}]"
+    found = []
+    me = os.getpid()
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit() or int(entry.name) == me:
+            continue
+        try:
+            for descriptor in os.scandir(f"/proc/{entry.name}/fd"):
+                if os.readlink(descriptor.path) == link:
+                    found.append(int(entry.name))
+                    break
+        except OSError:  # not ours to read, or gone meanwhile
+            continue
+    return found
+
+
 def _read_until(
     process: subprocess.Popen, deadline: float, error: Callable[[str], Exception], shown: str
 ) -> bytes:
-    """A command's stdout until it closes, at most MAX_INPUT_BYTES, before the deadline."""
+    """A command's stdout until it closes, at most MAX_INPUT_BYTES, before the deadline; a
+    command that ended while its output stays open (held by a process it left in the
+    background) is given BACKGROUND_SECONDS more, not the whole time, then refused."""
     assert process.stdout is not None
     out = bytearray()
+    ended_at: float | None = None
     with selectors.DefaultSelector() as selector:
         selector.register(process.stdout, selectors.EVENT_READ)
         while True:
-            left = deadline - time.monotonic()
+            now = time.monotonic()
+            if ended_at is None and process.poll() is not None:
+                ended_at = now
+            if ended_at is not None and now - ended_at > BACKGROUND_SECONDS:
+                raise error(
+                    f"{shown} failed: it ended, but a process it left in the background "
+                    "keeps its output open (redirect that process's output: > /dev/null)"
+                )
+            left = deadline - now
             if left <= 0:
                 raise error(f"{shown} failed: still running after {COMMAND_SECONDS:g} s")
-            if not selector.select(min(left, 1.0)):
+            if not selector.select(min(left, 0.25 if ended_at is None else 0.1)):
                 continue
             chunk = os.read(process.stdout.fileno(), 65536)
             if not chunk:
@@ -449,4 +543,5 @@ ROS2 = {
     "eval": (_ros2_eval, ANY),
     "command": (_command, ANY),
     "file-content": (_file_content, range(1, 2)),
+    "param": (_param, range(1, 3)),
 }
