@@ -358,9 +358,9 @@ def generate_launch_description():
 
 def test_a_name_this_launcher_lacks_is_one_line_at_the_import(tmp_path):
     path = write(tmp_path, "t.launch.py", "from launch import LaunchDescription\n"
-                 "from launch.actions import ResetEnvironment\n")  # fmt: skip
+                 "from launch.actions import OpaqueCoroutine\n")  # fmt: skip
     message = str(raised(path))
-    assert message.startswith(f"{path}:2: launch.actions.ResetEnvironment is not in this ")
+    assert message.startswith(f"{path}:2: launch.actions.OpaqueCoroutine is not in this ")
     assert "TimerAction" in message and "\n" not in message
 
 

@@ -17,8 +17,9 @@ from launch.substitutions import (
     PythonExpression,
     TextSubstitution,
 )
-from launcher import CodeRefused, LaunchError
-from launcher.resolve import Options, resolve
+from launch_foundation import CodeRefused, LaunchError
+from launcher.loading import resolve
+from launcher.scope import Options
 
 ENV_AFTER_SET_ENV = {
     "xml": '<launch>\n<set_env name="LAUNCH_API_X" value="new"/>\n'

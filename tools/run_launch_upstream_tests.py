@@ -30,20 +30,23 @@ def main(argv: list[str]) -> int:
     if missing:
         print(f"error: {checkout} is not a ros2/launch checkout (no {missing[0]})", file=sys.stderr)
         return 2
-    ignores = [f"--ignore={checkout / suite / name}" for suite in SUITES for name in LINTERS]
     env = dict(
         os.environ,
         PYTHONPATH=os.pathsep.join(
             [str(ROOT)] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
         ),
     )
-    command = [
-        sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "--import-mode=importlib",
-        "--noconftest", "--continue-on-collection-errors",
-        "--rootdir", str(checkout), "-o", "addopts=", *ignores,
-        *(str(checkout / suite) for suite in SUITES), *argv[1:],
-    ]  # fmt: skip
-    return subprocess.call(command, cwd=checkout, env=env)
+    worst = 0
+    for suite in SUITES:  # one pytest each: the suites repeat test file names
+        ignores = [f"--ignore={checkout / suite / name}" for name in LINTERS]
+        command = [
+            sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "--import-mode=append",
+            "--noconftest", "--continue-on-collection-errors", "--rootdir", str(checkout / suite),
+            "-o", "addopts=", *ignores, str(checkout / suite), *argv[1:],
+        ]  # fmt: skip
+        print(f"== {suite}", flush=True)
+        worst = max(worst, subprocess.call(command, cwd=checkout / suite, env=env))
+    return worst
 
 
 if __name__ == "__main__":

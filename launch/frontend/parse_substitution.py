@@ -58,14 +58,17 @@ def _template(
     pieces: list[Piece] = []
     plain: list[str] = []
     length = len(text)
+    parens = 0  # in a quoted argument, a quote inside parentheses is a plain character
     while position < length:
         char = text[position]
         if escapes and char == "\\" and position + 1 < length:
             plain.append(text[position + 1])
             position += 2
             continue
-        if quote and char == quote:
+        if quote and char == quote and parens == 0:
             break
+        if inside and char in "()":
+            parens = max(0, parens + (1 if char == "(" else -1))
         if char == "$" and text.startswith("$(", position):
             if plain:
                 pieces.append("".join(plain))
