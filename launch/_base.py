@@ -6,7 +6,7 @@ A Python launch file builds these objects; ``launcher/python_files.py`` calls it
 YAML front-ends build (``launcher/resolve.py`` builds these actions for its tags, many by the
 parse methods of launch.frontend, and executes them the same way): executing an action hands
 a process or a step to the context's sink
-(``launcher.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
+(``launch_foundation.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
 line of the launch file that created it, so an error names the user's file:line, never a line
 in here.
 """
@@ -20,18 +20,16 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
-from launcher.declarations import AT_START, NodeDecl, PlanSink, Step, When
-from launcher.parse import Element
+from launch_foundation.declarations import AT_START, NodeDecl, PlanSink, Step, When
+from launch_foundation.errors import LaunchError
+from launch_foundation.parse import Element
 
 if TYPE_CHECKING:
-    from launcher.resolve import Scope
+    from launch_foundation.substitutions import Context as Scope
 
 # The folders of the stand-in: frames in them are not the user's.
-_OURS = tuple(
-    str(Path(__file__).resolve().parent.parent / name) + os.sep
-    for name in ("launch", "launch_ros", "launch_xml", "launch_yaml", "launcher")
-)
+_STACK = ("launch", "launch_ros", "launch_xml", "launch_yaml", "launch_foundation", "launcher")
+_OURS = tuple(str(Path(__file__).resolve().parent.parent / name) + os.sep for name in _STACK)
 
 
 def is_ours(filename: str) -> bool:
@@ -60,6 +58,11 @@ def element_at(where: str) -> Element:
     if not line.isdigit():
         file, line = where, "0"
     return Element("launch", {}, Path(file), int(line))
+
+
+class SubstitutionFailure(LaunchError):
+    """A substitution that cannot be performed (launch.substitutions.SubstitutionFailure):
+    one line, naming the launch file's file:line where known."""
 
 
 class LaunchDescriptionEntity:
@@ -132,6 +135,8 @@ class Action(LaunchDescriptionEntity):
 class Substitution:
     """A value known when the launch runs (launch.Substitution)."""
 
+    where = "<launch file>"  # a subclass that skips __init__ still has one
+
     def __init__(self) -> None:
         self.where = caller_where()
 
@@ -141,11 +146,37 @@ class Substitution:
     def describe(self) -> str:
         return type(self).__name__ + "(...)"
 
+    def __repr__(self) -> str:
+        return self.describe()
+
     def error(self, message: str) -> LaunchError:
         return LaunchError(f"{self.where}: {message}")
 
 
 SomeSubstitutionsType = str | Substitution | Iterable[str | Substitution]
+
+
+class TextSubstitution(Substitution):
+    """Text as it is (launch.substitutions.TextSubstitution)."""
+
+    def __init__(self, *, text: str) -> None:
+        super().__init__()
+        if not isinstance(text, str):
+            raise TypeError(f"TextSubstitution expected text, got {type(text).__name__}")
+        self.text = text
+
+    def perform(self, context: Any) -> str:
+        return self.text
+
+    def describe(self) -> str:
+        return repr(self.text)
+
+
+def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
+    """Text, a substitution, or a list of them, as a list of substitutions (text becomes a
+    TextSubstitution; launch.utilities.normalize_to_list_of_substitutions)."""
+    return [TextSubstitution(text=item) if isinstance(item, str) else item
+            for item in normalize(subs)]  # fmt: skip
 
 
 def normalize(value: Any, where: str = "") -> list[Substitution | str]:
@@ -206,8 +237,9 @@ class _DetachedScope:
     def anon(self, name: str) -> str:
         return f"{name}_{os.getpid()}_{id(self) % 10000}"
 
-    # What a front-end's substitutions read of their context (launcher.substitutions.Context).
-    allow_code = False
+    # What a front-end's substitutions read of their context
+    # (launch_foundation.substitutions.Context).
+    allow_code = True  # made by Python code: its own $(command) and $(eval) are its own code
 
     def read_arg(self, name: str, element: Element) -> str:
         if name not in self.args:
@@ -234,6 +266,57 @@ class _NoPlan:
         raise LaunchError(f"{path}: this LaunchContext is not part of a launch")
 
 
+class _Environment(dict):
+    """LaunchContext.environment: ``os.environ`` with a scope's changes (``changes``: name ->
+    value, None for unset) applied; writes and deletes go to ``changes``."""
+
+    def __init__(self, changes: dict[str, str | None]) -> None:
+        merged = dict(os.environ)
+        for name, value in changes.items():
+            if value is None:
+                merged.pop(name, None)
+            else:
+                merged[name] = value
+        super().__init__(merged)
+        self._changes = changes
+
+    def __setitem__(self, name: str, value: str) -> None:
+        super().__setitem__(name, value)
+        self._changes[name] = value
+
+    def __delitem__(self, name: str) -> None:
+        super().__delitem__(name)
+        self._changes[name] = None
+
+    def pop(self, name: str, *default: Any) -> Any:
+        if name in self:
+            self._changes[name] = None
+        return super().pop(name, *default)
+
+    def update(self, *args: Any, **kwargs: Any) -> None:
+        for name, value in dict(*args, **kwargs).items():
+            self[name] = value
+
+    def clear(self) -> None:
+        for name in list(self):
+            del self[name]
+
+    def setdefault(self, name: str, default: Any = None) -> Any:
+        if name not in self:
+            self[name] = default
+        return self[name]
+
+
+class _Locals(dict):
+    """LaunchContext.locals: a dict whose keys read as attributes too (``context.locals.event``)."""
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(f"context.locals has no {name!r}") from None
+
+
 class LaunchState:
     """What one launch's executor keeps across files: the index of each process action (what
     an event handler's target_action names), the handlers waiting for their target, the
@@ -251,7 +334,7 @@ class LaunchContext:
     """What actions and substitutions see, as ros2/launch's LaunchContext: the launch
     configurations, the environment, launch_ros's namespace, remaps and parameters for the
     nodes that follow, and in an event handler the event (``locals``). Executing an entity
-    hands its result to ``sink`` (launcher.declarations.PlanSink), the one interface to the
+    hands its result to ``sink`` (launch_foundation.declarations.PlanSink), the one interface to the
     launcher. ``scope`` holds the values (the front-ends' scope, launcher/resolve.py): only
     this class reads it, through the properties below."""
 
@@ -261,28 +344,77 @@ class LaunchContext:
         sink: PlanSink | None = None,
         state: LaunchState | None = None,
         locals_: dict[str, Any] | None = None,
-        **_ros2_launch_options: Any,  # argv, noninteractive: nothing to do with them here
+        *,
+        argv: list[str] | None = None,
+        noninteractive: bool = False,
     ) -> None:
         # Without a scope (``LaunchContext()`` in OpaqueFunction code or a test, as ros2/launch
         # allows): launch configurations and the rest of its own, and no plan to add to.
         self._scope: Any = scope if scope is not None else _DetachedScope()
         self.sink: PlanSink = sink if sink is not None else _NoPlan()
         self.state = state if state is not None else LaunchState()
-        self.locals = dict(locals_ or {})
+        self.locals = _Locals(locals_ or {})
+        self._argv, self._noninteractive = list(argv or []), noninteractive
+        self._stacks: dict[str, list[dict[str, Any]]] = {}
 
     @property
     def launch_configurations(self) -> dict[str, str]:
         return self._scope.args
 
     @property
-    def environment(self) -> dict[str, str]:
-        env = dict(os.environ)
-        for name, value in self._scope.env.items():
-            if value is None:
-                env.pop(name, None)
-            else:
-                env[name] = value
-        return env
+    def environment(self) -> _Environment:
+        """The environment of the processes that follow, as a mutable mapping: the launcher's
+        own environment with what this scope set (SetEnvironmentVariable, ``<set_env>``) and
+        unset. Writing to it changes the scope, never the launcher's own ``os.environ``."""
+        return _Environment(self._scope.env)
+
+    @property
+    def allow_code(self) -> bool:
+        """Whether a front-end's ``$(command)`` and code in ``$(eval)`` may run (the user's
+        --allow-code; a context made by Python code itself: yes)."""
+        return bool(getattr(self._scope, "allow_code", False))
+
+    @property
+    def current_launch_file_path(self) -> str | None:
+        """The launch file being read (ThisLaunchFile), None outside one."""
+        file = getattr(self._scope, "file", None)
+        return None if file is None or str(file) == "<launch>" else str(file)
+
+    @property
+    def argv(self) -> list[str]:
+        return list(self._argv)
+
+    @property
+    def noninteractive(self) -> bool:
+        return self._noninteractive
+
+    @property
+    def is_shutdown(self) -> bool:
+        return bool(self.state.__dict__.get("shutdown", False))
+
+    def _push_launch_configurations(self) -> None:
+        self._stacks.setdefault("configurations", []).append(dict(self._scope.args))
+
+    def _pop_launch_configurations(self) -> None:
+        saved = self._stacks.get("configurations")
+        if not saved:
+            raise RuntimeError("launch_configurations stack unexpectedly empty")
+        self._scope.args.clear()
+        self._scope.args.update(saved.pop())
+
+    def _push_environment(self) -> None:
+        self._stacks.setdefault("environment", []).append(dict(self._scope.env))
+
+    def _pop_environment(self) -> None:
+        saved = self._stacks.get("environment")
+        if not saved:
+            raise RuntimeError("environment stack unexpectedly empty")
+        self._scope.env.clear()
+        self._scope.env.update(saved.pop())
+
+    def _reset_environment(self) -> None:
+        """Back to the launcher's own environment (ResetEnvironment)."""
+        self._scope.env.clear()
 
     def set_env(self, name: str, value: str | None) -> None:
         """Set (None: unset) a variable for the processes that follow in this scope."""
@@ -354,6 +486,11 @@ class LaunchContext:
 
     def extend_locals(self, values: dict[str, Any]) -> None:
         self.locals.update(values)
+
+    def extend_globals(self, values: dict[str, Any]) -> None:
+        self.state.__dict__.setdefault("globals", {}).update(values)
+        for name, value in values.items():
+            self.locals.setdefault(name, value)
 
     def get_locals_as_dict(self) -> dict[str, Any]:
         return dict(self.locals)

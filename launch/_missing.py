@@ -6,7 +6,7 @@ from collections.abc import Callable
 from typing import Any
 
 from launch._base import caller_where
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 
 
 def module_getattr(module: str, names: Callable[[], list[str]]) -> Callable[[str], Any]:

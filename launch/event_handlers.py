@@ -1,6 +1,6 @@
 """launch.event_handlers: actions that happen when a process starts, exits or prints a line,
 or when the launch shuts down. Each becomes steps and processes of the plan that wait for
-their event (``launcher.declarations.When``)."""
+their event (``launch_foundation.declarations.When``)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from typing import Any
 from launch._base import Action, EventHandler, LaunchContext, is_ours
 from launch._missing import module_getattr
 from launch.events import event_from
-from launcher.declarations import Step, When
+from launch_foundation.declarations import Step, When
 
 __all__ = [
     "OnExecutionComplete", "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown",

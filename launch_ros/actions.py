@@ -9,21 +9,22 @@ from launch._base import Action, LaunchContext, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess, NameValueAction, command_words, frontend_attr
 from launch.frontend.expose import expose_action
+from launch_foundation.declarations import ComponentDecl, ContainerDecl, NodeDecl
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import join_namespace, namespace_under, remap_problem, valid_name
 from launch_ros.utilities import (
     frontend_node_parts,
     node_parameters,
     node_remaps,
     parameter_value,
+    params_file_checked,
     relative_namespace,
 )
-from launcher import LaunchError
-from launcher.declarations import ComponentDecl, ContainerDecl, NodeDecl
-from launcher.naming import join_namespace, namespace_under, remap_problem, valid_name
-from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import parameter_problem
 
 __all__ = [
-    "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
-    "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap",
+    "ComposableNodeContainer", "LifecycleNode", "LoadComposableNodes", "Node",
+    "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap",
 ]  # fmt: skip
 
 
@@ -58,7 +59,7 @@ class Node(ExecuteProcess):
     def parse(cls, entity: Any, parser: Any, ignore: Any = ()) -> tuple[type, dict[str, Any]]:
         """<node>: what <executable> has (ExecuteProcess.parse) but its command, and the
         node's own attributes; its <param>s and <remap>s are its parameters and remappings."""
-        from launch.substitutions import FrontendWords, split_words
+        from launch.frontend.frontend_text import FrontendWords, split_words
 
         _, kwargs = super().parse(entity, parser, ignore=("cmd",))
         kwargs["package"] = frontend_attr(entity, "pkg", _not_blank("pkg"), optional=False)
@@ -101,6 +102,17 @@ class Node(ExecuteProcess):
         if self.name is not None:  # exec_name: the output prefix
             decl.label = perform(self.name, context) or decl.label
         return decl
+
+
+class LifecycleNode(Node):
+    """launch_ros's LifecycleNode: a managed node, planned and started as a Node (it starts
+    unconfigured, as under ros2 launch until something asks it to change state, through its
+    ``<node>/change_state`` service); its name and namespace are required keywords, as
+    launch_ros jazzy requires them. The launcher hosts no ROS node, so it makes no such call
+    itself: a launch file's EmitEvent(ChangeState) is refused with one line."""
+
+    def __init__(self, *, name: Any, namespace: Any, **kwargs: Any) -> None:
+        super().__init__(name=name, namespace=namespace, **kwargs)
 
 
 def _not_blank(attr: str) -> Any:
@@ -245,11 +257,7 @@ class SetParametersFromFile(Action):
 
     def execute(self, context: LaunchContext) -> None:
         path = Path(perform(self.filename, context))
-        try:
-            read_params_file(path)
-        except InputError as error:
-            raise self.error(str(error)) from None
-        context.ros_params_files.append(str(path))
+        context.ros_params_files.append(str(params_file_checked(path, self.where, context)))
 
 
 @expose_action("set_remap")

@@ -8,6 +8,7 @@ from typing import Any
 from launch._base import LaunchContext, caller_where, perform
 from launch._missing import module_getattr
 from launch.actions import enabled
+from launch_foundation.declarations import ComponentDecl
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 from launch_ros.utilities import (
     frontend_node_parts,
@@ -15,7 +16,6 @@ from launch_ros.utilities import (
     node_remaps,
     relative_namespace,
 )
-from launcher.declarations import ComponentDecl
 
 __all__ = ["ComposableNode", "ParameterFile", "ParameterValue"]
 
@@ -50,7 +50,7 @@ class ComposableNode:
         <param>s, <remap>s and <extra_arg>s read when the container is planned."""
         from launch.actions import frontend_attr
         from launch.frontend.entity import Entity
-        from launch.substitutions import FrontendText
+        from launch.frontend.frontend_text import FrontendText
 
         kwargs: dict[str, Any] = {
             "package": frontend_attr(entity, "pkg", optional=False),

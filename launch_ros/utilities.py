@@ -3,17 +3,24 @@ as launch_ros evaluates them in a launch context."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from launch._base import LaunchContext, Substitution, element_at, perform
 from launch.actions import enabled, flag
+from launch.frontend.frontend_text import FrontendText
+from launch_foundation.errors import LaunchError
+from launch_foundation.naming import flatten, namespace_under, remap_problem, yaml_parameter
+from launch_foundation.parse import Element
+from launch_foundation.substitutions import substituted_params_file, to_bool
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
-from launcher import LaunchError
-from launcher.naming import flatten, namespace_under, remap_problem, yaml_parameter
-from launcher.parse import Element
-from launcher.substitutions import substitute, substituted_params_file, to_bool
-from ros_tutorials_common.bounded import InputError, parameter_problem, read_params_file
+from ros_tutorials_common.bounded import (
+    InputError,
+    parameter_problem,
+    parameters_problem,
+    read_params_file,
+)
 
 
 def _is_substitutions(value: Any) -> bool:
@@ -85,13 +92,34 @@ def node_parameters(
             path = Path(perform(source, context))
             if isinstance(item, ParameterFile) and flag(item.allow_substs, context):
                 element = element_at(where)
-                path = substituted_params_file(path, context.frontend_scope, element)
-            try:  # checked now: the node would fail on it later
-                read_params_file(path)
-            except InputError as error:
-                raise LaunchError(f"{where}: {error}") from None
-            files.append(str(path))
+                path = substituted_params_file(path, _performer(element, context), element)
+            files.append(str(params_file_checked(path, where, context)))
     return params, files
+
+
+def _performer(element: Element, context: LaunchContext) -> Callable[[str], str]:
+    """A text's $(...) performed at ``element`` in ``context`` (a parameters file's)."""
+    return lambda text: FrontendText(text, element).perform(context)
+
+
+def params_file_checked(path: Path, where: str, context: LaunchContext) -> Path:
+    """A parameters file for a node, passed on as its path, as ros2 launch passes it. What
+    would make it no parameters file at all (missing, too large, not YAML, no
+    ``ros__parameters``) is refused now, at ``where``; a value rcl will refuse when the node
+    reads it (a list of mixed types, a date) is said once, as a warning."""
+    try:
+        entries = read_params_file(path, values=False)
+    except InputError as error:
+        raise LaunchError(f"{where}: {error}") from None
+    for entry in entries.values():
+        problem = parameters_problem(entry["ros__parameters"])
+        if problem:
+            context.sink.warn(
+                f"{where}: {path}: {problem}; passed to the node as it is (as ros2 launch "
+                "passes it), where rcl will refuse it"
+            )
+            break
+    return path
 
 
 # A front-end's <param type=...>: (the Python type, whether a list); "yaml": read as YAML.
@@ -106,7 +134,6 @@ def frontend_node_parts(entity: Any) -> tuple[list[Any], list[Any]]:
     """The parameters and remappings a front-end's <node> or <composable_node> gives its
     action: its <param>s (each read when the node is planned) and <remap>s (from, to)."""
     from launch.frontend.entity import Entity
-    from launch.substitutions import FrontendText
 
     params = entity.get_attr("param", data_type=list[Entity], optional=True) or []
     remaps = entity.get_attr("remap", data_type=list[Entity], optional=True) or []
@@ -145,7 +172,7 @@ class FrontendParameter:
         def text(name: str) -> str:
             if name not in element.attrs:
                 raise element.error(f"<{element.tag}> needs a {name!r} attribute")
-            return substitute(element.attrs[name], scope, element)
+            return FrontendText(element.attrs[name], element).perform(context)
 
         if "from" in element.attrs:
             path = Path(text("from"))
@@ -169,7 +196,9 @@ class FrontendParameter:
         if "value_sep" in element.attrs:  # each item substituted and typed on its own
             separator = element.attrs["value_sep"]
             items = element.attrs.get("value", "").split(separator) if separator else []
-            texts: str | list[str] = [substitute(item, scope, element) for item in items]
+            texts: str | list[str] = [
+                FrontendText(item, element).perform(context) for item in items
+            ]
         else:
             texts = text("value")
         value = _typed(texts, element.attrs.get("type"), element)
@@ -180,7 +209,7 @@ class FrontendParameter:
 
 
 def _holds(element: Element, context: LaunchContext) -> bool:
-    from launch.substitutions import frontend_enabled
+    from launch.frontend.frontend_text import frontend_enabled
 
     return frontend_enabled(element, context)
 

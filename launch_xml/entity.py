@@ -1,5 +1,5 @@
 """launch_xml.Entity: launch.frontend's Entity over the launcher's parsed element
-(launcher/parse.py), which remembers its file and line."""
+(launch_foundation/parse.py), which remembers its file and line."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ from typing import Any
 import yaml
 
 from launch.frontend.entity import Entity as BaseEntity
-from launcher import LaunchError
-from launcher.parse import Element
+from launch_foundation.errors import LaunchError
+from launch_foundation.parse import Element
 
 _TRUE, _FALSE = ("true", "1"), ("false", "0")
 

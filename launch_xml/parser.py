@@ -5,8 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from launch.frontend.parser import Parser as BaseParser
+from launch_foundation.parse import parse_bytes
 from launch_xml.entity import Entity
-from launcher.parse import parse_bytes
 
 
 class Parser(BaseParser):

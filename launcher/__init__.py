@@ -2,22 +2,13 @@
 
     python -m launcher union.launch [name:=value ...] [--screen] [--print] [--show-args]
 
-The work flows one way through small modules: parse (XML or YAML -> elements with file:line;
-a Python file runs through python_files.py and the ``launch`` API instead),
-resolve (args, conditions, substitutions, scopes -> node declarations), plan (declarations ->
-process specs with full command lines, printable), supervise (start, prefix output, respawn,
-shut down). ``LaunchError`` is the one error type every stage raises for bad input.
+The top floor of the launch stack: it loads files (and their includes), has the model
+(``launch``, ``launch_ros``) and its front-ends build and execute the entities, and plans and
+supervises the processes they declare. It stands on ``launch_foundation`` (declarations,
+naming, markup, expressions, errors); ``LaunchError`` is the one error type every stage raises
+for bad input, re-exported here for the launcher's callers.
 """
 
+from launch_foundation.errors import CodeRefused, LaunchError
 
-class LaunchError(Exception):
-    """A problem in a launch file or on the command line: reported as one line, exit code 1."""
-
-
-class CodeRefused(LaunchError):
-    """A launch file asks to run code ($(eval) beyond values and operators, $(command)) and
-    the user did not pass --allow-code; ``what`` is the file:line and what it asks."""
-
-    def __init__(self, what: str) -> None:
-        super().__init__(f"{what}; pass --allow-code to allow it")
-        self.what = what
+__all__ = ["CodeRefused", "LaunchError"]

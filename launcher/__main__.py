@@ -7,12 +7,14 @@ import shlex
 import sys
 from pathlib import Path
 
-from launcher import CodeRefused, LaunchError, guardian
-from launcher.declarations import ArgInfo
-from launcher.naming import valid_name
+from launch_foundation.declarations import ArgInfo
+from launch_foundation.errors import CodeRefused, LaunchError
+from launch_foundation.naming import valid_name
+from launcher import guardian
+from launcher.loading import describe_args, resolve
 from launcher.plan import DEFAULT_SIGKILL_TIMEOUT, DEFAULT_SIGTERM_TIMEOUT, format_plan, make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import Options, describe_args, resolve
+from launcher.scope import Options
 from ros_tutorials_common import completion, packages
 from ros_tutorials_common.cli import positive_seconds
 from ros_tutorials_common.dds import environment_problem

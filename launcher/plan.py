@@ -15,8 +15,8 @@ import sys
 from dataclasses import dataclass, field
 from typing import Any
 
-from launcher import LaunchError
-from launcher.declarations import AT_START, ContainerDecl, Launch, NodeDecl, Step, When
+from launch_foundation.declarations import AT_START, ContainerDecl, Launch, NodeDecl, Step, When
+from launch_foundation.errors import LaunchError
 from ros_tutorials_common import packages
 from ros_tutorials_common.bounded import InputError, load_yaml
 

@@ -13,12 +13,12 @@ import types
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
-from launcher.declarations import ArgInfo, When
+from launch_foundation.declarations import ArgInfo, When
+from launch_foundation.errors import LaunchError
 from ros_tutorials_common.bounded import InputError, read_text
 
-if TYPE_CHECKING:  # the resolver calls this module with its scope
-    from launcher.resolve import Scope
+if TYPE_CHECKING:  # the loader calls this module with its scope
+    from launcher.scope import Scope
 
 
 class LaunchFileRaised(LaunchError):
@@ -85,14 +85,15 @@ def load_description(path: Path) -> Any:
 
 
 def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
-    """Execute a Python launch file into the resolver of ``scope`` (launcher/resolve.py)."""
+    """Execute a Python launch file into the launch plan of ``scope``'s loader
+    (launcher/loading.py)."""
     from launch._base import LaunchContext
 
     description = load_description(path)
-    resolver = scope.resolver
-    state = resolver.launch_state()  # one executor state for the whole launch
+    loader = scope.loader
+    state = loader.launch_state()  # one executor state for the whole launch
     scope.args.update(scope.given)  # launch configurations: the given values first
-    context = LaunchContext(scope, resolver, state)
+    context = LaunchContext(scope, loader.plan, state)
     deferred_before = len(state.deferred_handlers)
     _call(path, context.visit, description)
     # Handlers whose target process was executed after them.
@@ -101,7 +102,7 @@ def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
     for handler, handler_context in waiting:
         index = state.process_index.get(id(handler.target_action))
         if index is None:
-            resolver.warn(
+            loader.warn(
                 f"{handler.where}: {type(handler).__name__}'s target_action is never run, "
                 "so its actions never happen"
             )
@@ -112,7 +113,7 @@ def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
         unknown = sorted(set(scope.given) - declared - state.configurations_read)
         if unknown:
             names = ", ".join(sorted(declared)) or "none"
-            resolver.warn(
+            loader.warn(
                 f"{path}: {path.name} declares no argument {', '.join(map(repr, unknown))} "
                 f"and does not read it (declared: {names})"
             )

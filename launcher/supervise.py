@@ -60,8 +60,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import IO, ClassVar
 
-from launcher import LaunchError, guardian
-from launcher.declarations import Step, shown_line
+from launch_foundation.declarations import Step, shown_line
+from launch_foundation.errors import LaunchError
+from launcher import guardian
 from launcher.plan import ProcessSpec, program_path
 from ros_tutorials_common.ament import apply_ament_defaults
 from ros_tutorials_common.dds import apply_dds_defaults
@@ -365,7 +366,9 @@ class Supervisor:
         else:
             reason = self.shutdown_reason or "idle"
         for step in self.steps:
-            if step.when.event == "shutdown" and step.kind != "shutdown":
+            # A timer inside an OnShutdown handler is cancelled by the shutdown it waits in, as
+            # ros2 launch's TimerAction cancels itself on Shutdown: only its undelayed steps run.
+            if step.when.event == "shutdown" and step.kind != "shutdown" and not step.when.delay:
                 self.do_step(step, {"reason": reason})
 
     def _on_signal(self, signum: int, _frame: object) -> None:

@@ -269,14 +269,14 @@ def load_yaml(text: str, source: str = "YAML") -> Any:
         loader.dispose()
 
 
-def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
+def read_params_file(path: str | os.PathLike, values: bool = True) -> dict[str, dict[str, Any]]:
     """A ROS 2 params file, read within the limits and checked before anything uses it:
     {node name: {"ros__parameters": {...}}}, one entry per node name in the file's order.
 
     As in rcl, a node name may also be written as nested keys (``ns: {node: {ros__parameters:
     ...}}`` is ``ns/node``). A node name that is not text, an entry without a
-    ``ros__parameters`` mapping, or a value no ROS parameter can hold is an InputError naming
-    the file.
+    ``ros__parameters`` mapping, or (with ``values``) a value no ROS parameter can hold is an
+    InputError naming the file.
     """
     import yaml
 
@@ -288,11 +288,11 @@ def read_params_file(path: str | os.PathLike) -> dict[str, dict[str, Any]]:
     if not isinstance(data, dict):
         raise InputError(f"{path} is not a params file (expected 'node: ros__parameters: ...')")
     entries: dict[str, dict[str, Any]] = {}
-    _params_entries(data, "", str(path), entries)
+    _params_entries(data, "", str(path), entries, values)
     return entries
 
 
-def _params_entries(data: dict, prefix: str, source: str, entries: dict) -> None:
+def _params_entries(data: dict, prefix: str, source: str, entries: dict, values: bool) -> None:
     for key, value in data.items():
         if not isinstance(key, str):
             raise InputError(f"{source}: node name {key!r} is not a string")
@@ -302,13 +302,13 @@ def _params_entries(data: dict, prefix: str, source: str, entries: dict) -> None
         params = value.get("ros__parameters", {})
         if not isinstance(params, dict):
             raise InputError(f"{source}: '{name}' has no 'ros__parameters:' mapping")
-        problem = parameters_problem(params)
+        problem = parameters_problem(params) if values else None
         if problem:
             raise InputError(f"{source}: {problem}")
         if "ros__parameters" in value:
             entries.setdefault(name, {"ros__parameters": {}})["ros__parameters"].update(params)
         namespaces = {k: v for k, v in value.items() if k != "ros__parameters"}
-        _params_entries(namespaces, name, source, entries)
+        _params_entries(namespaces, name, source, entries, values)
 
 
 def parameter_problem(name: str, value: Any) -> str | None:

@@ -14,8 +14,9 @@ import pytest
 from helpers import TIMEOUT, finished
 
 from launcher import LaunchError
+from launcher.loading import resolve
 from launcher.plan import make_plan
-from launcher.resolve import Options, resolve
+from launcher.scope import Options
 from ros_tutorials_common import ament, packages
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -22,11 +22,13 @@ PLAIN = sorted(
 )
 LAUNCHER = [
     "launcher.__main__",
-    "launcher.declarations",
-    "launcher.parse",
+    "launch_foundation.declarations",
+    "launch_foundation.parse",
     "launcher.plan",
-    "launcher.resolve",
-    "launcher.substitutions",
+    "launcher.loading",
+    "launcher.ros1",
+    "launcher.ros2_markup",
+    "launch_foundation.substitutions",
     "launcher.supervise",
 ]
 PROBE = """

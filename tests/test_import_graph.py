@@ -51,26 +51,31 @@ def _type_checking_only(node: ast.If) -> bool:
     )
 
 
-def _imports(tree: ast.AST) -> Iterator[ast.Import | ast.ImportFrom]:
+def _imports(tree: ast.AST, type_only: bool = False) -> Iterator[ast.Import | ast.ImportFrom]:
     """Every import statement that can run: module level, in functions and classes, in
-    branches and try blocks; not under ``if TYPE_CHECKING:`` (its else branch does run)."""
+    branches and try blocks; not under ``if TYPE_CHECKING:`` (its else branch does run),
+    unless ``type_only`` (then those too: a type named from a floor above is still a
+    dependency on it)."""
     for child in ast.iter_child_nodes(tree):
         if isinstance(child, (ast.Import, ast.ImportFrom)):
             yield child
-        elif isinstance(child, ast.If) and _type_checking_only(child):
+        elif isinstance(child, ast.If) and _type_checking_only(child) and not type_only:
             for branch in child.orelse:
                 yield from _imports(ast.Module(body=[branch], type_ignores=[]))
         else:
-            yield from _imports(child)
+            yield from _imports(child, type_only)
 
 
-def edges_of(name: str, source: Path, modules: dict[str, Path], root: Path) -> list[Edge]:
-    """The modules of the project that the module ``name`` imports, with file:line."""
+def edges_of(
+    name: str, source: Path, modules: dict[str, Path], root: Path, type_only: bool = False
+) -> list[Edge]:
+    """The modules of the project that the module ``name`` imports, with file:line (with
+    ``type_only``, those imported under ``if TYPE_CHECKING:`` too)."""
     tree = ast.parse(source.read_text(encoding="utf-8"), filename=str(source))
     package = name.split(".") if source.name == "__init__.py" else name.split(".")[:-1]
     shown = source.relative_to(root)
     found = []
-    for statement in _imports(tree):
+    for statement in _imports(tree, type_only):
         where = f"{shown}:{statement.lineno}"
         if isinstance(statement, ast.Import):
             for alias in statement.names:
@@ -95,9 +100,11 @@ def edges_of(name: str, source: Path, modules: dict[str, Path], root: Path) -> l
     return [edge for edge in found if edge.target != name]
 
 
-def import_graph(root: Path) -> dict[str, list[Edge]]:
+def import_graph(root: Path, type_only: bool = False) -> dict[str, list[Edge]]:
     modules = project_modules(root)
-    return {name: edges_of(name, source, modules, root) for name, source in modules.items()}
+    return {
+        name: edges_of(name, source, modules, root, type_only) for name, source in modules.items()
+    }
 
 
 def strongly_connected(graph: dict[str, list[Edge]]) -> list[list[str]]:
@@ -186,7 +193,7 @@ def test_the_project_has_no_import_cycle():
 
 def test_the_graph_is_the_projects():
     graph = import_graph(ROOT)
-    assert {"ros2cmd.cli", "launcher.resolve", "ros_tutorials_common.packages"} <= graph.keys()
+    assert {"ros2cmd.cli", "launcher.loading", "ros_tutorials_common.packages"} <= graph.keys()
     targets = {edge.target for edge in graph["ros2cmd.run"]}
     assert "ros_tutorials_common.packages" in targets  # from ros_tutorials_common import ...
     assert "ros2cmd.errors" in targets
@@ -233,8 +240,8 @@ def test_type_checking_imports_and_parent_packages_are_not_edges(tmp_path):
 
 def test_the_launch_model_knows_the_launcher_only_through_its_interface():
     # launch/ and launch_ros/ (the model: entities, substitutions, the executor's context)
-    # hand their results to launcher.declarations.PlanSink; they import neither the resolver
-    # nor the front-ends' parser of tags, and read no resolver attribute.
+    # hand their results to launch_foundation.declarations.PlanSink; they import neither the
+    # resolver nor the front-ends' parser of tags, and read no resolver attribute.
     graph = import_graph(ROOT)
     model = [name for name in graph if name.split(".")[0] in ("launch", "launch_ros")]
     assert "launch_ros.actions" in model and "launch._base" in model
@@ -242,7 +249,7 @@ def test_the_launch_model_knows_the_launcher_only_through_its_interface():
         f"{name} -> {edge.target} ({edge.where})"
         for name in model
         for edge in graph[name]
-        if edge.target in ("launcher.resolve", "launcher.python_files", "launcher.__main__")
+        if edge.target.split(".")[0] == "launcher"
     ]
     assert not reaching, "the launch model imports the launcher's resolver:\n" + "\n".join(reaching)
     pokes = [
@@ -253,6 +260,107 @@ def test_the_launch_model_knows_the_launcher_only_through_its_interface():
         if ".resolver" in line or "context.scope" in line
     ]
     assert not pokes, "the launch model reads the resolver's internals:\n" + "\n".join(pokes)
+
+
+# The launch stack's floors, bottom to top, and what each package may import (besides itself
+# and the standard library): docs/dev/architecture.md draws them. A package not named here is
+# no part of the stack and may not be imported by it.
+LAUNCH_LAYERS: dict[str, set[str]] = {
+    "ros_tutorials_common": set(),  # the project's floor: nothing of the launch stack
+    "launch_foundation": {"ros_tutorials_common"},
+    "launch": {"launch_foundation", "ros_tutorials_common"},
+    "launch_xml": {"launch", "launch_foundation", "ros_tutorials_common"},
+    "launch_yaml": {"launch", "launch_xml", "launch_foundation", "ros_tutorials_common"},
+    "launch_ros": {"launch", "launch_foundation", "ros_tutorials_common"},
+    "launcher": {
+        "launch",
+        "launch_ros",
+        "launch_xml",
+        "launch_yaml",
+        "launch_foundation",
+        "ros_tutorials_common",
+    },
+}
+LAUNCH_STACK = set(LAUNCH_LAYERS) - {"ros_tutorials_common"}
+
+
+def layer_breaches(root: Path, layers: dict[str, set[str]], stack: set[str]) -> list[str]:
+    """Each import, type-only ones included, from a package of ``layers`` to a package of
+    ``stack`` it may not import, as 'a.b (a/b.py:3) -> c.d'."""
+    graph = import_graph(root, type_only=True)
+    breaches = []
+    for name, edges in sorted(graph.items()):
+        package = name.split(".")[0]
+        if package not in layers:
+            continue
+        for edge in edges:
+            target = edge.target.split(".")[0]
+            if target != package and target in (stack | set(layers)) - layers[package]:
+                breaches.append(f"{name} ({edge.where}) -> {edge.target}")
+    return breaches
+
+
+def test_the_launch_stack_imports_only_down():
+    breaches = layer_breaches(ROOT, LAUNCH_LAYERS, LAUNCH_STACK)
+    assert not breaches, (
+        "imports that run up (or across) the launch stack's floors "
+        "(docs/dev/architecture.md; move the shared piece down):\n" + "\n".join(breaches)
+    )
+
+
+def test_the_launch_stack_has_no_circle_of_packages():
+    # A circle of packages is a circle even where no two modules import each other.
+    graph = import_graph(ROOT, type_only=True)
+    packages: dict[str, list[Edge]] = {package: [] for package in LAUNCH_LAYERS}
+    for name, edges in graph.items():
+        if name.split(".")[0] in packages:
+            packages[name.split(".")[0]] += [
+                Edge(edge.target.split(".")[0], edge.where)
+                for edge in edges
+                if edge.target.split(".")[0] in packages
+                and edge.target.split(".")[0] != name.split(".")[0]
+            ]
+    groups = strongly_connected(packages)
+    assert not groups, "packages of the launch stack import each other: " + "; ".join(
+        one_cycle(packages, group) for group in groups
+    )
+
+
+def test_the_launch_stack_finds_no_floor_above_by_name():
+    # An import by a module's name (importlib.import_module("launcher...")) is an edge the
+    # graph cannot see: the floors below name none of the packages above them.
+    found = []
+    for package, allowed in LAUNCH_LAYERS.items():
+        above = LAUNCH_STACK - allowed - {package}
+        for path in sorted((ROOT / package).rglob("*.py")):
+            text = path.read_text(encoding="utf-8")
+            for number, line in enumerate(text.splitlines(), 1):
+                if "import_module(" in line or "__import__(" in line:
+                    named = [p for p in above if f'"{p}' in line or f"'{p}" in line]
+                    if named:
+                        found.append(f"{path.relative_to(ROOT)}:{number}: {named}")
+    assert not found, "a floor imports one above it by name:\n" + "\n".join(found)
+
+
+def test_an_upward_import_is_found_even_when_only_for_types(tmp_path):
+    _write(
+        tmp_path,
+        {
+            "low/__init__.py": "",
+            "low/a.py": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n"
+            "    from high.b import B\n",
+            "high/__init__.py": "",
+            "high/b.py": "import low.a\nB = 1\n",
+            "mid/__init__.py": "",
+            "mid/c.py": "def f():\n    import high.b\n",
+        },
+    )
+    layers = {"low": set(), "mid": {"low"}, "high": {"low", "mid"}}
+    assert layer_breaches(tmp_path, layers, set(layers)) == [
+        "low.a (low/a.py:3) -> high.b",
+        "mid.c (mid/c.py:2) -> high.b",
+    ]
+    assert cycles(tmp_path) == []  # no circle that runs: the type-only import is no edge there
 
 
 # Over this many lines, a module of the toolkit says at its top why it is one module.

@@ -10,11 +10,12 @@ from pathlib import Path
 import pytest
 from helpers import ok, run
 
+from launch_foundation.declarations import When
 from launcher import LaunchError
-from launcher.declarations import When
+from launcher.loading import describe_args, resolve
 from launcher.plan import make_plan
 from launcher.python_files import LaunchFileRaised
-from launcher.resolve import Options, describe_args, resolve
+from launcher.scope import Options
 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
 TUTORIAL = TUTORIAL_PREFIX / "share" / "launch_tutorial" / "launch"
@@ -357,9 +358,9 @@ def generate_launch_description():
 
 def test_a_name_this_launcher_lacks_is_one_line_at_the_import(tmp_path):
     path = write(tmp_path, "t.launch.py", "from launch import LaunchDescription\n"
-                 "from launch.actions import ResetEnvironment\n")  # fmt: skip
+                 "from launch.actions import OpaqueCoroutine\n")  # fmt: skip
     message = str(raised(path))
-    assert message.startswith(f"{path}:2: launch.actions.ResetEnvironment is not in this ")
+    assert message.startswith(f"{path}:2: launch.actions.OpaqueCoroutine is not in this ")
     assert "TimerAction" in message and "\n" not in message
 
 

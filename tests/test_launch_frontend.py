@@ -25,7 +25,8 @@ from launch.launch_context import LaunchContext
 from launch.utilities import perform_substitutions
 from launch_ros.actions import PushRosNamespace, SetParameter, SetRemap
 from launcher import LaunchError
-from launcher.resolve import Options, resolve
+from launcher.loading import resolve
+from launcher.scope import Options
 
 
 def load(text: str, name: str | None = None):
@@ -360,7 +361,7 @@ def test_a_bad_params_file_is_refused_at_the_params_line(tmp_path):
 
 def test_timer_as_launch_xmls_test():  # launch_xml/test/launch_xml/test_timer.py
     from launch.actions import TimerAction
-    from launch.substitutions import FrontendText
+    from launch.frontend.frontend_text import FrontendText
 
     ld = load('<launch>\n<timer period="5">\n  <let name="a" value="b"/>\n</timer>\n</launch>\n')
     (timer,) = ld.entities

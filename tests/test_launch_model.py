@@ -13,8 +13,9 @@ import pytest
 from helpers import TIMEOUT, run
 
 from launcher import CodeRefused, LaunchError
+from launcher.loading import resolve
 from launcher.plan import make_plan
-from launcher.resolve import Options, resolve
+from launcher.scope import Options
 from ros_tutorials_common.bounded import read_params_file
 
 TUTORIAL_PREFIX = Path(__file__).parent / "data" / "launch_tutorial"
@@ -493,9 +494,9 @@ def generate_launch_description():
 def test_a_command_ends_or_is_ended_within_its_time(tmp_path, monkeypatch):
     """$(command) (as Command and <param command>): no terminal input, so `cat` ends at once;
     a command that leaves a child holding its output is ended at its time limit, child too."""
-    import launcher.substitutions
+    import launch_foundation.substitutions
 
-    monkeypatch.setattr(launcher.substitutions, "COMMAND_SECONDS", 3.0)
+    monkeypatch.setattr(launch_foundation.substitutions, "COMMAND_SECONDS", 3.0)
     reads = write(tmp_path, "reads.launch.xml", '<launch><let name="x" value="[$(command cat)]"/>'
                   '<log message="got $(var x)"/></launch>')  # fmt: skip
     assert resolve(reads, {}, Options(allow_code=True)).messages == ["got []"]
@@ -506,18 +507,88 @@ def test_a_command_ends_or_is_ended_within_its_time(tmp_path, monkeypatch):
         '<launch><let name="x" value="$(command \'sh -c &quot;sleep 600 &amp; echo $! > '
         f"{marker}; echo hi&quot;')\"/></launch>",
     )
-    with pytest.raises(LaunchError, match=r":1: \$\(command sh -c .*\) failed: still running"):
+    with pytest.raises(LaunchError, match=r":1: \$\(command sh -c .*\) failed: it ended, but a "
+                       "process it left in the background keeps its output open"):  # fmt: skip
         resolve(leaves, {}, Options(allow_code=True))
-    # SIGKILL is delivered after kill() returns: wait (bounded) for the child to end.
+    assert _ends(int(marker.read_text())), "the child the command left behind is still running"
+    runs = write(tmp_path, "runs.launch.xml",
+                 '<launch><let name="x" value="$(command \'sleep 600\')"/></launch>')  # fmt: skip
+    with pytest.raises(
+        LaunchError, match=r"\$\(command sleep 600\) failed: still running after 3 s"
+    ):
+        resolve(runs, {}, Options(allow_code=True))
+
+
+def _ends(pid: int) -> bool:
+    """Process ``pid`` ends (or has ended) within TIMEOUT: SIGKILL is delivered after kill()
+    returns, so wait for it, bounded."""
     try:
-        child = os.pidfd_open(int(marker.read_text()))
+        process = os.pidfd_open(pid)
     except ProcessLookupError:
-        return  # gone already
+        return True
     try:
-        ended, _, _ = select.select([child], [], [], TIMEOUT)
+        ended, _, _ = select.select([process], [], [], TIMEOUT)
     finally:
-        os.close(child)
-    assert ended, "the child the command left behind is still running"
+        os.close(process)
+    return bool(ended)
+
+
+def _setsid_grandchild(marker: Path, then: str) -> str:
+    """A $(command) whose grandchild leaves the command's session (setsid) keeping its output
+    open, its pid written to ``marker``; the command then runs ``then``."""
+    script = marker.with_suffix(".sh")
+    script.write_text(
+        f"( setsid sh -c 'echo $$ > {marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600' & )\n"
+        f"{then}\n"
+    )
+    return f"$(command 'sh {script}')"
+
+
+def test_a_grandchild_in_a_session_of_its_own_neither_holds_the_launch_nor_outlives_it(
+    tmp_path,
+):
+    # ( setsid sleep & ); echo hi: the command has ended, but the grandchild holds its output
+    # and is no longer in its process group. ros2 launch would wait for it; here it is refused
+    # within BACKGROUND_SECONDS, and ended.
+    marker = tmp_path / "grandchild.pid"
+    let = f'<let name="x" value="{_setsid_grandchild(marker, "echo hi")}"/>'
+    path = write(tmp_path, "t.launch.xml", f"<launch>{let}</launch>")
+    with pytest.raises(LaunchError, match="keeps its output open"):
+        resolve(path, {}, Options(allow_code=True))
+    assert _ends(int(marker.read_text())), "the setsid grandchild is still running"
+
+
+@pytest.mark.parametrize("signal_name", ["SIGINT", "SIGTERM"])
+def test_ctrl_c_or_sigterm_during_a_command_ends_it_and_its_setsid_grandchild(
+    tmp_path, signal_name
+):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    marker = tmp_path / "grandchild.pid"
+    let = f'<let name="x" value="{_setsid_grandchild(marker, "sleep 600")}"/>'
+    path = write(tmp_path, "t.launch.xml", f"<launch>{let}</launch>")
+    launcher = subprocess.Popen(
+        [sys.executable, "-m", "launcher", str(path), "--allow-code", "--print"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+    )  # fmt: skip
+    try:
+        deadline = time.monotonic() + TIMEOUT
+        while not marker.exists() and launcher.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)  # a wait on a condition, bounded
+        assert marker.exists(), launcher.stderr.read() if launcher.poll() is not None else ""
+        grandchild = int(marker.read_text())
+        launcher.send_signal(getattr(signal, signal_name))
+        code = launcher.wait(TIMEOUT)
+    finally:
+        if launcher.poll() is None:
+            os.killpg(launcher.pid, signal.SIGKILL)
+            launcher.wait()
+    assert code == (130 if signal_name == "SIGINT" else -signal.SIGTERM), launcher.stderr.read()
+    assert "Traceback" not in launcher.stderr.read()
+    assert _ends(grandchild), "the command's setsid grandchild outlived the launcher"
 
 
 def test_the_issues_one_megabyte_argument_in_3000_params_is_refused(tmp_path):
@@ -552,3 +623,142 @@ def test_respawn_max_retries_means_the_same_in_every_format(tmp_path, fmt):
     }[fmt]
     default, forever = resolve(write(tmp_path, f"t.launch.{fmt}", text), {}, Options()).nodes
     assert (default.respawn_max_retries, forever.respawn_max_retries) == (10, -1)
+
+
+def test_param_substitution_reads_what_set_parameter_gave_in_xml_yaml_and_python(tmp_path):
+    # launch_ros's $(param NAME [DEFAULT]) / Parameter: the value a SetParameter gave before
+    # it in its scope (as Python's str of the typed value), the default, else an error.
+    xml = write(tmp_path, "p.launch.xml", """<launch>
+<set_parameter name="use_sim_time" value="true"/>
+<set_parameter name="rate" value="10"/>
+<log message="$(param use_sim_time) $(param rate) $(param missing fallback)"/>
+</launch>
+""")  # fmt: skip
+    yaml = write(tmp_path, "p.launch.yaml", """launch:
+- set_parameter: {name: use_sim_time, value: "true"}
+- set_parameter: {name: rate, value: "10"}
+- log: {message: "$(param use_sim_time) $(param rate) $(param missing fallback)"}
+""")  # fmt: skip
+    python = write(tmp_path, "p.launch.py", """from launch import LaunchDescription
+from launch.actions import LogInfo
+from launch_ros.actions import SetParameter
+from launch_ros.substitutions import Parameter
+
+def generate_launch_description():
+    return LaunchDescription([
+        SetParameter(name="use_sim_time", value=True),
+        SetParameter(name="rate", value=10),
+        LogInfo(msg=[Parameter("use_sim_time"), " ", Parameter("rate"), " ",
+                     Parameter("missing", default="fallback")]),
+    ])
+""")  # fmt: skip
+    for path in (xml, yaml, python):
+        assert resolve(path, {}, Options()).messages == ["True 10 fallback"], path.name
+    unknown = write(tmp_path, "u.launch.xml", '<launch>\n<log message="$(param nope)"/>\n</launch>')
+    with pytest.raises(LaunchError, match=r"u.launch.xml:2: parameter 'nope' not found"):
+        resolve(unknown, {}, Options())
+
+
+def test_a_params_file_rcl_will_refuse_is_passed_as_its_path_with_a_warning(tmp_path):
+    # ros2 launch passes a node's parameters file on as its path, unread: a list of mixed
+    # types plans (rcl refuses it when the node reads it: said once as a warning), while a
+    # file that is no parameters file at all is refused at the launch file's line.
+    params = tmp_path / "params.yaml"
+    params.write_text("talker:\n  ros__parameters:\n    mixed: [1, 'two', 3.0]\n")
+    python = write(tmp_path, "p.launch.py", f"""from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_tutorials_topic", executable="talker", parameters=[{str(params)!r}]),
+    ])
+""")  # fmt: skip
+    xml = write(tmp_path, "p.launch.xml", f"""<launch>
+<node pkg="ros_tutorials_topic" exec="talker"><param from="{params}"/></node>
+</launch>
+""")  # fmt: skip
+    for path in (python, xml):
+        launch = resolve(path, {}, Options())
+        assert launch.nodes[0].params_files == [str(params)]
+        assert any(
+            "'mixed' mixes types in one list; a ROS list holds one type; passed to the node"
+            in warning
+            for warning in launch.warnings
+        ), launch.warnings
+        command = make_plan(launch)[0].command
+        assert command[command.index("--params-file") + 1] == str(params)
+    params.write_text("talker: [1, 2]\n")
+    with pytest.raises(LaunchError, match=r"p.launch.xml:2: .*has no 'ros__parameters:' mapping"):
+        resolve(xml, {}, Options())
+
+
+def test_planning_calls_no_function_of_an_on_shutdown_handler(tmp_path):
+    # An OnShutdown handler's OpaqueFunction is the launch file's clean-up: ros2 launch calls
+    # it when the launch shuts down, so planning (--print) must not.
+    marker = tmp_path / "cleaned"
+    path = write(tmp_path, "t.launch.py", f"""from pathlib import Path
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction, RegisterEventHandler
+from launch.event_handlers import OnShutdown
+from launch_ros.actions import Node
+
+def cleanup(context):
+    Path({str(marker)!r}).write_text("cleaned")
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_tutorials_topic", executable="talker"),
+        RegisterEventHandler(OnShutdown(on_shutdown=[OpaqueFunction(function=cleanup)])),
+    ])
+""")  # fmt: skip
+    done = run("ros2", "launch", str(path), "--print")
+    assert done.returncode == 0, done.stderr
+    assert "when the launch shuts down" in done.stdout
+    assert not marker.exists(), "planning ran the OnShutdown handler's function"
+
+
+def test_a_lifecycle_node_plans_as_its_node_and_needs_a_name_and_namespace(tmp_path):
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker",
+                      namespace="demo", output="screen", parameters=[{"rate": 2}]),
+    ])
+""")  # fmt: skip
+    (node,) = resolve(path, {}, Options()).nodes
+    assert (node.name, node.namespace, node.params) == ("lc_talker", "/demo", [("rate", 2)])
+    unnamed = write(tmp_path, "u.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker"),
+    ])
+""")  # fmt: skip
+    with pytest.raises(LaunchError, match=r"u.launch.py:6: .*missing 1 required keyword-only "
+                       r"argument: 'namespace'"):  # fmt: skip
+        resolve(unnamed, {}, Options())
+
+
+def test_a_lifecycle_transition_asked_by_the_launch_file_is_refused_in_one_line(tmp_path):
+    # The launcher hosts no ROS node to call change_state: ChangeState builds, and its
+    # EmitEvent is refused at the launch file's line (not a wrong plan, not a traceback).
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch.actions import EmitEvent
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+
+def generate_launch_description():
+    node = LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc",
+                         namespace="")
+    return LaunchDescription([node, EmitEvent(event=ChangeState(
+        lifecycle_node_matcher=lambda action: action is node, transition_id=1))])
+""")  # fmt: skip
+    with pytest.raises(LaunchError) as raised:
+        resolve(path, {}, Options())
+    assert str(raised.value) == (
+        f"{path}:9: EmitEvent(ChangeState) is not supported here; only "
+        "EmitEvent(event=Shutdown(...))"
+    )

@@ -11,10 +11,12 @@ from pathlib import Path
 import pytest
 from helpers import fails, ok, run
 
+from launch_foundation.parse import parse_file
 from launcher import CodeRefused, LaunchError
-from launcher.parse import parse_file
+from launcher.loading import resolve
 from launcher.plan import make_plan
-from launcher.resolve import Options, detect, resolve
+from launcher.scope import Options
+from launcher.tags import detect
 
 PKG = 'pkg="ros_tutorials_topic"'
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from launch_foundation.naming import remap_problem
 from launcher.__main__ import main
-from launcher.naming import remap_problem
 
 NODE = '<node pkg="ros_tutorials_topic" type="topic_publisher" name="pub">{}</node>'
 

@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from launcher import LaunchError
+from launcher.loading import describe_args, resolve
 from launcher.plan import make_plan, ros_value
-from launcher.resolve import Options, describe_args, resolve
+from launcher.scope import Options
 from ros_tutorials_common import packages
 
 TOPIC_LAUNCH = Path(packages.package_dirs()["ros_tutorials_topic"]) / "launch"

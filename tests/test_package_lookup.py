@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from helpers import fails, ok
 
-from launcher.expressions import BUILTINS, MATH, evaluate
+from launch_foundation.expressions import BUILTINS, MATH, evaluate
 from ros2cmd.pkg import api as pkg
 from ros_tutorials_common import ament, packages
 

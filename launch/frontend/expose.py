@@ -8,7 +8,7 @@ import inspect
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 
 if TYPE_CHECKING:
     from launch.frontend.entity import Entity
@@ -73,11 +73,29 @@ def instantiate_action(entity: Entity, parser: Parser) -> Any:
 
 
 def instantiate_substitution(type_name: str, args: Iterable[Any] | None = None) -> Any:
+    """The substitution ``$(type_name args...)`` by the parse method its class exposed; each
+    argument a list of substitutions."""
     method = substitution_parse_methods.get(type_name)
     if method is None:
-        raise LaunchError(f"unknown substitution $({type_name} ...)")
+        _load_substitutions()
+        method = substitution_parse_methods.get(type_name)
+    if method is None:
+        known = ", ".join(f"$({name})" for name in sorted(substitution_parse_methods))
+        raise LaunchError(f"unknown substitution $({type_name}); known here: {known}")
     substitution_type, kwargs = method(list(args or []))
     return substitution_type(**kwargs)
+
+
+# The modules whose substitutions expose their names, loaded by name as ros2/launch loads
+# its 'launch.frontend.launch_extension' entry points.
+SUBSTITUTION_MODULES = ("launch.substitutions", "launch_ros.substitutions")
+
+
+def _load_substitutions() -> None:
+    import importlib
+
+    for name in SUBSTITUTION_MODULES:
+        importlib.import_module(name)
 
 
 def _where(entity: Entity) -> str:

@@ -10,7 +10,7 @@ from typing import IO, TYPE_CHECKING, Any
 
 from launch.frontend.entity import Entity
 from launch.frontend.expose import instantiate_action
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 
 if TYPE_CHECKING:
     from launch.launch_description import LaunchDescription
@@ -100,7 +100,7 @@ class Parser:
         """An attribute's text as substitutions, performed when an action needs it (errors
         name the line of the entity being parsed)."""
         from launch._base import element_at
-        from launch.substitutions import FrontendText
+        from launch.frontend.frontend_text import FrontendText
 
         stack = self.__dict__.get("_parsing") or [None]
         element = getattr(stack[-1], "element", None) or element_at("<launch>")

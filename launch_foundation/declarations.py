@@ -2,10 +2,11 @@
 (``NodeDecl``), the steps that happen later (``Step``, at a ``When``), the arguments a file takes
 (``ArgInfo``), and a whole resolved file (``Launch``).
 
-The XML and YAML front-end (resolve.py) and the Python one (python_files.py, with the ``launch``
-and ``launch_ros`` packages) build these; plan.py turns them into process specs and
-supervise.py does the steps. Data only (and ``shown_line``, the one reading of
-output_format), importing nothing of the launcher, so every stage can take it from here.
+The launcher's front-ends build these: XML and YAML (launcher/loading.py) and Python
+(launcher/python_files.py), through the ``launch`` and ``launch_ros`` packages;
+launcher/plan.py turns them into process specs and launcher/supervise.py does the steps.
+Data only (and ``shown_line``, the one reading of output_format), importing nothing of the
+launcher, so every stage can take it from here.
 """
 
 from __future__ import annotations
@@ -151,7 +152,7 @@ class ArgInfo:
 
 class PlanSink(Protocol):
     """The one thing the launch model (``launch``, ``launch_ros``) knows of the launcher: where
-    executing an entity hands its result. The resolver (launcher/resolve.py) is one.
+    executing an entity hands its result. The launcher's LaunchPlan (launcher/sink.py) is one.
 
     - ``add_node``: a process to run (ExecuteProcess, Node); returns its index, by which an
       event handler's ``When`` names it.

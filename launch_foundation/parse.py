@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 from xml.parsers import expat
 
-from launcher import LaunchError
+from launch_foundation.errors import LaunchError
 from ros_tutorials_common.bounded import (
     MAX_YAML_NODES,
     InputError,

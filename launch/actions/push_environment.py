@@ -1,0 +1,15 @@
+"""launch.actions.PushEnvironment: keep the environment, to go back to it (PopEnvironment)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launch._base import Action, LaunchContext
+
+
+class PushEnvironment(Action):
+    def __init__(self, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+
+    def execute(self, context: LaunchContext) -> None:
+        context._push_environment()

@@ -1,0 +1,16 @@
+"""launch.actions.SetEnvironmentVariable (``<set_env>``)."""
+
+from __future__ import annotations
+
+from launch._base import (
+    LaunchContext,
+    perform,
+)
+from launch.actions._common import NameValueAction, env_name
+from launch.frontend.expose import expose_action
+
+
+@expose_action("set_env")
+class SetEnvironmentVariable(NameValueAction):
+    def execute(self, context: LaunchContext) -> None:
+        context.set_env(env_name(self, context), perform(self.value, context))

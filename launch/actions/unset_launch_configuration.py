@@ -1,0 +1,21 @@
+"""launch.actions.UnsetLaunchConfiguration."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launch._base import (
+    Action,
+    LaunchContext,
+    SomeSubstitutionsType,
+    perform,
+)
+
+
+class UnsetLaunchConfiguration(Action):
+    def __init__(self, name: SomeSubstitutionsType, **kw: Any) -> None:
+        super().__init__(**kw)
+        self.name = name
+
+    def execute(self, context: LaunchContext) -> None:
+        context.launch_configurations.pop(perform(self.name, context), None)

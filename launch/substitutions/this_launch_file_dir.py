@@ -1,0 +1,25 @@
+"""launch.substitutions.ThisLaunchFileDir (``$(dirname)``)."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from typing import Any
+
+from launch._base import LaunchContext
+from launch.frontend.expose import expose_substitution
+from launch.substitutions._args import arguments
+from launch.substitutions.this_launch_file import ThisLaunchFile
+
+
+@expose_substitution("dirname")
+class ThisLaunchFileDir(ThisLaunchFile):
+    """The folder of the launch file being read."""
+
+    @classmethod
+    def parse(cls, data: Sequence[Any]) -> tuple[type, dict[str, Any]]:
+        arguments("dirname", data, 0, 0)
+        return cls, {}
+
+    def perform(self, context: LaunchContext) -> str:
+        return os.path.dirname(super().perform(context))
