@@ -7,7 +7,7 @@
     catkin_create_pkg PKG DEPS     the `ros2 pkg create` line that makes PKG (rospy -> rclpy)
     catkin_init_workspace          ROS 2 workspaces need none: `mkdir -p ~/ros2_ws/src`
     roscp PKG FILE DEST            the `cp` to type
-    rqt                            a GUI tool this project does not have, and what does its job
+    rviz, rviz2                    a GUI tool this project does not have, and what does its job
 
 ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See the README's
 "Coming from ROS 1".
@@ -191,7 +191,6 @@ def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
     return say
 
 
-rqt = _missing_gui_tool("rqt")
 rviz = _missing_gui_tool("rviz")
 rviz2 = _missing_gui_tool("rviz2")
 
