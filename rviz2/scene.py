@@ -146,7 +146,7 @@ class Scene(Node):
         kind = BY_TYPE.get(self.topics.get(topic, ""))
         if kind is None or any(s.display.topic == topic for s in self.displays):
             return
-        self.add(display(kind, topic, name=f"{kind} {topic}"))
+        self.add(display(kind, topic))  # named after its kind, as rviz names it
 
     def set_enabled(self, number: int, enabled: bool) -> None:
         if not 0 <= number < len(self.displays):

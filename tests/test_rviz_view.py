@@ -547,6 +547,20 @@ class TestTurtleRviz:
             assert where["frame turtle1"][:2] == pytest.approx([5.544445, 5.544445], abs=0.01)
             kinds = browser.execute_script("return window.rvizState.displays().map((d) => d.kind)")
             assert kinds == ["Grid", "TF"]
+            # The learner drives turtle1: its frame moves in the view, turtle2's follows.
+            run(
+                "ros2", "topic", "pub", "--once", "/turtle1/cmd_vel", "geometry_msgs/msg/Twist",
+                "{linear: {x: 2.5}, angular: {z: 1.2}}",
+            )  # fmt: skip
+            page_until(
+                browser,
+                """const at = Object.fromEntries(window.rvizState.objects()
+                     .filter((o) => o.kind === "TF").map((o) => [o.what, o.position]));
+                   const t1 = at["frame turtle1"], t2 = at["frame turtle2"];
+                   return Math.hypot(t1[0] - 5.544445, t1[1] - 5.544445) > 1
+                     && Math.hypot(t1[0] - t2[0], t1[1] - t2[1]) > 0.5;""",
+                "turtle1's frame moved away, turtle2's behind it",
+            )
             browser.save_screenshot(str(tmp_path / "rviz_turtles.png"))
         finally:
             browser.quit()
@@ -584,3 +598,214 @@ def test_a_window_opens_where_there_is_a_display(node_process, tmp_path: Path) -
         assert time.monotonic() < deadline, "no browser was asked to open the view"
         time.sleep(0.1)
     assert opened.read_text() == f"{link}\n"
+
+
+ROOM = 10.0  # m: the map's square room, walls all round, a pillar in the middle
+ROVER = """<robot name="rover">
+  <link name="base_link"><visual><origin xyz="0 0 0.15"/><geometry><box size="0.6 0.4 0.2"/>
+    </geometry><material name="orange"><color rgba="1 0.5 0.1 1"/></material></visual></link>
+  <link name="left_wheel"><visual><origin rpy="1.5708 0 0"/><geometry>
+    <cylinder radius="0.1" length="0.06"/></geometry><material name="black">
+    <color rgba="0.1 0.1 0.1 1"/></material></visual></link>
+  <link name="right_wheel"><visual><origin rpy="1.5708 0 0"/><geometry>
+    <cylinder radius="0.1" length="0.06"/></geometry><material name="black"/></visual></link>
+  <link name="laser"><visual><geometry><cylinder radius="0.06" length="0.08"/></geometry>
+    <material name="black"/></visual></link>
+</robot>
+"""
+
+
+class Sensors:
+    """A robot in a room, as a navigation stack shows it: the map (transient local, 200 x 200
+    cells of 5 cm, and a 2100 x 60 strip that must be thinned), a laser scan of the walls, a
+    point cloud of 250,000 points (thinned too), the planned path, a goal pose, a pose array,
+    odometry, and a camera image of 800 x 600 (thinned); tf map -> odom -> base_link ->
+    laser."""
+
+    def __init__(self, context: Context) -> None:
+        import numpy as np
+        from geometry_msgs.msg import Pose, PoseArray, PoseStamped
+        from nav_msgs.msg import OccupancyGrid, Odometry, Path
+        from sensor_msgs.msg import Image, LaserScan
+
+        from tf2_ros import StaticTransformBroadcaster
+
+        self.executor = SingleThreadedExecutor(context=context)
+        node = self.node = rclpy.create_node("rviz_test_sensors", context=context)
+        latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.executor.add_node(node)
+        self.static = StaticTransformBroadcaster(node)
+        self.static.sendTransform(
+            [
+                transform("map", "odom", (0.0, 0.0, 0.0)),
+                transform("odom", "base_link", (3.0, 2.0, 0.0), math.pi / 4),
+                transform("base_link", "laser", (0.2, 0.0, 0.3)),
+                transform("base_link", "left_wheel", (0.0, 0.25, 0.1)),
+                transform("base_link", "right_wheel", (0.0, -0.25, 0.1)),
+            ]
+        )
+        node.create_publisher(String, "/robot_description", latched).publish(String(data=ROVER))
+        cells = np.zeros((200, 200), dtype=np.int8)
+        cells[:4, :] = cells[-4:, :] = cells[:, :4] = cells[:, -4:] = 100
+        cells[90:110, 90:110] = 100
+        cells[150:, 150:] = -1
+        room = OccupancyGrid()
+        room.header.frame_id = "map"
+        room.info.width = room.info.height = 200
+        room.info.resolution = ROOM / 200
+        room.info.origin.orientation.w = 1.0
+        room.data = cells.flatten().tolist()
+        node.create_publisher(OccupancyGrid, "/map", latched).publish(room)
+        strip = OccupancyGrid()
+        strip.header.frame_id = "map"
+        strip.info.width, strip.info.height, strip.info.resolution = 2100, 60, 0.01
+        strip.info.origin.position.y = -1.0
+        strip.info.origin.orientation.w = 1.0
+        strip.data = [50] * (2100 * 60)
+        node.create_publisher(OccupancyGrid, "/strip_map", latched).publish(strip)
+
+        scan = LaserScan(angle_min=-math.pi, angle_max=math.pi, range_min=0.1, range_max=20.0)
+        scan.header.frame_id = "laser"
+        scan.angle_increment = 2 * math.pi / 720
+        ranges = []
+        for i in range(720):  # the walls of the room, seen from base_link at (3, 2), turned 45
+            a = scan.angle_min + i * scan.angle_increment + math.pi / 4
+            dx, dy = math.cos(a), math.sin(a)
+            hits = [t for t in ((ROOM - 0.2 - 3.2) / dx if dx > 1e-9 else math.inf,
+                                (0.2 - 3.2) / dx if dx < -1e-9 else math.inf,
+                                (ROOM - 0.2 - 2.2) / dy if dy > 1e-9 else math.inf,
+                                (0.2 - 2.2) / dy if dy < -1e-9 else math.inf) if t > 0]  # fmt: skip
+            ranges.append(min(hits))
+        scan.ranges = ranges
+        self.scan = (node.create_publisher(LaserScan, "/scan", 10), scan)
+
+        count = 250_000
+        angle = np.linspace(0, 40 * math.pi, count, dtype=np.float32)
+        xyz = np.stack([7 + np.cos(angle), 7 + np.sin(angle), angle / (40 * math.pi)], axis=1)
+        fields = [
+            PointField(name=name, offset=4 * i, datatype=PointField.FLOAT32, count=1)
+            for i, name in enumerate("xyz")
+        ]
+        big = PointCloud2(height=1, width=count, fields=fields, point_step=12, row_step=12 * count)
+        big.header.frame_id = "map"
+        big.data = xyz.astype("<f4").tobytes()
+        self.cloud = (node.create_publisher(PointCloud2, "/points", 10), big)
+
+        path = Path()
+        path.header.frame_id = "map"
+        for i in range(30):
+            p = PoseStamped()
+            p.pose.position.x = 3.0 + i * 0.15
+            p.pose.position.y = 2.0 + 3 * math.sin(i / 10)
+            path.poses.append(p)
+        self.path = (node.create_publisher(Path, "/plan", 10), path)
+        goal = PoseStamped()
+        goal.header.frame_id = "map"
+        goal.pose.position.x, goal.pose.position.y = 7.5, 4.8
+        goal.pose.orientation.w = 1.0
+        self.goal = (node.create_publisher(PoseStamped, "/goal_pose", 10), goal)
+        particles = PoseArray()
+        particles.header.frame_id = "map"
+        for i in range(20):
+            p = Pose()
+            p.position.x, p.position.y = 3.0 + 0.3 * math.cos(i), 2.0 + 0.3 * math.sin(i)
+            p.orientation.z, p.orientation.w = math.sin(i / 4), math.cos(i / 4)
+            particles.poses.append(p)
+        self.particles = (node.create_publisher(PoseArray, "/particlecloud", 10), particles)
+        odom = Odometry()
+        odom.header.frame_id, odom.child_frame_id = "odom", "base_link"
+        odom.pose.pose.position.x, odom.pose.pose.position.y = 3.0, 2.0
+        odom.pose.pose.orientation.z = math.sin(math.pi / 8)
+        odom.pose.pose.orientation.w = math.cos(math.pi / 8)
+        self.odom = (node.create_publisher(Odometry, "/odom", 10), odom)
+        pixels = np.zeros((600, 800, 3), dtype=np.uint8)
+        pixels[:, :, 0] = np.linspace(0, 255, 800, dtype=np.uint8)[None, :]
+        pixels[:, :, 2] = np.linspace(255, 0, 600, dtype=np.uint8)[:, None]
+        image = Image(height=600, width=800, encoding="rgb8", step=2400)
+        image.header.frame_id = "camera"
+        image.data = pixels.tobytes()
+        self.image = (node.create_publisher(Image, "/camera/image_raw", 10), image)
+        node.create_timer(0.2, self.tick)
+        self.stop = threading.Event()
+        self.thread = threading.Thread(target=self.spin, daemon=True)
+        self.thread.start()
+
+    def tick(self) -> None:
+        stamp = self.node.get_clock().now().to_msg()
+        for publisher, msg in (
+            self.scan, self.cloud, self.path, self.goal, self.particles, self.odom, self.image
+        ):  # fmt: skip
+            msg.header.stamp = stamp
+            publisher.publish(msg)
+
+    def spin(self) -> None:
+        while not self.stop.is_set():
+            self.executor.spin_once(timeout_sec=0.05)
+
+    def close(self) -> None:
+        self.stop.set()
+        self.thread.join()
+        self.executor.remove_node(self.node)
+        self.node.destroy_node()
+        self.executor.shutdown()
+
+
+@pytest.fixture
+def sensors(ros_domain: int) -> Iterator[Sensors]:
+    context = Context()
+    rclpy.init(context=context)
+    publishers = Sensors(context)
+    yield publishers
+    publishers.close()
+    context.try_shutdown()
+
+
+def test_every_display_by_topic(sensors: Sensors, node_process, tmp_path: Path) -> None:
+    """`rviz2` with no file adds a display for each topic of a type it draws and picks the
+    fixed frame map; the page draws each (big data thinned), every status ok."""
+    link = started(node_process(str(BIN / "rviz2"), "--port", "0", env=HEADLESS))
+    browser = browser_for(tmp_path)
+    try:
+        browser.get(link)
+        drawn = page_until(
+            browser,
+            """const s = window.rvizState;
+               if (!s) return null;
+               const have = s.objects().filter((o) => o.visible).map((o) => o.what);
+               const want = ["map 200x200 cells", "map 2100x60 cells", "720 points",
+                 "link base_link", "link right_wheel",
+                 "83334 points of 250000", "path of 30 poses", "image 800x600"];
+               const poses = have.filter((w) => w.startsWith("pose ")).length;
+               const odometry = have.some((w) => w.startsWith("odometry 3.00 2.00"));
+               return want.every((w) => have.includes(w)) && poses === 21 && odometry
+                 ? have : null;""",
+            "every display drawn",
+            timeout=90,
+        )
+        assert "grid 10x10 cells of 1 m" in drawn
+        assert browser.execute_script("return window.rvizState.fixed") == "map"
+        statuses = page_until(
+            browser,
+            """const ds = window.rvizState.displays();
+               return ds.length >= 12 && ds.every((d) => d.status.startsWith("ok")) ? ds : null;""",
+            "every display ok",
+        )
+        kinds = sorted(d["kind"] for d in statuses)
+        assert kinds == sorted(
+            ["Grid", "TF", "RobotModel", "LaserScan", "PointCloud2", "Path", "Pose",
+             "PoseArray", "Odometry", "Map", "Map", "Image"]
+        )  # fmt: skip
+        # The laser's points are in the laser's frame, placed by tf in the map.
+        scan = browser.execute_script(
+            "return window.rvizState.objects().find((o) => o.what === '720 points').position"
+        )
+        assert scan[:2] == pytest.approx(
+            [3.0 + 0.2 * math.cos(math.pi / 4), 2.0 + 0.2 * math.sin(math.pi / 4)], abs=1e-4
+        )
+        assert "link right_wheel" in drawn
+        browser.execute_script(
+            "window.rvizState.setView({distance: 11, pitch: 0.75, yaw: -2.2, focal: [5, 5, 0]})"
+        )
+        browser.save_screenshot(str(tmp_path / "rviz_sensors.png"))
+    finally:
+        browser.quit()
