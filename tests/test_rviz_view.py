@@ -44,6 +44,29 @@ endloop
 endfacet
 endsolid finger
 """
+# A COLLADA tetrahedron (z up, metres): the robot's other mesh.
+DAE = """<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="tip" name="tip"><mesh>
+      <source id="tip-xyz">
+        <float_array id="tip-xyz-array" count="12">0 0 0 0.2 0 0 0 0.2 0 0 0 0.2</float_array>
+        <technique_common><accessor source="#tip-xyz-array" count="4" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/>
+          <param name="Z" type="float"/></accessor></technique_common>
+      </source>
+      <vertices id="tip-vertices"><input semantic="POSITION" source="#tip-xyz"/></vertices>
+      <triangles count="4"><input semantic="VERTEX" source="#tip-vertices" offset="0"/>
+        <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes><visual_scene id="scene">
+    <node id="tip-node"><instance_geometry url="#tip"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+"""
 URDF = """<?xml version="1.0"?>
 <robot name="test_bot">
   <material name="blue"><color rgba="0 0 0.8 1"/></material>
@@ -56,6 +79,8 @@ URDF = """<?xml version="1.0"?>
   </link>
   <link name="gripper">
     <visual><geometry><mesh filename="file://{mesh}"/></geometry></visual>
+    <visual><origin xyz="0.1 0 0"/><geometry><mesh filename="file://{dae}"/></geometry>
+    </visual>
   </link>
   <joint name="neck" type="fixed"><parent link="base_link"/><child link="head"/>
     <origin xyz="0 0 0.5"/></joint>
@@ -141,7 +166,8 @@ class Publishers:
         self.dynamic = TransformBroadcaster(self.node)
         latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.description = self.node.create_publisher(String, "/robot_description", latched)
-        self.description.publish(String(data=URDF.format(mesh=mesh)))
+        dae = mesh.with_name("tip.dae")
+        self.description.publish(String(data=URDF.format(mesh=mesh, dae=dae)))
         self.marker = self.node.create_publisher(Marker, "/visualization_marker", 10)
         self.markers = self.node.create_publisher(MarkerArray, "/visualization_marker_array", 10)
         self.cloud = self.node.create_publisher(PointCloud2, "/cloud", 10)
@@ -237,6 +263,7 @@ def robot(tmp_path_factory: pytest.TempPathFactory, ros_domain: int) -> Iterator
     """The publishers, and the folder holding the test's .rviz file and mesh."""
     folder = tmp_path_factory.mktemp("robot")
     (folder / "finger.stl").write_text(STL)
+    (folder / "tip.dae").write_text(DAE)
     (folder / "robot.rviz").write_text(CONFIG)
     context = Context()
     rclpy.init(context=context)
@@ -524,6 +551,14 @@ class TestInBrowser:
             assert [d["kind"] for d in statuses] == [
                 "Grid", "TF", "RobotModel", "Marker", "MarkerArray", "PointCloud2"
             ]  # fmt: skip
+            meshes = page_until(
+                browser,
+                """const m = window.rvizState.meshes();
+                   return Object.keys(m).length === 2
+                     && Object.values(m).every((s) => s !== "loading") ? m : null;""",
+                "the robot's STL and COLLADA meshes loaded",
+            )
+            assert set(meshes.values()) == {"loaded"}, meshes
             lacking = browser.find_element("id", "lacking").text
             assert "'Front camera' (rviz_default_plugins/Camera) is not drawn" in lacking
             assert browser.execute_script("return window.rvizState.renders") > 0
