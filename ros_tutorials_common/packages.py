@@ -78,10 +78,6 @@ EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
 # here (rqt's plugins are in the browser: `rqt`, `rqt_publisher`, ..., ros_tutorials_web).
 MISSING_TOOLS: dict[str, str] = {
     "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
-    "rviz": "a ROS 2 installation has it as rviz2; to watch turtlesim, the graph and topics "
-    "without one: `ros2 run ros_tutorials_web viewer`",
-    "rviz2": "it is not on PyPI; to watch turtlesim, the graph and topics: "
-    "`ros2 run ros_tutorials_web viewer`",
 }
 
 

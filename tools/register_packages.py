@@ -33,7 +33,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 INTERFACES = ROOT / "interfaces"
-DATA_FOLDERS = ("launch", "config")  # what the lessons' setup.py would list in data_files
+DATA_FOLDERS = ("launch", "config", "rviz")  # what the setup.py files would list in data_files
 INDEX = Path("share", "ament_index", "resource_index", "packages")
 # ROS 2 Python packages PyPI lacks, which this project provides (ament_copyright, rosbag2_py,
 # tf2_ros, ...): every other top-level folder with a package.xml. Their executables are their

@@ -19,7 +19,7 @@ import argparse
 import contextlib
 import shlex
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 
 from ros_tutorials_common import ament, completion, packages
@@ -177,22 +177,6 @@ def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
         "catkin_init_workspace is ROS 1's; a ROS 2 workspace needs no set-up: mkdir -p "
         "~/ros2_ws/src, create packages there, run colcon build in ~/ros2_ws"
     )
-
-
-@program_main
-def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
-    """A console script for a GUI tool this project does not have: one line, what instead."""
-
-    def say(argv: Sequence[str] | None = None) -> int:
-        return _say(
-            f"{name} is a GUI tool this project does not have; {packages.MISSING_TOOLS[name]}"
-        )
-
-    return say
-
-
-rviz = _missing_gui_tool("rviz")
-rviz2 = _missing_gui_tool("rviz2")
 
 
 def roswtf(argv: Sequence[str] | None = None) -> int:
