@@ -227,16 +227,19 @@ def parse(text: str | bytes) -> Robot:
         raise UrdfError("a DOCTYPE (DTD) is not allowed in a robot description")
     parser = ElementTree.XMLPullParser(events=("start",))
     elements = 0
+    root = None
     try:
         parser.feed(text)
-        for _ in parser.read_events():
+        parser.close()
+        for _, element in parser.read_events():
+            root = element if root is None else root
             elements += 1
             if elements > MAX_ELEMENTS:
                 raise UrdfError(f"the robot description has more than {MAX_ELEMENTS} elements")
-        parser.feed("" if isinstance(text, str) else b"")
-        root = parser.close()
     except ElementTree.ParseError as error:
         raise UrdfError(f"not valid XML: {error}") from None
+    if root is None:
+        raise UrdfError("the robot description is empty")
     if root.tag != "robot":
         raise UrdfError("Could not find the 'robot' element in the xml file")
     name = root.get("name")

@@ -141,7 +141,10 @@ JOINT = '<joint name="{}" type="{}"><parent link="{}"/><child link="{}"/>{}</joi
             '<?xml version="1.0"?><!DOCTYPE r [<!ENTITY a "aaaa">]><robot name="&a;"/>',
             "a DOCTYPE (DTD) is not allowed in a robot description",
         ),
-        ("<robot name='r'>" + "<link name='a'/>" * 10 + "x" * urdf.MAX_URDF_BYTES, "larger"),
+        (
+            "<robot name='r'>" + "<link name='a'/>" * 10 + "x" * urdf.MAX_URDF_BYTES,
+            "the robot description is larger than 8 MiB",
+        ),
     ],
 )
 def test_a_malformed_description_is_one_line(text, error):
