@@ -149,7 +149,7 @@ def test_robot_state_publisher_publishes_the_robot_and_its_frames(node_process, 
 
     # A malformed robot_description is refused in one line; a new robot replaces the old one.
     refused = run("ros2", "param", "set", "/robot_state_publisher", "robot_description", "<r")
-    assert refused.stdout.startswith("Setting parameter failed: Unable to initialize urdf::model")
+    assert refused.stderr.startswith("Setting parameter failed: Unable to initialize urdf::model")
     tiny = '<robot name="tiny"><link name="base_link"/></robot>'
     replaced = run("ros2", "param", "set", "/robot_state_publisher", "robot_description", tiny)
     assert replaced.stdout == "Set parameter successful\n"
