@@ -86,10 +86,6 @@ def expanded(model: str) -> str:
     ).stdout
 
 
-def have_rviz2() -> bool:
-    return run("ros2", "pkg", "prefix", "rviz2").returncode == 0
-
-
 def stop(process: NodeProcess) -> None:
     assert process.interrupt() in (0, 130)
     assert "Traceback" not in process.output, process.output[-4000:]
@@ -99,8 +95,6 @@ def stop(process: NodeProcess) -> None:
 def test_display_launch_publishes_the_model_and_a_frame_for_every_link(
     model, node_process, executor
 ):
-    if not have_rviz2():
-        pytest.skip("display.launch.py starts rviz2, which this checkout does not have yet")
     robot = urdf.parse(expanded(model))
     frames = Frames(executor)
     launch = node_process(
