@@ -24,7 +24,7 @@ from helpers import BIN, TIMEOUT, ok, run
 
 from ros_tutorials_turtlesim.canvas import png_bytes
 from ros_tutorials_turtlesim.simulation import DEFAULT_PEN
-from ros_tutorials_web.viewer import Guard, greeting
+from ros_tutorials_web.guard import Guard, greeting
 
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
 CANVAS = "/turtlesim/_canvas/compressed"
