@@ -9,6 +9,7 @@ urdf_tutorial_r2d2 demo_launch.py`). What they publish is checked: the robot on
 from __future__ import annotations
 
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -29,6 +30,9 @@ ROOT = Path(__file__).resolve().parents[1]
 MODELS = ROOT / "urdf_tutorial" / "urdf"
 R2D2 = DATA / "urdf"
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
+# A terminal where `source .venv/bin/activate` was run: xacro on PATH, as the launch file's
+# Command(['xacro ', ...]) needs it (a ROS installation's setup.bash puts it there).
+ACTIVATED = {**HEADLESS, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"}
 XACRO = str(Path(sys.executable).parent / "xacro")
 # The pages' commands: (model:=..., the joint_states publisher's node shows the sliders).
 PAGES = [
@@ -87,7 +91,11 @@ def expanded(model: str) -> str:
 
 
 def stop(process: NodeProcess) -> None:
-    assert process.interrupt() in (0, 130)
+    """Ctrl-C: the launch ends with its nodes, none with a traceback. Status 1 only where
+    rviz2 died (a checkout without the 3D view, whose rviz2 says so in one line)."""
+    code = process.interrupt()
+    rviz2_died = "[ERROR] [rviz2-3]: process has died" in process.output
+    assert code in ((0, 1, 130) if rviz2_died else (0, 130)), process.output[-4000:]
     assert "Traceback" not in process.output, process.output[-4000:]
 
 
@@ -103,7 +111,7 @@ def test_display_launch_publishes_the_model_and_a_frame_for_every_link(
         "urdf_tutorial",
         "display.launch.py",
         f"model:={model}",
-        env=HEADLESS,
+        env=ACTIVATED,
     )
     try:
         frames.until(lambda: frames.description is not None, "/robot_description")
