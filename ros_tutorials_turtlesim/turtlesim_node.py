@@ -79,6 +79,10 @@ DEFAULT_BACKGROUND = (69, 86, 255)  # 0x45, 0x56, 0xff
 FLOAT32_MAX = 3.4028234663852886e38
 REPAINT_HZ = 30
 CANVAS_HZ = 20  # the most frames a second on ~/_canvas/compressed
+# A frame at least this often while subscribed, changed or not: a frame published as a reader
+# joins can be lost (the writer matched it before it matched the writer), and an idle turtle
+# would otherwise leave the reader with none.
+CANVAS_KEYFRAME = 1.0  # s
 CANVAS_FORMAT = "png"  # lossless: a thin trail stays sharp (2 ms to encode, 5-20 kB)
 # A turtle's name becomes part of its topic names: relative ROS name tokens, '/'-separated.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*")
@@ -378,11 +382,13 @@ class TurtlesimNode(Node):
                 self._publish_canvas(now)
 
     def _publish_canvas(self, now: float) -> None:
-        """A frame on ~/_canvas/compressed if the canvas changed, or a subscriber joined."""
+        """A frame on ~/_canvas/compressed if the canvas changed, a subscriber joined, or
+        CANVAS_KEYFRAME has passed since the last."""
         subscribers = self.canvas_publisher.get_subscription_count()
         joined = subscribers > self._canvas_subscribers
         self._canvas_subscribers = subscribers
-        if not subscribers or (self._published == self._changes and not joined):
+        due = now - self._last_frame >= CANVAS_KEYFRAME
+        if not subscribers or (self._published == self._changes and not joined and not due):
             return
         turtles = [entry.turtle for entry in self.turtles.values()]
         image = CompressedImage(format=CANVAS_FORMAT)

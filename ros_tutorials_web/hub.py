@@ -23,11 +23,14 @@ Using it for another tool's page (a 3D view's stream of tf, say)::
 
     hub = Hub(loop, node.request, start=node.start, stop=node.stop, always={"graph"})
     # the ROS side, on its thread:       hub.from_ros(hub.offer, "tf:world", payload)
-    # a WebSocket route, on the loop:
-    tab = Tab(ws); hub.add(tab); sender = asyncio.create_task(tab.send())
-    hub.want(tab, "tf:world")            # first tab: node.start("tf:world") on the ROS thread
-    ...                                  # the tab's messages: hub.want / hub.drop
-    finally: sender.cancel(); hub.remove(tab)   # drops its keys: the last one stops them
+    # a WebSocket route, on the loop: the tab wants "tf:world" from the start (the first
+    # tab: node.start("tf:world") on the ROS thread), its messages go to on_text (which may
+    # hub.want / hub.drop more keys); when it goes, the last tab's keys are stopped.
+    async def stream(request):
+        ws = web.WebSocketResponse(heartbeat=20, max_msg_size=64 * 1024)
+        await ws.prepare(request)
+        await hub.session(ws, ["tf:world"], on_text)
+        return ws
 
 A payload is a str (a WebSocket text frame, JSON by convention with a ``type``) or bytes (a
 binary frame).
@@ -37,12 +40,13 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import inspect
 import json
 from collections import deque
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from aiohttp import web
+from aiohttp import WSMsgType, web
 
 LIST_KEEP = 1000  # entries of a list stream (a log) kept for a tab, and for tabs to come
 
@@ -180,6 +184,43 @@ class Hub:
         for key in list(tab.wants):
             self.drop(tab, key)
         self.tabs.discard(tab)
+
+    async def session(
+        self,
+        ws: web.WebSocketResponse,
+        keys: Iterable[str],
+        on_text: Callable[[Tab, str], Any] = lambda tab, text: None,
+    ) -> None:
+        """A prepared WebSocket's life as a tab: it wants ``keys`` from the start; each text
+        message goes to on_text(tab, text) (an awaitable it returns runs as a task of the
+        tab's, cancelled when the tab goes); when the tab goes, its keys are dropped. A tab
+        whose sending fails is closed (its page then says so and reconnects), never left
+        open and silent."""
+        tab = Tab(ws)
+        self.add(tab, keys)
+        sender = asyncio.create_task(tab.send())
+
+        def sent(task: asyncio.Task) -> None:
+            if not task.cancelled() and task.exception() is not None:
+                self.loop.create_task(ws.close())
+
+        sender.add_done_callback(sent)
+        tasks: set[asyncio.Task] = set()
+        try:
+            async for message in ws:
+                if message.type != WSMsgType.TEXT:
+                    continue
+                answer = on_text(tab, message.data)
+                if inspect.isawaitable(answer):
+                    task = asyncio.ensure_future(answer)
+                    tasks.add(task)
+                    task.add_done_callback(tasks.discard)
+        finally:
+            for task in (sender, *tasks):
+                task.cancel()
+            self.remove(tab)
+            with contextlib.suppress(asyncio.CancelledError, ConnectionError):
+                await sender
 
     async def close(self, _app: Any = None) -> None:
         """Close every tab's WebSocket (an aiohttp ``on_shutdown`` handler)."""

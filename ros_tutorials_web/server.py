@@ -21,7 +21,6 @@ Another tool's server (a 3D view, a sliders page) is run the same way::
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import signal
 import socket
 import threading
@@ -52,9 +51,17 @@ async def serve(sock: socket.socket, guard: Guard, make: Make, exposed: str, pat
     spinning.set()
 
     def spin() -> None:
-        with contextlib.suppress(ExternalShutdownException):
-            while spinning.is_set():
+        told: set[str] = set()
+        while spinning.is_set():
+            try:
                 executor.spin_once(timeout_sec=0.2)
+            except ExternalShutdownException:
+                return
+            except Exception as error:  # one callback's failure: the node goes on
+                kind = type(error).__name__
+                if kind not in told:  # once per kind: a callback failing at 30 Hz is no flood
+                    told.add(kind)
+                    node.get_logger().error(f"{kind} in a callback (the node goes on): {error}")
 
     thread = threading.Thread(target=spin, name="ros", daemon=True)
     thread.start()

@@ -58,7 +58,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from aiohttp import WSMsgType, web
+from aiohttp import web
 from rclpy.serialization import deserialize_message
 
 from ros2cmd.messages import message_to_ordered, message_to_yaml
@@ -247,18 +247,7 @@ def make_app(
     async def websocket(request: web.Request) -> web.WebSocketResponse:
         ws = web.WebSocketResponse(heartbeat=20, max_msg_size=64 * 1024)
         await ws.prepare(request)
-        tab = Tab(ws)
-        hub.add(tab, (GRAPH, LOG, PICTURES))
-        sender = asyncio.create_task(tab.send())
-        try:
-            async for message in ws:
-                if message.type == WSMsgType.TEXT:
-                    asked(hub, tab, message.data)
-        finally:
-            sender.cancel()
-            hub.remove(tab)
-            with contextlib.suppress(asyncio.CancelledError, ConnectionError):
-                await sender
+        await hub.session(ws, (GRAPH, LOG, PICTURES), lambda tab, text: asked(hub, tab, text))
         return ws
 
     app = web.Application(middlewares=[door.middleware(say)])

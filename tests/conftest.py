@@ -77,6 +77,25 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         items.insert(min(position * chunk, len(items)), item)
 
 
+# The start of the reason of a skip for a missing browser or display (tests/browser.py).
+NEEDS_BROWSER_OR_DISPLAY = "needs a browser or display:"
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> Iterator[None]:
+    """With CI=true, a test skipped for a missing browser or display fails instead: CI
+    (`.ci/run`) installs them, and a browser test that does not run tests nothing."""
+    outcome = yield
+    report = outcome.get_result()
+    if os.environ.get("CI", "").lower() != "true" or not report.skipped:
+        return
+    reason = report.longrepr[2] if isinstance(report.longrepr, tuple) else str(report.longrepr)
+    if NEEDS_BROWSER_OR_DISPLAY in reason:
+        report.outcome = "failed"
+        reason = reason.removeprefix("Skipped: ")
+        report.longrepr = f"CI=true, and this test would be skipped: {reason}"
+
+
 @pytest.fixture(scope="session", autouse=True)
 def ros_domain(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     """This session's own ROS_DOMAIN_ID, set in os.environ for rclpy and for child processes."""

@@ -36,7 +36,7 @@ def _pixels(xwd: bytes) -> tuple[int, int, callable]:
 
 @pytest.mark.skipif(
     any(shutil.which(tool) is None for tool in TOOLS),
-    reason="needs Xvfb, xmessage and xwd (apt: xvfb x11-utils x11-apps)",
+    reason="needs a browser or display: Xvfb, xmessage and xwd (apt: xvfb x11-utils x11-apps)",
 )
 def test_a_window_that_covered_turtlesim_leaves_nothing_behind(tmp_path: Path, ros_domain):
     display = f":{100 + ros_domain}"

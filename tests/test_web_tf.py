@@ -20,13 +20,14 @@ from typing import Any
 import aiohttp
 import pytest
 import rclpy
+from browser import chromium, until
 from geometry_msgs.msg import TransformStamped
 from helpers import BIN, TIMEOUT
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile
-from test_web_viewer import CANVAS, HEADLESS, LINK, Tab, _browser, at, with_tab
+from test_web_viewer import CANVAS, HEADLESS, LINK, Tab, at, with_tab
 from tf2_msgs.msg import TFMessage
 
 from ros_tutorials_web.frames import MAX_FRAMES, parse_frames, tree_order
@@ -459,24 +460,10 @@ class TestInBrowser:
     """The page in headless Chromium: the demo's axes on turtlesim's canvas."""
 
     def test_axes_on_turtlesim(self, own_domain, node_process, spinning, tmp_path) -> None:
-        chromium, driver_path = _browser()
-        webdriver = pytest.importorskip("selenium.webdriver")
-        from selenium.webdriver.chrome.service import Service
-
         sim = node_process(str(BIN / "ros2"), "run", "turtlesim", "turtlesim_node", env=HEADLESS)
         sim.wait_for_text("Spawning turtle [turtle1]")
         _, link = start_viewer(node_process)
         broadcast_demo(spinning)
-        options = webdriver.ChromeOptions()
-        options.binary_location = chromium
-        for argument in (
-            "--headless=new",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--window-size=1400,1100",
-        ):
-            options.add_argument(argument)
-        browser = webdriver.Chrome(options=options, service=Service(driver_path))
         # Red (x axis) pixels on the overlay of turtlesim's canvas, around turtle's origin.
         red_near = """
             const [topic, px, py] = arguments;
@@ -490,17 +477,15 @@ class TestInBrowser:
               if (box[i] > 180 && box[i + 1] < 80 && box[i + 2] < 80 && box[i + 3] > 0) n++;
             return n;
         """
-        try:
+        with chromium(1400, 1100) as browser:
             browser.get(link)
             # turtle at (3, 4) m: 45 px a metre, y up from the canvas's last row.
             at_pixel = (3 * 45, 499 - 4 * 45)
-            deadline = time.monotonic() + TIMEOUT
-            while browser.execute_script(red_near, CANVAS, *at_pixel) <= 10:
-                assert time.monotonic() < deadline, "turtle's x axis never drawn on the canvas"
-                time.sleep(0.1)
+            until(
+                lambda: browser.execute_script(red_near, CANVAS, *at_pixel) > 10,
+                "turtle's x axis drawn on the canvas",
+            )
             tree = browser.find_element("id", "tf-tree").text
             assert "turtle" in tree and "carrot" in tree and "static" in tree
             assert not browser.find_element("id", "tf-on-canvas").get_attribute("hidden")
             browser.save_screenshot(str(tmp_path / "web_viewer_tf.png"))
-        finally:
-            browser.quit()

@@ -10,16 +10,17 @@ import asyncio
 import io
 import json
 import re
-import shutil
 import socket
 import struct
 import time
+import urllib.request
 from collections.abc import Callable
 from typing import Any
 
 import aiohttp
 import pygame
 import pytest
+from browser import chromium, text_of, until
 from helpers import BIN, TIMEOUT, ok, run
 
 from ros_tutorials_turtlesim.canvas import png_bytes
@@ -176,6 +177,21 @@ class TestViewer:
             later, _ = await tab.until(more_trail, "a frame with the new trail")
             assert later["count"] > header["count"]
             assert later["stamp"] > header["stamp"]
+
+        with_tab(viewer, check)
+
+    def test_an_idle_canvas_is_sent_again(self, viewer: str) -> None:
+        """Nothing drawn: turtlesim still sends its canvas again (about once a second), so a
+        first frame lost as the reader joined is made good."""
+
+        async def check(tab: Tab) -> None:
+            header, _ = await tab.until(canvas_frame, "a first canvas frame")
+
+            def next_frame(item: Any) -> Any:
+                frame = canvas_frame(item)
+                return frame if frame and frame[0]["count"] > header["count"] else None
+
+            await tab.until(next_frame, "the idle canvas sent again")
 
         with_tab(viewer, check)
 
@@ -472,59 +488,58 @@ class TestBadInput:
         assert "\n" not in line
 
 
-def _browser() -> tuple[str, str]:
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    driver = shutil.which("chromedriver")
-    if not chromium or not driver:
-        pytest.skip("no headless browser here: needs Debian's chromium and chromium-driver")
-    return chromium, driver
-
-
 class TestInBrowser:
-    """The page in headless Chromium: the canvas shows the turtle's trail after a pub."""
+    """The page in headless Chromium, opened as a person opens the printed link."""
 
     def test_canvas_shows_the_trail(self, viewer: str, tmp_path) -> None:
-        chromium, driver_path = _browser()
-        webdriver = pytest.importorskip("selenium.webdriver")
-        from selenium.webdriver.chrome.service import Service
-
-        options = webdriver.ChromeOptions()
-        options.binary_location = chromium
-        for argument in (
-            "--headless=new",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--window-size=1400,1000",
-        ):
-            options.add_argument(argument)
-        browser = webdriver.Chrome(options=options, service=Service(driver_path))
-        # The pen's pixels in the canvas the page drew (read back from the page).
-        count_trail = """
-            const [topic, r, g, b] = arguments;
-            const canvas = document.querySelector(`canvas[data-topic="${topic}"]`);
-            if (!canvas || !window.viewerState.frames[topic]) return -1;
-            const box = [0, 0, canvas.width, canvas.height];
-            const data = canvas.getContext("2d").getImageData(...box).data;
-            let n = 0;
-            for (let i = 0; i < data.length; i += 4)
-              if (data[i] === r && data[i + 1] === g && data[i + 2] === b) n++;
-            return n;
-        """
-        try:
-            browser.set_script_timeout(TIMEOUT)
+        with chromium() as browser:
             browser.get(viewer)
-            deadline = time.monotonic() + TIMEOUT
-            while (before := browser.execute_script(count_trail, CANVAS, *DEFAULT_PEN)) < 0:
-                assert time.monotonic() < deadline, "the page never drew a canvas frame"
-                time.sleep(0.1)
+            before = until(lambda: trail(browser), "a canvas frame drawn")
             drive()
-            deadline = time.monotonic() + TIMEOUT
-            while (
-                after := browser.execute_script(count_trail, CANVAS, *DEFAULT_PEN)
-            ) <= before + 100:
-                assert time.monotonic() < deadline, f"no trail drawn: {before} -> {after} pixels"
-                time.sleep(0.1)
+            until(lambda: trail(browser) > before + 100, "the trail drawn after a pub")
             assert "live" in browser.find_element("id", "status").text
             browser.save_screenshot(str(tmp_path / "web_viewer.png"))
-        finally:
-            browser.quit()
+
+
+# The pen's pixels in the canvas the page drew (read back from the page), or 0 before the
+# first frame is drawn.
+COUNT_TRAIL = """
+    const [topic, r, g, b] = arguments;
+    const canvas = document.querySelector(`canvas[data-topic="${topic}"]`);
+    if (!canvas || !window.viewerState.frames[topic]) return 0;
+    const box = [0, 0, canvas.width, canvas.height];
+    const data = canvas.getContext("2d").getImageData(...box).data;
+    let n = 1;  // drawn: at least 1
+    for (let i = 0; i < data.length; i += 4)
+      if (data[i] === r && data[i + 1] === g && data[i + 2] === b) n++;
+    return n;
+"""
+
+
+def trail(browser: Any) -> int:
+    return browser.execute_script(COUNT_TRAIL, CANVAS, *DEFAULT_PEN)
+
+
+def test_a_page_opened_later_shows_turtlesim_started_with_the_viewer(
+    own_domain, node_process
+) -> None:
+    """turtlesim and the viewer started at once, the link opened once both run: the page
+    shows turtlesim in the graph and its idle canvas (a frame published as the viewer's
+    reader joined may be lost; turtlesim sends one again within a second)."""
+    sim = node_process(str(BIN / "ros2"), "run", "turtlesim", "turtlesim_node", env=HEADLESS)
+    process = node_process(str(BIN / "ros2"), "run", "ros_tutorials_web", "viewer", "--port", "0")
+    sim.wait_for_text("Spawning turtle [turtle1]")
+    link = re.search(LINK, process.wait_for_text("in a browser")[-1]).group(1)
+    graph = at(link, "api/graph.svg")
+
+    def graph_lists_turtlesim() -> bool:
+        with urllib.request.urlopen(graph, timeout=TIMEOUT) as answer:
+            return "/turtlesim" in answer.read().decode()
+
+    until(graph_lists_turtlesim, "turtlesim in /api/graph.svg")
+    with chromium() as browser:
+        browser.get(link)
+        until(lambda: "/turtlesim" in text_of(browser, "#graph"), "/turtlesim in the graph")
+        until(lambda: trail(browser), "turtlesim's canvas drawn")
+        assert browser.find_element("id", "no-pictures").is_displayed() is False
+        assert browser.find_element("id", "status").text == "live"

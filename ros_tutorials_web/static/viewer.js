@@ -106,7 +106,16 @@ async function drawPicture(picture) {
   picture.busy = false;
 }
 
-function forgetPictures(pictures) {
+// The graph's picture topics: each has its figure from the start (its first frame may come
+// later: turtlesim sends one when a reader joins, then on each change and every second), and
+// a figure whose topic has gone is removed.
+function followPictures(pictures) {
+  for (const topic of pictures) {
+    if (!state.pictures[topic]) {
+      const picture = (state.pictures[topic] = addPicture(topic));
+      picture.caption.textContent = `${topic} (waiting for its first frame\u2026)`;
+    }
+  }
   for (const topic of Object.keys(state.pictures)) {
     if (!pictures.includes(topic)) {
       state.pictures[topic].canvas.closest("figure").remove();
@@ -121,7 +130,7 @@ function forgetPictures(pictures) {
 
 function showGraph(message) {
   $("graph").innerHTML = message.svg; // made by the viewer from names it escaped
-  forgetPictures(message.pictures);
+  followPictures(message.pictures);
   const select = $("topic-select");
   const chosen = select.value;
   select.replaceChildren(new Option("choose a topic\u2026", ""));
