@@ -11,14 +11,13 @@ from __future__ import annotations
 import json
 import math
 import re
-import shutil
-import time
 import urllib.error
 import urllib.request
 from pathlib import Path
 
 import pytest
-from helpers import TIMEOUT, script, spin_until
+from browser import chromium, until
+from helpers import script, spin_until
 from rclpy.node import Node
 from sensor_msgs.msg import JointState
 
@@ -75,39 +74,6 @@ def test_the_guard_refuses_what_is_not_this_runs_page(gui):
     assert status(f"http://127.0.0.1:{port}/?token=x{token}") == 403
 
 
-def _browser():
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    driver = shutil.which("chromedriver")
-    if not chromium or not driver:
-        pytest.skip("no headless browser here: needs Debian's chromium and chromium-driver")
-    webdriver = pytest.importorskip("selenium.webdriver")
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = chromium
-    for argument in (
-        "--headless=new",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        "--no-first-run",
-        "--window-size=1100,700",
-    ):
-        options.add_argument(argument)
-    return webdriver.Chrome(options=options, service=Service(driver))
-
-
-def until(check, what: str):
-    deadline = time.monotonic() + TIMEOUT
-    while not (found := check()):
-        if time.monotonic() > deadline:
-            pytest.fail(f"timed out waiting for {what}")
-        time.sleep(0.1)
-    return found
-
-
 def test_the_sliders_move_the_joints(gui, executor, tmp_path):
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
@@ -123,8 +89,7 @@ def test_the_sliders_move_the_joints(gui, executor, tmp_path):
             return None
         return dict(zip(states[-1].name, states[-1].position, strict=True)).get(joint)
 
-    browser = _browser()
-    try:
+    with chromium(1100, 700) as browser:
         browser.get(link)
         until(lambda: len(browser.find_elements(By.CSS_SELECTOR, ".joint")) == 8, "8 sliders")
         names = [
@@ -178,5 +143,3 @@ def test_the_sliders_move_the_joints(gui, executor, tmp_path):
         )
         spin_until(executor, lambda: len(states) > 3, what="more /joint_states")
         assert position("gripper_extension") == before
-    finally:
-        browser.quit()
