@@ -87,10 +87,6 @@ MISSING_TOOLS: dict[str, str] = {
     "rqt_plot": "plot a topic's numeric field in a browser with `ros2 run ros_tutorials_web "
     "viewer`, or watch values with `ros2 topic echo TOPIC`",
     "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
-    "rviz": "a ROS 2 installation has it as rviz2; to watch turtlesim, the graph and topics "
-    "without one: `ros2 run ros_tutorials_web viewer`",
-    "rviz2": "it is not on PyPI; to watch turtlesim, the graph and topics: "
-    "`ros2 run ros_tutorials_web viewer`",
 }
 
 

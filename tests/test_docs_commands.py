@@ -139,6 +139,8 @@ CHECKS: dict[tuple[str, str], Check] = {
     ("docs/actions.md", "action_client 50"): Check(scene="action_server", fails=True),
     # command-line-tools.md
     ("docs/command-line-tools.md", "ros2 -h"): Check(),
+    # rviz-in-the-browser.md
+    ("docs/rviz-in-the-browser.md", "rviz2 -d robot.rviz"): Check(fails=True),
     (
         "docs/command-line-tools.md",
         "ros2 node info /turtlesim          # or: rosnode info /turtlesim",

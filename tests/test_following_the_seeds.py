@@ -322,8 +322,6 @@ def test_rosrun_refuses_malformed_ros_arguments_in_one_line_before_the_node_star
         (("roscp", "ros_tutorials_topic", "Nope.srv", "."), "ros_tutorials_topic has no file"),
         (("roscp", "nope", "a", "b"), "unknown package 'nope'"),
         (("rqt",), "call services with `ros2 service call` (`rosservice call`)"),
-        (("rviz",), "`ros2 run ros_tutorials_web viewer`"),
-        (("rviz2",), "`ros2 run ros_tutorials_web viewer`"),
         (("roswtf",), "here: ros2 doctor"),
     ],
 )

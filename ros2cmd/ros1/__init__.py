@@ -11,7 +11,7 @@ tool: the same functions run, with ROS 1's arguments and output where ROS 1 diff
     rqt.py                rqt_graph, rqt_console, rqt_logger_level, roslaunch-logs: on
                           graph_view.py, console.py, log.py
     roscore.py            ROS 2 has no master: says what replaces it, waits for Ctrl-C
-    shell.py              roscd, rosed, roscp, catkin_*, rqt, rviz, roswtf: what to type instead
+    shell.py              roscd, rosed, roscp, catkin_*, rqt, roswtf: what to type instead
 
 `roslaunch` is the launcher's own command (`python -m launcher`, launcher/__main__.py); `ros2
 launch` is the front-end onto it. Nothing here is imported by the ros2 verbs.

@@ -192,8 +192,6 @@ def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
 
 
 rqt = _missing_gui_tool("rqt")
-rviz = _missing_gui_tool("rviz")
-rviz2 = _missing_gui_tool("rviz2")
 
 
 def roswtf(argv: Sequence[str] | None = None) -> int:
