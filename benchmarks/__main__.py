@@ -2,7 +2,7 @@
 
 python -m benchmarks [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
-    tf2
+    tf2 rviz
     completion
     (default: all)
 """
@@ -24,6 +24,7 @@ from benchmarks import (
     graph,
     launch,
     memory,
+    rviz,
     service,
     setup_time,
     tf2,
@@ -48,6 +49,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "daemon": [daemon.startup, daemon.lists],
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
+    "rviz": [rviz.view_figures],
     "workspace": [workspace.build_times],
     "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
     "completion": [completion.answer_times],

@@ -73,19 +73,9 @@ EXECUTABLE_ALIASES: dict[tuple[str, str], str] = {
     ("my_package", "add_two_ints_server"): "workshop_add_two_ints_server",
     ("my_package", "add_two_ints_client"): "workshop_add_two_ints_client",
 }
-# ROS 1 GUI tools the seeds run (`rosrun rqt_bag rqt_bag`) that this project does not have,
-# and what does their job here.
+# ROS 1 GUI tools the seeds name that this project does not have, and what does their job
+# here (rqt's plugins are in the browser: `rqt`, `rqt_publisher`, ..., ros_tutorials_web).
 MISSING_TOOLS: dict[str, str] = {
-    "rqt": "call services with `ros2 service call` (`rosservice call`), publish with "
-    "`ros2 topic pub` (`rostopic pub`)",
-    "rqt_publisher": "publish with `ros2 topic pub TOPIC TYPE VALUES -r RATE` (`rostopic pub`)",
-    "rqt_service_caller": "call services with `ros2 service call SERVICE TYPE VALUES` "
-    "(`rosservice call`)",
-    "rqt_bag": "record, inspect and replay with `ros2 bag record`, `ros2 bag info`, "
-    "`ros2 bag play` (`rosbag record`, `rosbag info`, `rosbag play`)",
-    "rqt_reconfigure": "change parameters with `ros2 param set NODE PARAM VALUE` (`rosparam set`)",
-    "rqt_plot": "plot a topic's numeric field in a browser with `ros2 run ros_tutorials_web "
-    "viewer`, or watch values with `ros2 topic echo TOPIC`",
     "rqt_topic": "use `ros2 topic list`, `ros2 topic echo`, `ros2 topic hz`",
 }
 

@@ -64,6 +64,10 @@ DEFAULT_PORT = 8080  # when free; else any free port (a port given with --port m
 WILDCARDS = ("0.0.0.0", "::")  # every address of the machine
 LOOPBACK_NAMES = ("localhost", "127.0.0.1", "::1")
 EXPOSED_VIEWER = "watch the graph, /rosout and every topic (the viewer publishes nothing)"
+EXPOSED_TOOLS = (
+    "watch the graph, /rosout and every topic, and call services, publish and set parameters "
+    "with the rqt tools"
+)
 
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
@@ -147,9 +151,11 @@ def listen(host: str, port: int | None, default_port: int = DEFAULT_PORT) -> soc
 
 
 def link(host: str, port: int, token: str, path: str = "/") -> str:
-    """The address a browser opens: the page at ``path``, with this run's token."""
+    """The address a browser opens: the page at ``path`` (``/rqt#plot``: a fragment kept
+    after the query), with this run's token."""
     where = f"[{host}]" if ":" in host else host
-    return f"http://{where}:{port}{path}?token={token}"
+    page, hash_, fragment = path.partition("#")
+    return f"http://{where}:{port}{page}?token={token}{hash_}{fragment}"
 
 
 def is_loopback(address: str) -> bool:

@@ -14,7 +14,9 @@ sensor_msgs/msg/CompressedImage topic in fact), the graph as rqt_graph draws it,
 log with level and node filters, any topic's newest message with a plot of one of its
 numbers over time, and the tf2 frames: their tree, and each frame's axes drawn on turtlesim's
 canvas (fixed frame ``world``) or on a grid. The viewer is an ordinary ROS 2 node
-(``web_viewer``, watch.py) and only subscribes: it changes nothing in the graph.
+(``web_viewer``, watch.py); its own page only subscribes. The same server serves rqt's
+plugins at ``/rqt`` (rqt.py: call, publish, set parameters and logger levels, plot, bag),
+which the ``rqt`` commands open (commands.py).
 
 The web side is aiohttp (HTTP and WebSockets on asyncio); the page is static files in
 static/. Each browser tab gets, per stream, only the newest value it has not sent yet: a
@@ -26,7 +28,7 @@ the page's own files needs the token; a request whose ``Host`` or ``Origin`` is 
 viewer's own is refused with a 403 and the reason. ``--allow-origin`` names a cloud
 editor's forwarded port; ``--host 0.0.0.0`` (or ``::``) listens on every address.
 
-HTTP: ``/`` the page, ``/static/...`` its files, ``/ws`` the WebSocket,
+HTTP: ``/`` the page, ``/rqt`` rqt's, ``/static/...`` their files, ``/ws`` the WebSocket,
 ``/api/graph.svg`` the graph picture, ``/api/topics`` topics and types (JSON),
 ``/api/log`` the newest /rosout entries (JSON).
 
@@ -41,7 +43,8 @@ binary frames are pictures: a 4-byte big-endian length, that many bytes of JSON 
 ``mime``, ``stamp``, ``count``), then the image file's bytes. Browser to server: JSON
 ``{"watch": TOPIC}`` (or ``null``) chooses the topic whose messages this tab gets;
 ``{"tf": {"fixed": FRAME}}`` (``""``: the viewer chooses, ``world`` if there is one) asks for
-the frames, ``{"tf": null}`` stops them.
+the frames, ``{"tf": null}`` stops them; rqt's messages (``publish``, ``plot``, ``play``) are
+in rqt.py.
 """
 
 from __future__ import annotations
@@ -54,6 +57,7 @@ import json
 import math
 import struct
 import sys
+import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
@@ -67,6 +71,7 @@ from ros_tutorials_web import guard, server
 from ros_tutorials_web.frames import AUTO, MAX_NAME
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
+from ros_tutorials_web.rqt import Ros, Tools
 from ros_tutorials_web.watch import Feed, LogFeed, Watcher
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -171,16 +176,19 @@ class Streams:
         self.hub.offer(PICTURES, picture_frame(header, bytes(msg.data)), "picture:" + feed.topic)
 
     def _topic(self, feed: Feed, msg: Any) -> None:
-        text = message_to_yaml(msg, truncate_length=TRUNCATE)
+        yaml_text = message_to_yaml(msg, truncate_length=TRUNCATE)
         payload = {
             "type": "topic",
             "topic": feed.topic,
             "type_name": feed.type_name,
             "count": feed.count,
-            "yaml": text[:YAML_LIMIT],
+            "yaml": yaml_text[:YAML_LIMIT],
             "numbers": numbers(message_to_ordered(msg, truncate_length=TRUNCATE)),
         }
-        self.hub.offer("topic:" + feed.topic, json.dumps(payload), "topic")
+        text = json.dumps(payload)
+        self.hub.offer("topic:" + feed.topic, text, "topic")
+        payload["time"] = time.time()  # when it came: a plot's time axis
+        self.hub.offer("plot:" + feed.topic, json.dumps(payload), "plot:" + feed.topic)
 
 
 def start(watcher: Watcher, key: str) -> None:
@@ -188,7 +196,7 @@ def start(watcher: Watcher, key: str) -> None:
     kind, _, name = key.partition(":")
     if kind == PICTURES:
         watcher.set_viewers(1)
-    elif kind == "topic":
+    elif kind in ("topic", "plot"):
         watcher.watch(name, 1)
     elif kind == "tf":
         watcher.frames.want(name, 1)
@@ -199,7 +207,7 @@ def stop(watcher: Watcher, key: str) -> None:
     kind, _, name = key.partition(":")
     if kind == PICTURES:
         watcher.set_viewers(0)
-    elif kind == "topic":
+    elif kind in ("topic", "plot"):
         watcher.watch(name, -1)
     elif kind == "tf":
         watcher.frames.want(name, -1)
@@ -214,23 +222,33 @@ def switch(hub: Hub, tab: Tab, prefix: str, name: str | None) -> None:
         hub.want(tab, prefix + name)
 
 
-def asked(hub: Hub, tab: Tab, text: str) -> None:
-    """A tab's message: ``{"watch": "/topic" or null}`` or ``{"tf": {"fixed": FRAME} or
-    null}``; anything else is ignored (a tab's bug, not ours)."""
-    with contextlib.suppress(ValueError, TypeError, AttributeError, KeyError):
+def asked(hub: Hub, tools: Tools, tab: Tab, text: str) -> Any:
+    """A tab's message: ``{"watch": "/topic" or null}``, ``{"tf": {"fixed": FRAME} or
+    null}``, or one of the rqt tools' (rqt.py; an awaitable to run as the tab's task);
+    anything else is ignored (a tab's bug, not ours)."""
+    try:
         message = json.loads(text)
+    except ValueError:
+        return None
+    if not isinstance(message, dict):
+        return None
+    with contextlib.suppress(TypeError, AttributeError, KeyError):
         if "tf" in message:
             fixed = None if message["tf"] is None else message["tf"].get("fixed") or AUTO
             if fixed is None or (isinstance(fixed, str) and len(fixed) <= MAX_NAME):
                 switch(hub, tab, "tf:", fixed)
-            return
-        topic = message["watch"]
-        if topic is None or (isinstance(topic, str) and topic.startswith("/")):
-            switch(hub, tab, "topic:", topic)
+            return None
+        if "watch" in message:
+            topic = message["watch"]
+            if topic is None or (isinstance(topic, str) and topic.startswith("/")):
+                switch(hub, tab, "topic:", topic)
+            return None
+        return tools.asked(tab, message)
+    return None
 
 
 def make_app(
-    hub: Hub, streams: Streams, door: Guard, say: Callable[[str], None]
+    hub: Hub, streams: Streams, tools: Tools, door: Guard, say: Callable[[str], None]
 ) -> web.Application:
     async def page(_request: web.Request) -> web.FileResponse:
         return web.FileResponse(STATIC / "index.html")
@@ -247,7 +265,9 @@ def make_app(
     async def websocket(request: web.Request) -> web.WebSocketResponse:
         ws = web.WebSocketResponse(heartbeat=20, max_msg_size=64 * 1024)
         await ws.prepare(request)
-        await hub.session(ws, (GRAPH, LOG, PICTURES), lambda tab, text: asked(hub, tab, text))
+        await hub.session(
+            ws, (GRAPH, LOG, PICTURES), lambda tab, text: asked(hub, tools, tab, text)
+        )
         return ws
 
     app = web.Application(middlewares=[door.middleware(say)])
@@ -257,13 +277,26 @@ def make_app(
     app.router.add_get("/api/graph.svg", graph_svg)
     app.router.add_get("/api/topics", topics)
     app.router.add_get("/api/log", log)
+    tools.add_routes(app, door)
     app.router.add_static("/static/", STATIC)
     return app
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
-    args = parse_args(user_args(argv))
+    return serve(argv, parse_args(user_args(argv)))
+
+
+def serve(
+    argv: Sequence[str],
+    args: argparse.Namespace,
+    path: str = "/",
+    node_name: str = "web_viewer",
+    on_listen: Callable[[str], None] | None = None,
+) -> int:
+    """Serve the viewer's pages (its own at ``/``, rqt's at ``/rqt``) with the options of
+    guard.add_arguments; the greeting's link opens ``path``; on_listen(link) is called once
+    the server listens (the rqt commands open a browser window with it)."""
     sock = guard.listen(args.host, args.port)  # before ROS starts: a taken port is one line
     door = Guard.for_socket(sock, args.host, args.allow_origins)
 
@@ -272,14 +305,24 @@ def main(argv: Sequence[str] | None = None) -> int:
         streams = Streams(hub)
         watcher = Watcher(
             streams.graph_from_ros, streams.feed_from_ros, streams.log_from_ros,
-            streams.tf_from_ros,
+            streams.tf_from_ros, name=node_name,
         )  # fmt: skip
         hub.ros = watcher.request
         hub.start = functools.partial(start, watcher)
         hub.stop = functools.partial(stop, watcher)
-        return watcher, make_app(hub, streams, door, watcher.get_logger().warning)
+        tools = Tools(Ros(watcher, watcher.request), hub, lambda: streams.topic_types)
+        app = make_app(hub, streams, tools, door, watcher.get_logger().warning)
+        if on_listen is not None:
+            address, port = sock.getsockname()[:2]
+            local = "127.0.0.1" if address in guard.WILDCARDS else address
+            app.on_startup.append(
+                lambda _app: loop.run_in_executor(
+                    None, on_listen, guard.link(local, port, door.token, path)
+                )
+            )
+        return watcher, app
 
-    return server.run(argv, sock, door, make, exposed=guard.EXPOSED_VIEWER)
+    return server.run(argv, sock, door, make, exposed=guard.EXPOSED_TOOLS, path=path)
 
 
 if __name__ == "__main__":

@@ -114,8 +114,9 @@ class Watcher(Node):
         on_feed: Callable[[Feed], None],
         on_log: Callable[[LogFeed], None],
         on_tf: Callable[[str, str], None],
+        name: str = "web_viewer",
     ) -> None:
-        super().__init__("web_viewer")
+        super().__init__(name)
         self._on_graph = on_graph
         self._on_feed = on_feed
         self._graph = NodeGraph(self)

@@ -10,7 +10,8 @@ display, as JSON text or, with bulk data, binary frames (a 4-byte big-endian len
 bytes of JSON, the data). Each tab gets the newest payload of each stream that it has not got
 yet: a slow tab misses updates, the server queues none. Browser to server, JSON:
 ``{"fixed": FRAME}`` (``""``: the view chooses), ``{"enable": [N, true|false]}``,
-``{"add": TOPIC}`` (a display for a topic of a type the view draws). Anything else is ignored.
+``{"add": TOPIC}`` (a display for a topic of a type the view draws), ``{"flow": true}`` and
+``{"ack": N}`` (flow control: ``Tab``). Anything else is ignored.
 """
 
 from __future__ import annotations
@@ -26,12 +27,55 @@ from typing import Any
 from aiohttp import WSMsgType, web
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 
-from ros_tutorials_web.viewer import Guard, Tab
+from ros_tutorials_web.viewer import Guard
 from rviz2.scene import Scene
 
 STATIC = Path(__file__).resolve().parent / "static"
 MAX_NAME = 256  # characters of a frame or topic name a page may send
 MESH_TYPES = {".stl": "model/stl", ".dae": "model/vnd.collada+xml"}
+IN_FLIGHT = 2  # bulk payloads sent to a page that asked for flow control, not yet drawn
+
+
+class Tab:
+    """One page's WebSocket: per stream, the newest payload not sent yet.
+
+    A page that says ``{"flow": true}`` acknowledges the binary frames (clouds, scans, maps,
+    images) it has drawn (``{"ack": N}``); it is then sent at most IN_FLIGHT of them ahead of
+    what it drew, so a page that draws slowly gets fresh data late, never a backlog of old
+    data in the socket's buffers. Text payloads (tf, markers, config) are small and go at
+    once."""
+
+    def __init__(self, ws: web.WebSocketResponse) -> None:
+        self.ws = ws
+        self.flow = False
+        self.in_flight = 0
+        self._pending: dict[str, str | bytes] = {}
+        self._ready = asyncio.Event()
+
+    def offer(self, stream: str, payload: str | bytes) -> None:
+        self._pending[stream] = payload  # replaces what the page has not taken yet
+        self._ready.set()
+
+    def acknowledge(self, count: int) -> None:
+        self.in_flight = max(0, self.in_flight - count)
+        self._ready.set()
+
+    async def send(self) -> None:
+        while not self.ws.closed:
+            await self._ready.wait()
+            self._ready.clear()
+            held = self.flow and self.in_flight >= IN_FLIGHT
+            for stream in list(self._pending):
+                payload = self._pending[stream]
+                if isinstance(payload, bytes) and held:
+                    continue  # waits, replaced by a newer one meanwhile, until the page drew
+                del self._pending[stream]
+                if isinstance(payload, bytes):
+                    self.in_flight += 1
+                    held = self.flow and self.in_flight >= IN_FLIGHT
+                    await self.ws.send_bytes(payload)
+                else:
+                    await self.ws.send_str(payload)
 
 
 class Hub:
@@ -99,9 +143,15 @@ def make_app(hub: Hub, scene: Scene, guard: Guard, say: Callable[[str], None]) -
         sender = asyncio.create_task(tab.send())
         try:
             async for message in ws:
-                if message.type == WSMsgType.TEXT:
-                    with contextlib.suppress(ValueError):
-                        ask(scene, json.loads(message.data))
+                if message.type != WSMsgType.TEXT:
+                    continue
+                with contextlib.suppress(ValueError):
+                    asked = json.loads(message.data)
+                    if isinstance(asked, dict) and asked.get("flow") is True:
+                        tab.flow = True
+                    if isinstance(asked, dict) and type(asked.get("ack")) is int:
+                        tab.acknowledge(asked["ack"])
+                    ask(scene, asked)
         finally:
             sender.cancel()
             hub.tabs.discard(tab)

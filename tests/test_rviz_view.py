@@ -365,6 +365,33 @@ class TestView:
         asyncio.run(check())
         process.wait_for_text("Refused GET /ws: Origin 'https://evil.example'")
 
+    def test_a_slow_page_gets_no_backlog_of_clouds(self, view) -> None:
+        """A page that asked for flow control is sent at most IN_FLIGHT clouds it has not
+        drawn (acknowledged); the markers' text keeps coming; an ack lets the next through."""
+        from rviz2.server import IN_FLIGHT
+
+        link, _ = view
+        counts = {"binary": 0, "text": 0}
+
+        def count(until: Callable[[dict], bool]) -> Callable[[Any], bool]:
+            def found(item: Any) -> bool:
+                counts["binary" if isinstance(item, tuple) else "text"] += 1
+                return until(counts)
+
+            return found
+
+        async def check(tab: Tab) -> None:
+            await tab.ws.send_str(json.dumps({"flow": True}))
+            # The markers are sent ten times a second: 40 of them take about two seconds,
+            # in which twenty clouds are published.
+            await tab.until(count(lambda c: c["text"] >= 40), "40 text payloads")
+            held = counts["binary"]
+            assert held <= IN_FLIGHT + 1  # +1: a cloud may go before the page's "flow"
+            await tab.ws.send_str(json.dumps({"ack": held}))
+            await tab.until(count(lambda c: c["binary"] > held), "a cloud after the ack")
+
+        with_tab(link, check)
+
     def test_a_page_adds_a_display_by_topic(self, view) -> None:
         link, _ = view
 

@@ -7,7 +7,7 @@
     catkin_create_pkg PKG DEPS     the `ros2 pkg create` line that makes PKG (rospy -> rclpy)
     catkin_init_workspace          ROS 2 workspaces need none: `mkdir -p ~/ros2_ws/src`
     roscp PKG FILE DEST            the `cp` to type
-    rqt                            a GUI tool this project does not have, and what does its job
+    rviz, rviz2                    a GUI tool this project does not have, and what does its job
 
 ROS 1 made roscd and rosed shell functions (setup.bash); ROS 2 has neither. See the README's
 "Coming from ROS 1".
@@ -19,7 +19,7 @@ import argparse
 import contextlib
 import shlex
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 
 from ros_tutorials_common import ament, completion, packages
@@ -177,21 +177,6 @@ def catkin_init_workspace(argv: Sequence[str] | None = None) -> int:
         "catkin_init_workspace is ROS 1's; a ROS 2 workspace needs no set-up: mkdir -p "
         "~/ros2_ws/src, create packages there, run colcon build in ~/ros2_ws"
     )
-
-
-@quiet_on_closed_pipe
-def _missing_gui_tool(name: str) -> Callable[[Sequence[str] | None], int]:
-    """A console script for a GUI tool this project does not have: one line, what instead."""
-
-    def say(argv: Sequence[str] | None = None) -> int:
-        return _say(
-            f"{name} is a GUI tool this project does not have; {packages.MISSING_TOOLS[name]}"
-        )
-
-    return say
-
-
-rqt = _missing_gui_tool("rqt")
 
 
 def roswtf(argv: Sequence[str] | None = None) -> int:

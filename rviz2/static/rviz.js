@@ -12,8 +12,17 @@ const $ = (id) => document.getElementById(id);
 const view = $("view");
 
 // --- three.js: renderer, camera, controls, the fixed frame's root
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+// Without a GPU (WebGL drawn in software: SwiftShader, llvmpipe) every pixel costs CPU: no
+// antialiasing, one pixel per CSS pixel.
+function softwareWebGL() {
+  const gl = document.createElement("canvas").getContext("webgl2");
+  const info = gl && gl.getExtension("WEBGL_debug_renderer_info");
+  const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
+  return /swiftshader|llvmpipe|software/i.test(name);
+}
+const software = softwareWebGL();
+const renderer = new THREE.WebGLRenderer({ antialias: !software, preserveDrawingBuffer: true });
+renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio, 2));
 renderer.setClearColor(0x303030);
 view.appendChild(renderer.domElement);
 const labels = new CSS2DRenderer();
@@ -29,7 +38,6 @@ scene.add(sun);
 const camera = new THREE.PerspectiveCamera(60, 1, 0.01, 2000);
 const controls = new OrbitControls(camera, renderer.domElement);
 controls.enableDamping = false;
-setView({});
 
 function setView(v) {
   // rviz's Orbit view: the eye at `distance` from the focal point, at `pitch` above the xy
@@ -42,6 +50,7 @@ function setView(v) {
     f[1] + d * Math.cos(pitch) * Math.sin(yaw),
     f[2] + d * Math.sin(pitch));
   controls.update();
+  state.dirty = true;
 }
 
 function resize() {
@@ -60,8 +69,10 @@ const state = {
   config: null, displays: new Map(), // id -> Display
   early: new Map(), // id -> the newest [header, data] that came before its display
   viewSet: false, connected: false,
-  renders: 0, fps: 0, latencies: [], pendingStamps: [],
+  dirty: true, tfVersion: 0, renders: 0, fps: 0, latencies: [], arrivals: [], drawMs: [], pendingStamps: [], unacked: 0,
 };
+
+setView({});
 
 function color3(rgb) { return new THREE.Color(rgb[0] / 255, rgb[1] / 255, rgb[2] / 255); }
 function optionColor(text, fallback) {
@@ -197,6 +208,8 @@ class TF extends Display {
   }
   update() {
     if (!this.info.enabled) { this.root.visible = false; return; }
+    if (this.root.visible && this.seen === state.tfVersion) return; // no new poses
+    this.seen = state.tfVersion;
     this.root.visible = true;
     const showNames = this.options["Show Names"] !== false;
     const showArrows = this.options["Show Arrows"] !== false;
@@ -275,11 +288,13 @@ class RobotModel extends Display {
         stlLoader.load(url, (geometry) => {
           geometry.computeVertexNormals();
           holder.add(new THREE.Mesh(geometry, material(v.color)));
+          state.dirty = true;
         }, undefined, () => this.meshFailed(v.uri));
       } else {
         colladaLoader.load(url, (collada) => {
           collada.scene.quaternion.identity(); // URDF meshes are in the link's frame, z up
           holder.add(collada.scene);
+          state.dirty = true;
         }, undefined, () => this.meshFailed(v.uri));
       }
     }
@@ -627,6 +642,7 @@ function send(message) { if (socket && socket.readyState === 1) socket.send(JSON
 
 function onConfig(c) {
   state.config = c;
+  state.dirty = true;
   if (state.fixed !== c.fixed) { state.fixed = c.fixed; }
   if (document.activeElement !== fixedInput) fixedInput.value = c.fixed;
   if (!state.viewSet && c.view) { setView(c.view); state.viewSet = true; }
@@ -645,6 +661,8 @@ function onConfig(c) {
 function onTf(t) {
   state.fixed = t.fixed;
   state.frames = new Map(t.frames.map((f) => [f.name, f]));
+  state.tfVersion++;
+  state.dirty = true;
   renderFrames();
 }
 
@@ -653,8 +671,13 @@ function onDisplay(h, blob) {
   const d = state.displays.get(h.id);
   if (!d) { state.early.set(h.id, [h, blob]); return; } // before the config that makes it
   d.take(h, blob);
+  state.dirty = true;
   if (!h.clear) d.received++;
-  if (h.stamp > 0) state.pendingStamps.push(h.stamp);
+  if (h.stamp > 0) {
+    state.pendingStamps.push(h.stamp);
+    state.arrivals.push(Date.now() / 1000 - h.stamp);
+    if (state.arrivals.length > 5000) state.arrivals.splice(0, state.arrivals.length - 5000);
+  }
   const now = performance.now();
   if (now > panelDue) { panelDue = now + 500; renderPanel(); }
 }
@@ -665,7 +688,7 @@ function connect() {
   url.search = "";
   socket = new WebSocket(url);
   socket.binaryType = "arraybuffer";
-  socket.onopen = () => { state.connected = true; $("status").textContent = "live"; $("status").className = ""; };
+  socket.onopen = () => { send({ flow: true }); state.unacked = 0; state.connected = true; $("status").textContent = "live"; $("status").className = ""; };
   socket.onclose = () => {
     state.connected = false;
     $("status").textContent = "disconnected: is rviz2 still running?";
@@ -680,6 +703,7 @@ function connect() {
       else if (m.type === "display" || m.clear) onDisplay(m, null);
       return;
     }
+    state.unacked++; // a binary frame: acknowledged once drawn
     const length = new DataView(event.data).getUint32(0);
     const header = JSON.parse(new TextDecoder().decode(new Uint8Array(event.data, 4, length)));
     onDisplay(header, event.data.slice(4 + length));
@@ -688,14 +712,25 @@ function connect() {
 connect();
 
 // --- the animation loop; what the page shows, for tests and benchmarks
-let fpsCount = 0, fpsSince = performance.now();
-function animate() {
+// Drawn at most FRAME_RATE times a second (rviz's Frame Rate, 30), and only when something
+// changed: the page leaves the CPU to the messages between frames.
+const FRAME_RATE = 30;
+let fpsCount = 0, fpsSince = performance.now(), lastRender = 0;
+controls.addEventListener("change", () => { state.dirty = true; });
+window.addEventListener("resize", () => { state.dirty = true; });
+function animate(time) {
   requestAnimationFrame(animate);
+  if (!state.dirty || time - lastRender < 1000 / FRAME_RATE - 4) return;
+  lastRender = time;
+  state.dirty = false;
+  const started = performance.now();
   for (const d of state.displays.values()) d.update();
-  controls.update();
   renderer.render(scene, camera);
   labels.render(scene, camera);
+  state.drawMs.push(performance.now() - started);
+  if (state.drawMs.length > 5000) state.drawMs.splice(0, state.drawMs.length - 5000);
   state.renders++;
+  if (state.unacked) { send({ ack: state.unacked }); state.unacked = 0; } // drawn: send more
   const now = performance.now();
   if (state.pendingStamps.length) {
     const wall = Date.now() / 1000;
@@ -711,7 +746,7 @@ function animate() {
     $("rate").textContent = `${state.fps.toFixed(0)} fps`;
   }
 }
-animate();
+requestAnimationFrame(animate);
 
 window.rvizState = {
   get connected() { return state.connected; },
@@ -719,7 +754,9 @@ window.rvizState = {
   get frames() { return [...state.frames.keys()]; },
   get fps() { return state.fps; },
   get renders() { return state.renders; },
-  get latencies() { return state.latencies; },
+  get latencies() { return state.latencies; }, // s from a message's stamp to its drawing
+  get arrivals() { return state.arrivals; }, // s from a message's stamp to the page
+  get drawMs() { return state.drawMs; }, // ms each frame took to update and draw
   displays() {
     return [...state.displays.values()].map((d) => ({ id: d.info.id, kind: d.info.kind,
       name: d.info.name, topic: d.info.topic, enabled: d.info.enabled, status: statusOf(d)[1] }));

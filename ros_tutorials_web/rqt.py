@@ -1,0 +1,753 @@
+"""rqt in the browser: the server side of rqt's plugins, at ``/rqt`` beside the viewer's page
+(static/rqt.html and rqt.js draw them; the viewer's panels are rqt_graph and rqt_console).
+
+    Service Caller   GET  /api/rqt/services             services and their types
+                     GET  /api/rqt/interface?type=T     a message's (a request's) fields, a form
+                     POST /api/rqt/call                 {service, type, request} -> the response
+    Publisher        WebSocket {"publish": {id, topic, type, message, rate, on}}
+                       -> {"type": "publisher", id, count | error}; the tab's publishers go
+                       with it
+    Parameters       GET  /api/rqt/nodes                the nodes
+    (rqt_reconfigure) GET /api/rqt/params?node=N        each parameter: type, value, range ...
+                     POST /api/rqt/param                {node, name, value} -> set, or the reason
+    Logger levels    GET  /api/rqt/logger?node=N        the node's level
+                     POST /api/rqt/logger               {node, level}
+    Plot             WebSocket {"plot": [TOPIC, ...]} -> {"type": "topic", ...} for each
+    Bag              GET  /api/rqt/bag?path=P           its topics on a time line
+                     GET  /api/rqt/bag/message?path=P&topic=T&index=I   one message
+                     WebSocket {"play": {id, path, start, end, topics}} (or {"play": null})
+                       -> {"type": "play", id, at, count | done | error}
+
+Every writing route is behind Guard.writes (a POST of JSON from the page itself, with the
+token); a WebSocket's messages passed the guard when it opened. A request or message that
+does not fit its type is answered with one line (HTTP 400 ``{"error": ...}``, or the
+``error`` of a WebSocket answer) and nothing is sent. Values come from the form as the text
+typed in each field; a string field takes it as typed, any other field reads it as YAML
+(``2``, ``true``, ``[1, 2]``) before ros2cmd.messages fills the message and checks it.
+
+Service clients and parameter clients are made for one call and destroyed after it;
+publishers and plot subscriptions belong to the tab that asked and go with it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import math
+import os
+import time
+import weakref
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from aiohttp import web
+
+from ros2cmd.bag.errors import BagError
+from ros2cmd.bag.reader import BagReader
+from ros2cmd.console import LEVELS, logger_name
+from ros2cmd.errors import ToolError
+from ros2cmd.graph import is_hidden
+from ros2cmd.messages import fill_message, message_to_ordered, message_to_yaml, parse_yaml
+from ros2cmd.param.api import described_type
+from ros2cmd.typenames import full_type_name, load_type
+from ros_tutorials_web.guard import Guard
+from ros_tutorials_web.hub import Hub, Tab
+
+STATIC = Path(__file__).resolve().parent / "static"
+CALL_TIMEOUT = 10.0  # s: a service that does not answer within it is said so
+MAX_RATE = 100.0  # Hz: the fastest a page may publish
+MAX_DEPTH = 8  # nested messages shown in a form
+TIMELINE_POINTS = 2000  # per topic: a bag's time line is decimated to this many stamps
+BAG_MESSAGE_TEXT = 20000  # characters of one bag message shown
+PLOT_TOPICS = 10  # topics one tab may plot at once
+# The tools' names, as the commands and the page's tabs spell them.
+TOOLS = (
+    "service_caller",
+    "publisher",
+    "reconfigure",
+    "logger_level",
+    "plot",
+    "bag",
+    "graph",
+    "console",
+)
+
+
+class Refused(Exception):
+    """A request the page made that cannot be done: one line for the page."""
+
+
+# --- the ROS thread, from the event loop ----------------------------------------------------
+
+
+class Ros:
+    """The node's work, asked for from the event loop: ``run(fn)`` runs fn on the ROS thread
+    (``request``, e.g. Watcher.request) and gives its result; ``future(f)`` awaits an rclpy
+    future."""
+
+    def __init__(self, node: Any, request: Callable[[Callable[[], None]], None]) -> None:
+        self.node = node
+        self.request = request
+
+    async def run(self, work: Callable[[], Any]) -> Any:
+        loop = asyncio.get_running_loop()
+        done: asyncio.Future = loop.create_future()
+
+        def on_ros() -> None:
+            try:
+                result = work()
+            except Exception as error:
+                loop.call_soon_threadsafe(_settle, done, None, error)
+            else:
+                loop.call_soon_threadsafe(_settle, done, result, None)
+
+        self.request(on_ros)
+        return await done
+
+    async def future(self, rclpy_future: Any, timeout: float, what: str) -> Any:
+        loop = asyncio.get_running_loop()
+        done: asyncio.Future = loop.create_future()
+        rclpy_future.add_done_callback(
+            lambda f: loop.call_soon_threadsafe(_settle, done, f.result(), f.exception())
+        )
+        try:
+            return await asyncio.wait_for(done, timeout)
+        except asyncio.TimeoutError:
+            raise Refused(f"{what}: no answer within {timeout:.0f} s") from None
+
+    async def call(self, service: str, service_class: type, request: Any, what: str) -> Any:
+        """One call of ``service``: a client made for it, the answer, the client destroyed."""
+        client = await self.run(lambda: self.node.create_client(service_class, service))
+        try:
+            deadline = time.monotonic() + CALL_TIMEOUT
+            while not client.service_is_ready():
+                if time.monotonic() > deadline:
+                    raise Refused(f"{what}: service '{service}' not available")
+                await asyncio.sleep(0.05)
+            rclpy_future = await self.run(lambda: client.call_async(request))
+            return await self.future(rclpy_future, CALL_TIMEOUT, what)
+        finally:
+            await self.run(lambda: self.node.destroy_client(client))
+
+
+def _settle(done: asyncio.Future, result: Any, error: BaseException | None) -> None:
+    if done.done():
+        return
+    if error is not None:
+        done.set_exception(error)
+    else:
+        done.set_result(result)
+
+
+# --- forms: a message's fields, and the values typed in them ----------------------------------
+
+
+def form(cls: type, depth: int = 0) -> list[dict[str, Any]]:
+    """A message class's fields for a form: name, type, kind (bool, number, string, message,
+    array) and the default value as text (a nested message: its fields)."""
+    from rosidl_parser.definition import AbstractNestedType, BasicType, NamespacedType
+
+    msg = cls()
+    fields = []
+    for (name, type_text), slot in zip(
+        cls.get_fields_and_field_types().items(), cls.SLOT_TYPES, strict=True
+    ):
+        entry: dict[str, Any] = {"name": name, "type": type_text}
+        value = getattr(msg, name)
+        if isinstance(slot, NamespacedType) and depth < MAX_DEPTH:
+            entry["kind"] = "message"
+            entry["fields"] = form(type(value), depth + 1)
+        elif isinstance(slot, (AbstractNestedType, NamespacedType)):
+            entry["kind"] = "array"
+            entry["default"] = json.dumps(message_to_ordered(msg)[name])
+        elif isinstance(slot, BasicType) and slot.typename == "boolean":
+            entry["kind"] = "bool"
+            entry["default"] = "true" if value else "false"
+        elif isinstance(slot, BasicType) and slot.typename not in ("char", "wchar"):
+            entry["kind"] = "number"
+            entry["default"] = repr(value) if isinstance(value, float) else str(value)
+        else:  # strings (and char, as text)
+            entry["kind"] = "string"
+            entry["default"] = str(value)
+        fields.append(entry)
+    return fields
+
+
+def typed_values(cls: type, typed: Any, path: str = "") -> dict[str, Any]:
+    """The values typed in a form (a dict of texts, nested for nested messages) as the data
+    fill_message takes: a string field's text as typed, any other read as YAML."""
+    from rosidl_parser.definition import AbstractString, NamespacedType
+
+    if not isinstance(typed, dict):
+        raise Refused(f"{path or 'the message'}: expected the form's fields")
+    fields = dict(zip(cls.get_fields_and_field_types(), cls.SLOT_TYPES, strict=True))
+    values: dict[str, Any] = {}
+    for name, text in typed.items():
+        where = f"{path}.{name}" if path else name
+        slot = fields.get(name)
+        if slot is None:
+            raise Refused(f"'{where}' is not a field of {full_type_name(cls)}")
+        if isinstance(slot, NamespacedType) and isinstance(text, dict):
+            values[name] = typed_values(type(getattr(cls(), name)), text, where)
+        elif not isinstance(text, str):
+            raise Refused(f"{where}: expected the text typed in its field")
+        elif isinstance(slot, AbstractString):
+            values[name] = text
+        else:
+            try:
+                values[name] = parse_yaml(text) if text.strip() else None
+            except ToolError as error:
+                raise Refused(f"{where}: {error}") from None
+            if values[name] is None:
+                raise Refused(f"{where}: no value typed")
+    return values
+
+
+def filled(cls: type, typed: Any) -> Any:
+    """A message of ``cls`` filled from a form's values, or Refused with the one line."""
+    try:
+        return fill_message(cls(), typed_values(cls, typed))
+    except ToolError as error:
+        raise Refused(str(error)) from None
+
+
+def type_class(name: Any, kinds: tuple[str, ...]) -> type:
+    if not isinstance(name, str) or not name:
+        raise Refused("no type chosen")
+    try:
+        return load_type(name, kinds)
+    except ToolError as error:
+        raise Refused(str(error)) from None
+    except Exception as error:  # a broken package's module: its words, one line
+        raise Refused(f"cannot load {name}: {error}") from None
+
+
+# --- parameters ------------------------------------------------------------------------------
+
+
+def parameter_entry(name: str, value: Any, descriptor: Any) -> dict[str, Any]:
+    """One parameter for the page: as rqt_reconfigure shows it."""
+    from rclpy.parameter import parameter_value_to_python
+
+    entry: dict[str, Any] = {
+        "name": name,
+        "type": described_type(value.type),
+        "value": _plain(parameter_value_to_python(value)),
+        "description": descriptor.description,
+        "read_only": descriptor.read_only,
+    }
+    kinds = (("integer", descriptor.integer_range), ("double", descriptor.floating_point_range))
+    for kind, ranges in kinds:
+        if ranges:
+            r = ranges[0]
+            entry["range"] = {"from": r.from_value, "to": r.to_value, "step": r.step, "kind": kind}
+    return entry
+
+
+def _plain(value: Any) -> Any:
+    if isinstance(value, float) and not math.isfinite(value):
+        return str(value)
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, (bytes, bytearray)):
+        return list(value)
+    return value
+
+
+def parameter_value(text: Any, kind: str) -> Any:
+    """The ParameterValue for the text typed, read as the parameter's type (a parameter
+    keeps its type: 5 for a double is 5.0, as rqt_reconfigure's spin box gives it)."""
+    from rcl_interfaces.msg import ParameterType, ParameterValue
+
+    if not isinstance(text, str):
+        raise Refused("expected the value as text")
+    value = ParameterValue()
+    try:
+        data = parse_yaml(text) if kind != "string" else text
+    except ToolError as error:
+        raise Refused(str(error)) from None
+    checks: dict[str, tuple[int, str, Callable[[Any], bool], Callable[[Any], Any]]] = {
+        "boolean": (ParameterType.PARAMETER_BOOL, "bool_value", _is_bool, bool),
+        "integer": (ParameterType.PARAMETER_INTEGER, "integer_value", _is_int, int),
+        "double": (ParameterType.PARAMETER_DOUBLE, "double_value", _is_number, float),
+        "string": (ParameterType.PARAMETER_STRING, "string_value", _is_str, str),
+        "boolean array": (ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value", _all(_is_bool), list),  # noqa: E501
+        "integer array": (ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value", _all(_is_int), list),  # noqa: E501
+        "double array": (ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value", _all(_is_number), lambda v: [float(x) for x in v]),  # noqa: E501
+        "string array": (ParameterType.PARAMETER_STRING_ARRAY, "string_array_value", _all(_is_str), list),  # noqa: E501
+    }  # fmt: skip
+    if kind not in checks:
+        raise Refused(f"a parameter of type {kind} cannot be set here")
+    code, field, fits, convert = checks[kind]
+    if not fits(data):
+        raise Refused(f"{text!r} is not a {kind}")
+    value.type = code
+    try:
+        setattr(value, field, convert(data))
+    except (AssertionError, ValueError, TypeError, OverflowError) as error:
+        raise Refused(f"{text!r} does not fit a {kind}: {error}") from None
+    return value
+
+
+def _is_bool(v: Any) -> bool:
+    return isinstance(v, bool)
+
+
+def _is_int(v: Any) -> bool:
+    return isinstance(v, int) and not isinstance(v, bool) and -(2**63) <= v < 2**63
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _is_str(v: Any) -> bool:
+    return isinstance(v, str)
+
+
+def _all(fits: Callable[[Any], bool]) -> Callable[[Any], bool]:
+    return lambda v: isinstance(v, list) and all(fits(x) for x in v)
+
+
+# --- the tools ---------------------------------------------------------------------------------
+
+
+class Tools:
+    """The rqt tools' routes and WebSocket messages, on one node (the viewer's)."""
+
+    def __init__(self, ros: Ros, hub: Hub, topic_types: Callable[[], dict[str, list[str]]]):
+        self.ros = ros
+        self.hub = hub
+        self.topic_types = topic_types
+        # Per tab: its publishers and its bag player, by the page's id (tasks of the tab's:
+        # cancelled, with what they made, when the tab goes).
+        self.publishing: weakref.WeakKeyDictionary[Tab, dict[Any, asyncio.Task]] = (
+            weakref.WeakKeyDictionary()
+        )
+
+    def add_routes(self, app: web.Application, door: Guard) -> None:
+        get, post = app.router.add_get, app.router.add_post
+        get("/rqt", self.page)
+        get("/api/rqt/services", self.services)
+        get("/api/rqt/interface", self.interface)
+        post("/api/rqt/call", door.writes(self.call))
+        get("/api/rqt/nodes", self.nodes)
+        get("/api/rqt/params", self.params)
+        post("/api/rqt/param", door.writes(self.set_param))
+        get("/api/rqt/logger", self.logger)
+        post("/api/rqt/logger", door.writes(self.set_logger))
+        get("/api/rqt/bag", self.bag)
+        get("/api/rqt/bag/message", self.bag_message)
+
+    async def page(self, _request: web.Request) -> web.FileResponse:
+        return web.FileResponse(STATIC / "rqt.html")
+
+    # Each handler answers one line on a Refused.
+    @staticmethod
+    def refused(error: Exception) -> web.Response:
+        return web.json_response({"error": str(error)}, status=400)
+
+    async def body(self, request: web.Request) -> dict[str, Any]:
+        try:
+            data = await request.json()
+        except (ValueError, UnicodeDecodeError):
+            raise Refused("the request's body is not JSON") from None
+        if not isinstance(data, dict):
+            raise Refused("the request's body is not a JSON object")
+        return data
+
+    # --- Service Caller ------------------------------------------------------------------------
+
+    async def services(self, _request: web.Request) -> web.Response:
+        found = await self.ros.run(self.ros.node.get_service_names_and_types)
+        return web.json_response({n: t for n, t in sorted(found) if not is_hidden(n)})
+
+    async def interface(self, request: web.Request) -> web.Response:
+        name = request.query.get("type", "")
+        try:
+            if "/srv/" in name:
+                cls = type_class(name, ("srv",))
+                return web.json_response(
+                    {"request": form(cls.Request), "response": form(cls.Response)}
+                )
+            return web.json_response({"message": form(type_class(name, ("msg",)))})
+        except Refused as error:
+            return self.refused(error)
+
+    async def call(self, request: web.Request) -> web.Response:
+        try:
+            data = await self.body(request)
+            service = data.get("service")
+            if not isinstance(service, str) or not service.startswith("/"):
+                raise Refused("no service chosen")
+            cls = type_class(data.get("type"), ("srv",))
+            message = filled(cls.Request, data.get("request", {}))
+            started = time.monotonic()
+            response = await self.ros.call(service, cls, message, f"calling '{service}'")
+        except Refused as error:
+            return self.refused(error)
+        return web.json_response(
+            {
+                "yaml": message_to_yaml(response),
+                "data": _plain_data(message_to_ordered(response)),
+                "seconds": round(time.monotonic() - started, 3),
+            }
+        )
+
+    # --- Parameters ------------------------------------------------------------------------------
+
+    async def nodes(self, _request: web.Request) -> web.Response:
+        own = self.ros.node.get_fully_qualified_name()
+
+        def names() -> list[str]:
+            found = self.ros.node.get_node_names_and_namespaces()
+            full = (("" if ns == "/" else ns) + "/" + name for name, ns in found)
+            return sorted({n for n in full if n != own and not n.split("/")[-1].startswith("_")})
+
+        return web.json_response(await self.ros.run(names))
+
+    def node_name(self, given: Any) -> str:
+        if not isinstance(given, str) or not given.strip("/"):
+            raise Refused("no node chosen")
+        return "/" + given.strip("/")
+
+    async def params(self, request: web.Request) -> web.Response:
+        from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
+
+        try:
+            node = self.node_name(request.query.get("node"))
+            listed = await self.ros.call(
+                f"{node}/list_parameters", ListParameters, ListParameters.Request(),
+                f"listing the parameters of '{node}'",
+            )  # fmt: skip
+            names = sorted(listed.result.names)
+            values = await self.ros.call(
+                f"{node}/get_parameters", GetParameters, GetParameters.Request(names=names),
+                f"getting the parameters of '{node}'",
+            )  # fmt: skip
+            described = await self.ros.call(
+                f"{node}/describe_parameters", DescribeParameters,
+                DescribeParameters.Request(names=names), f"describing the parameters of '{node}'",
+            )  # fmt: skip
+        except Refused as error:
+            return self.refused(error)
+        entries = [
+            parameter_entry(name, value, descriptor)
+            for name, value, descriptor in zip(
+                names, values.values, described.descriptors, strict=False
+            )
+        ]
+        return web.json_response({"node": node, "parameters": entries})
+
+    async def set_param(self, request: web.Request) -> web.Response:
+        from rcl_interfaces.msg import Parameter
+        from rcl_interfaces.srv import SetParameters
+
+        try:
+            data = await self.body(request)
+            node = self.node_name(data.get("node"))
+            name, kind = data.get("name"), data.get("type")
+            if not isinstance(name, str) or not name or not isinstance(kind, str):
+                raise Refused("no parameter chosen")
+            value = parameter_value(data.get("value"), kind)
+            answer = await self.ros.call(
+                f"{node}/set_parameters", SetParameters,
+                SetParameters.Request(parameters=[Parameter(name=name, value=value)]),
+                f"setting '{name}' of '{node}'",
+            )  # fmt: skip
+        except Refused as error:
+            return self.refused(error)
+        result = answer.results[0] if answer.results else None
+        if result is None or not result.successful:
+            reason = result.reason if result is not None and result.reason else "refused"
+            return self.refused(Refused(f"'{node}' refused {name}: {reason}"))
+        return web.json_response({"ok": True})
+
+    # --- Logger levels ----------------------------------------------------------------------------
+
+    async def logger(self, request: web.Request) -> web.Response:
+        from rcl_interfaces.msg import LoggerLevel
+        from rcl_interfaces.srv import GetLoggerLevels
+
+        from ros2cmd.log import LEVEL_NAMES
+
+        try:
+            node = self.node_name(request.query.get("node"))
+            answer = await self.ros.call(
+                f"{node}/get_logger_levels", GetLoggerLevels,
+                GetLoggerLevels.Request(names=[logger_name(node)]),
+                f"getting the logger level of '{node}'",
+            )  # fmt: skip
+        except Refused as error:
+            return self.refused(error)
+        level = answer.levels[0].level if answer.levels else LoggerLevel.LOG_LEVEL_UNKNOWN
+        return web.json_response({"node": node, "level": LEVEL_NAMES.get(level, str(level))})
+
+    async def set_logger(self, request: web.Request) -> web.Response:
+        from rcl_interfaces.msg import LoggerLevel
+        from rcl_interfaces.srv import SetLoggerLevels
+
+        try:
+            data = await self.body(request)
+            node = self.node_name(data.get("node"))
+            level = str(data.get("level", "")).lower()
+            if level not in LEVELS:
+                raise Refused(f"{data.get('level')!r} is not a level ({', '.join(LEVELS)})")
+            answer = await self.ros.call(
+                f"{node}/set_logger_levels", SetLoggerLevels,
+                SetLoggerLevels.Request(
+                    levels=[LoggerLevel(name=logger_name(node), level=LEVELS[level])]
+                ),
+                f"setting the logger level of '{node}'",
+            )  # fmt: skip
+        except Refused as error:
+            return self.refused(error)
+        result = answer.results[0] if answer.results else None
+        if result is None or not result.successful:
+            reason = result.reason if result is not None else "no answer for the logger"
+            return self.refused(Refused(f"'{node}' refused level {level.upper()}: {reason}"))
+        return web.json_response({"ok": True, "level": level.upper()})
+
+    # --- Bag -----------------------------------------------------------------------------------
+
+    def open_bag(self, given: Any) -> BagReader:
+        if not isinstance(given, str) or not given.strip():
+            raise Refused("no bag given: the path of a bag folder or .mcap file")
+        path = Path(os.path.expanduser(given.strip()))
+        if not path.is_absolute():
+            path = Path.cwd() / path
+        try:
+            return BagReader(path)
+        except BagError as error:
+            raise Refused(str(error)) from None
+
+    async def bag(self, request: web.Request) -> web.Response:
+        try:
+            answer = await asyncio.to_thread(self.bag_outline, request.query.get("path"))
+        except Refused as error:
+            return self.refused(error)
+        return web.json_response(answer)
+
+    def bag_outline(self, given: Any) -> dict[str, Any]:
+        """The bag's topics with the times of their messages (decimated), read once."""
+        with self.open_bag(given) as reader:
+            bag = reader.bag
+            times: dict[str, list[int]] = {name: [] for name in bag.topics}
+            try:
+                for message in reader.messages():
+                    times.setdefault(message.topic, []).append(message.log_time)
+            except BagError as error:
+                raise Refused(str(error)) from None
+        topics = []
+        for name, info in sorted(bag.topics.items()):
+            stamps = times.get(name, [])
+            step = max(1, math.ceil(len(stamps) / TIMELINE_POINTS))
+            topics.append(
+                {
+                    "name": name,
+                    "type": info.type,
+                    "count": len(stamps),
+                    "times": [(t - bag.start) / 1e9 for t in stamps[::step]],
+                }
+            )
+        return {
+            "path": str(reader.path),
+            "start": bag.start / 1e9,
+            "duration": (bag.end - bag.start) / 1e9,
+            "topics": topics,
+        }
+
+    async def bag_message(self, request: web.Request) -> web.Response:
+        query = request.query
+        try:
+            at = float(query.get("at", ""))
+        except ValueError:
+            return self.refused(Refused("'at' is not a time in seconds"))
+        try:
+            answer = await asyncio.to_thread(
+                self.message_at, query.get("path"), query.get("topic", ""), at
+            )
+        except Refused as error:
+            return self.refused(error)
+        return web.json_response(answer)
+
+    def message_at(self, given: Any, topic: str, at: float) -> dict[str, Any]:
+        """The topic's last message at ``at`` seconds from the bag's start (or its first)."""
+        from rclpy.serialization import deserialize_message
+
+        with self.open_bag(given) as reader:
+            info = reader.bag.topics.get(topic)
+            if info is None:
+                raise Refused(f"the bag has no topic {topic!r}")
+            moment = reader.bag.start + int(at * 1e9)
+            found = None
+            index = -1
+            try:
+                for message in reader.messages([topic]):
+                    if found is not None and message.log_time > moment:
+                        break
+                    found, index = message, index + 1
+            except BagError as error:
+                raise Refused(str(error)) from None
+            if found is None:
+                raise Refused(f"{topic} has no messages in the bag")
+            cls = type_class(info.type, ("msg",))
+            try:
+                msg = deserialize_message(found.data, cls)
+            except Exception as error:
+                raise Refused(f"a message of {topic} cannot be read: {error}") from None
+            return {
+                "topic": topic,
+                "type": info.type,
+                "index": index,
+                "at": (found.log_time - reader.bag.start) / 1e9,
+                "yaml": message_to_yaml(msg, truncate_length=64)[:BAG_MESSAGE_TEXT],
+            }
+
+    # --- WebSocket messages: publish, plot, play ----------------------------------------------
+
+    def asked(self, tab: Tab, message: dict[str, Any]) -> Any:
+        """A tab's message for the tools; an awaitable to run as the tab's task, or None."""
+        if "publish" in message:
+            return self.publish(tab, message["publish"])
+        if "plot" in message:
+            topics = message["plot"]
+            if isinstance(topics, list) and all(
+                isinstance(t, str) and t.startswith("/") for t in topics
+            ):
+                wanted = {"plot:" + t for t in topics[:PLOT_TOPICS]}
+                for key in [k for k in tab.wants if k.startswith("plot:") and k not in wanted]:
+                    self.hub.drop(tab, key)
+                for key in sorted(wanted):
+                    self.hub.want(tab, key)
+            return None
+        if "play" in message:
+            return self.play(tab, message["play"])
+        return None
+
+    def answer(self, tab: Tab, payload: dict[str, Any]) -> None:
+        tab.offer(f"{payload['type']}:{payload.get('id')}", json.dumps(payload))
+
+    def replace_task(self, tab: Tab, key: Any) -> None:
+        """Stop what the tab had running under ``key`` (a publisher, a player)."""
+        running = self.publishing.setdefault(tab, {}).pop(key, None)
+        if running is not None:
+            running.cancel()
+
+    async def publish(self, tab: Tab, asked: Any) -> None:
+        """Publish as the page asked: once (rate 0) or at a rate until turned off, or until
+        the tab goes; the publisher is made for it and destroyed after."""
+        ident = asked.get("id") if isinstance(asked, dict) else None
+        key = ("publish", str(ident))
+        self.replace_task(tab, key)
+        reply = {"type": "publisher", "id": ident}
+        try:
+            if not isinstance(asked, dict):
+                raise Refused("expected {id, topic, type, message, rate, on}")
+            if not asked.get("on"):
+                self.answer(tab, {**reply, "count": 0, "on": False})
+                return
+            topic = asked.get("topic")
+            if not isinstance(topic, str) or not topic.startswith("/") or len(topic) > 256:
+                raise Refused("no topic: a name such as /turtle1/cmd_vel")
+            cls = type_class(asked.get("type"), ("msg",))
+            message = filled(cls, asked.get("message", {}))
+            rate = asked.get("rate", 1.0)
+            if not _is_number(rate) or not 0 <= rate <= MAX_RATE:
+                raise Refused(f"the rate must be 0 (once) to {MAX_RATE:.0f} Hz")
+        except Refused as error:
+            self.answer(tab, {**reply, "error": str(error), "on": False})
+            return
+        task = asyncio.current_task()
+        assert task is not None
+        self.publishing.setdefault(tab, {})[key] = task
+        publisher = await self.ros.run(lambda: self.ros.node.create_publisher(cls, topic, 10))
+        count = 0
+        try:
+            while True:
+                publisher.publish(message)  # rclpy's publish may be called from any thread
+                count += 1
+                self.answer(tab, {**reply, "count": count, "on": rate > 0, "topic": topic})
+                if rate == 0:
+                    break
+                await asyncio.sleep(1 / rate)
+        finally:
+            self.publishing.get(tab, {}).pop(key, None)
+            # Destroyed on the ROS thread whether this task ends or is cancelled.
+            self.ros.request(lambda: self.ros.node.destroy_publisher(publisher))
+
+    async def play(self, tab: Tab, asked: Any) -> None:
+        """Play a range of a bag's messages on their topics, at their recorded pace."""
+        from rclpy.serialization import deserialize_message
+
+        key = ("play", "bag")
+        self.replace_task(tab, key)
+        if asked is None:
+            return
+        ident = asked.get("id") if isinstance(asked, dict) else None
+        reply = {"type": "play", "id": ident}
+        try:
+            if not isinstance(asked, dict):
+                raise Refused("expected {id, path, start, end, topics}")
+            start, end = asked.get("start", 0), asked.get("end", math.inf)
+            if not _is_number(start) or not _is_number(end) or end < start:
+                raise Refused("the range must be two times in seconds, start before end")
+            reader = self.open_bag(asked.get("path"))
+        except Refused as error:
+            self.answer(tab, {**reply, "error": str(error)})
+            return
+        task = asyncio.current_task()
+        assert task is not None
+        self.publishing.setdefault(tab, {})[key] = task
+        publishers: dict[str, Any] = {}
+        count = 0
+        try:
+            bag = reader.bag
+            chosen = asked.get("topics")
+            topics = [t for t in bag.topics if not isinstance(chosen, list) or t in chosen]
+            classes = {}
+            for name in topics:
+                try:
+                    classes[name] = type_class(bag.topics[name].type, ("msg",))
+                except Refused:
+                    continue  # a type not installed here: its messages are not played
+            first = bag.start + int(start * 1e9)
+            last = bag.start + int(min(end, 1e7) * 1e9)
+            began = time.monotonic()
+            messages = reader.messages(list(classes), first)
+            while True:
+                message = await asyncio.to_thread(next, messages, None)
+                if message is None or message.log_time > last:
+                    break
+                wait = (message.log_time - first) / 1e9 - (time.monotonic() - began)
+                if wait > 0:
+                    await asyncio.sleep(wait)
+                cls = classes[message.topic]
+                if message.topic not in publishers:
+                    publishers[message.topic] = await self.ros.run(
+                        lambda t=message.topic, c=cls: self.ros.node.create_publisher(c, t, 10)
+                    )
+                try:
+                    msg = deserialize_message(message.data, cls)
+                except Exception:
+                    continue  # a message its type cannot read: skipped
+                publishers[message.topic].publish(msg)
+                count += 1
+                at = (message.log_time - bag.start) / 1e9
+                self.answer(tab, {**reply, "count": count, "at": at})
+            self.answer(tab, {**reply, "count": count, "done": True})
+        except BagError as error:
+            self.answer(tab, {**reply, "error": str(error)})
+        finally:
+            reader.close()
+            self.publishing.get(tab, {}).pop(key, None)
+            for publisher in publishers.values():
+                self.ros.request(lambda p=publisher: self.ros.node.destroy_publisher(p))
+
+
+def _plain_data(value: Any) -> Any:
+    """Ordered message data as JSON can carry it (bytes as numbers, NaN as text)."""
+    if isinstance(value, dict):
+        return {k: _plain_data(v) for k, v in value.items()}
+    return _plain(value)
