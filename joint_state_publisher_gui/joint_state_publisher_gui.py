@@ -4,7 +4,8 @@ robot's joints, in the browser.
 ROS 2's joint_state_publisher_gui is joint_state_publisher (same node name, parameters and
 topics) with a Qt window: a slider per movable joint that is not a mimic, from its lower to its
 upper limit, its value shown to three decimals, and the buttons Randomize and Center. Here the
-window is a web page: the node logs the link to open ("Open http://127.0.0.1:PORT/?token=...").
+window is a web page: the node logs the link to open ("Open http://127.0.0.1:PORT/?token=..."),
+and opens it in a browser window where there is a display.
 The page and its WebSocket are behind the guard of this project's web tools (a token made for
 this run, the Host and Origin checks: ros_tutorials_web/guard.py); a slider moved in any open
 tab moves it in every tab, and values from ``source_list`` topics move the sliders.
@@ -31,6 +32,7 @@ from aiohttp import WSMsgType, web
 from joint_state_publisher.joint_state_publisher import JointStatePublisher, StartError
 from ros_tutorials_common.ros.node_main import user_args
 from ros_tutorials_web import guard, server
+from ros_tutorials_web.commands import open_window
 
 STATIC = Path(__file__).resolve().parent / "static"
 DEFAULT_PORT = 8081
@@ -168,6 +170,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         app.router.add_get("/", page)
         app.router.add_get("/ws", sliders.tab)
         app.router.add_static("/static/", STATIC)
+        address, port = sock.getsockname()[:2]
+        open_window(
+            guard.link("127.0.0.1" if address in guard.WILDCARDS else address, port, door.token)
+        )
         return jsp, app
 
     try:

@@ -143,3 +143,27 @@ def test_the_sliders_move_the_joints(gui, executor, tmp_path):
         )
         spin_until(executor, lambda: len(states) > 3, what="more /joint_states")
         assert position("gripper_extension") == before
+
+
+def test_a_window_opens_where_there_is_a_display(node_process, tmp_path):
+    """With a display, the sliders open in the learner's browser ($BROWSER here: a script that
+    notes what it was asked to open), as ROS 2's window opens; the link is printed either way."""
+    opened = tmp_path / "opened"
+    browser = tmp_path / "browser"
+    browser.write_text(f'#!/bin/sh\necho "$1" >> {opened}\n')
+    browser.chmod(0o755)
+    process = node_process(
+        script("ros2"),
+        "run",
+        "joint_state_publisher_gui",
+        "joint_state_publisher_gui",
+        str(FLEXIBLE),
+        "--port",
+        "0",
+        env={"DISPLAY": ":99", "BROWSER": str(browser)},
+    )
+    lines = process.wait_for_output(lambda ls: any(LINK.search(line) for line in ls))
+    link = next(LINK.search(line) for line in lines if LINK.search(line)).group(1)
+    until(lambda: opened.exists() and opened.read_text(), "a browser asked to open the sliders")
+    assert opened.read_text() == f"{link}\n"
+    assert process.interrupt() in (0, 130)
