@@ -20,17 +20,15 @@ from __future__ import annotations
 
 import argparse
 import asyncio
-import os
 import sys
-import threading
-import webbrowser
 from collections.abc import Sequence
 
 DEFAULT_PORT = 8090  # when free; else any free port
+EXPOSED = "see the tf frames, the robot and every topic the 3D view shows (rviz2 publishes nothing)"
 
 
 def parse_args(argv: Sequence[str], prog: str) -> argparse.Namespace:
-    from ros_tutorials_web.viewer import DEFAULT_HOST, origin, port_number
+    from ros_tutorials_web import guard
 
     parser = argparse.ArgumentParser(
         prog=prog, description="rviz2's 3D view in a browser: tf, robot model, markers, sensors"
@@ -43,55 +41,21 @@ def parse_args(argv: Sequence[str], prog: str) -> argparse.Namespace:
     parser.add_argument("-s", "--splash-screen", metavar="FILE", help=argparse.SUPPRESS)
     parser.add_argument("-l", "--ogre-log", action="store_true", help=argparse.SUPPRESS)
     parser.add_argument("--fullscreen", action="store_true", help=argparse.SUPPRESS)
-    parser.add_argument(
-        "--port",
-        type=port_number,
-        help=f"the port of the page (default {DEFAULT_PORT}, or a free one if it is taken)",
-    )
-    parser.add_argument(
-        "--host", default=DEFAULT_HOST, help=f"the address to listen on (default {DEFAULT_HOST})"
-    )
-    parser.add_argument(
-        "--allow-origin",
-        action="append",
-        default=[],
-        type=origin,
-        metavar="ORIGIN",
-        dest="allow_origins",
-        help="also accept the page shown from ORIGIN (a cloud editor's forwarded port)",
-    )
+    guard.add_arguments(parser, default_port=DEFAULT_PORT)
     return parser.parse_args(argv)
 
 
-def open_window(url: str) -> bool:
-    """Open URL in a browser window where there is a display: the learner's $BROWSER, or a
-    browser that opens a window of its own (never a text browser, which would take the
-    terminal). In a thread: a browser command that runs until its window closes holds
-    nothing up. False where none opens."""
-    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
-        return False
-    try:
-        browser = webbrowser.get()
-    except webbrowser.Error:
-        return False
-    windowed = isinstance(browser, webbrowser.BackgroundBrowser) or getattr(
-        browser, "background", False
-    )
-    if not (windowed or os.environ.get("BROWSER")):
-        return False
-    threading.Thread(target=browser.open, args=(url,), daemon=True).start()
-    return True
-
-
 def main(argv: Sequence[str] | None = None, prog: str = "rviz2") -> int:
-    from rclpy.signals import SignalHandlerOptions
+    from aiohttp import web
 
     from ros_tutorials_common import packages
-    from ros_tutorials_common.ros import init, user_args
-    from ros_tutorials_web.viewer import Guard, greeting, link, listen
+    from ros_tutorials_common.ros import user_args
+    from ros_tutorials_web import guard, server
+    from ros_tutorials_web.commands import open_window
+    from ros_tutorials_web.hub import Hub
     from rviz2.config import ConfigError, default_config, load
     from rviz2.scene import Scene
-    from rviz2.server import serve
+    from rviz2.server import deliver, make_app
 
     argv = list(sys.argv if argv is None else argv)
     args = parse_args(user_args(argv), prog)
@@ -104,39 +68,27 @@ def main(argv: Sequence[str] | None = None, prog: str = "rviz2") -> int:
         config.fixed_frame = args.fixed_frame
     for line in config.lacking:
         print(f"warning: {line}", file=sys.stderr, flush=True)
-    if args.port is None:
-        try:
-            sock = listen(args.host, DEFAULT_PORT)
-        except SystemExit:  # taken: any free port will do (a bad --host says so again)
-            sock = listen(args.host, 0)
-    else:
-        sock = listen(args.host, args.port)
-    guard = Guard.for_socket(sock, args.host, args.allow_origins)
+    sock = guard.listen(args.host, args.port, default_port=DEFAULT_PORT)
+    door = guard.Guard.for_socket(sock, args.host, args.allow_origins)
 
-    def make_scene(handoff):
-        return Scene(config, handoff, packages.share_directory, by_topic=not args.display_config)
-
-    def ready(scene: Scene) -> None:
-        logger = scene.get_logger()
-        first, *warnings = greeting(sock, guard)
+    def make(loop: asyncio.AbstractEventLoop) -> tuple[Scene, web.Application]:
+        hub = Hub(loop)
+        scene = Scene(
+            config,
+            lambda stream, payload: hub.from_ros(deliver, hub, stream, payload),
+            packages.share_directory,
+            by_topic=not args.display_config,
+        )
+        hub.ros = scene.request
+        app = make_app(hub, scene, door)
         address, port = sock.getsockname()[:2]
-        local = link("127.0.0.1" if address in ("0.0.0.0", "::") else address, port, guard.token)
-        logger.info(first)
-        for line in warnings:
-            logger.warning(line.replace("the viewer publishes nothing", "rviz2 publishes nothing"))
-        open_window(local)
+        local = "127.0.0.1" if address in guard.WILDCARDS else address
+        link = guard.link(local, port, door.token)
+        # A window where there is a display, once the server listens (the link is printed).
+        app.on_startup.append(lambda _app: loop.run_in_executor(None, open_window, link))
+        return scene, app
 
-    import rclpy
-
-    try:
-        init(argv, signal_handler_options=SignalHandlerOptions.NO)
-        asyncio.run(serve(sock, guard, make_scene, ready))
-    except KeyboardInterrupt:
-        pass
-    finally:
-        sock.close()
-        rclpy.try_shutdown()
-    return 0
+    return server.run(argv, sock, door, make, exposed=EXPOSED)
 
 
 def rviz(argv: Sequence[str] | None = None) -> int:

@@ -1,17 +1,21 @@
 """rviz2's web side: the 3D view's page, its files (three.js among them), its WebSocket and the
-robot model's mesh files, behind the web viewer's guard (ros_tutorials_web: a token made for
-this run, and the Host and Origin checks) on 127.0.0.1 unless asked otherwise.
+robot model's mesh files, on ros_tutorials_web's guard (guard.py: a token made for this run,
+the Host and Origin checks; 127.0.0.1 unless asked otherwise), hub (hub.py: each stream's
+newest payload, kept for tabs to come) and server (server.py: aiohttp beside the node, Ctrl-C
+and SIGTERM).
 
 HTTP: ``/`` the page (rviz.html), ``/static/...`` its files, ``/ws`` the WebSocket,
 ``/mesh/N/I/NAME`` mesh I of display N's robot model (only a file the current model names).
 
 WebSocket, server to browser: the scene's streams (scene.py): ``config``, ``tf`` and one per
-display, as JSON text or, with bulk data, binary frames (a 4-byte big-endian length, that many
-bytes of JSON, the data). Each tab gets the newest payload of each stream that it has not got
-yet: a slow tab misses updates, the server queues none. Browser to server, JSON:
-``{"fixed": FRAME}`` (``""``: the view chooses), ``{"enable": [N, true|false]}``,
-``{"add": TOPIC}`` (a display for a topic of a type the view draws), ``{"flow": true}`` and
-``{"ack": N}`` (flow control: ``Tab``). Anything else is ignored.
+display (``display:N``), as JSON text or, with bulk data, binary frames (a 4-byte big-endian
+length, that many bytes of JSON, the data). The streams are the display's, not the tab's: the
+scene subscribes for its displays whether or not a page looks (as rviz2 does), and every tab
+gets every stream. Each tab gets the newest payload of each stream that it has not got yet: a
+slow tab misses updates, the server queues none. Browser to server, JSON: ``{"fixed":
+FRAME}`` (``""``: the view chooses), ``{"enable": [N, true|false]}``, ``{"add": TOPIC}`` (a
+display for a topic of a type the view draws), ``{"flow": true}`` and ``{"ack": N}`` (flow
+control: ``FlowTab``). Anything else is ignored.
 """
 
 from __future__ import annotations
@@ -19,15 +23,13 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import json
-import threading
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from aiohttp import WSMsgType, web
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 
-from ros_tutorials_web.viewer import Guard
+from ros_tutorials_web.guard import Guard
+from ros_tutorials_web.hub import Hub, Payload, Tab
 from rviz2.scene import Scene
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -36,8 +38,8 @@ MESH_TYPES = {".stl": "model/stl", ".dae": "model/vnd.collada+xml"}
 IN_FLIGHT = 2  # bulk payloads sent to a page that asked for flow control, not yet drawn
 
 
-class Tab:
-    """One page's WebSocket: per stream, the newest payload not sent yet.
+class FlowTab(Tab):
+    """A tab of the hub, with flow control for the pages that ask for it.
 
     A page that says ``{"flow": true}`` acknowledges the binary frames (clouds, scans, maps,
     images) it has drawn (``{"ack": N}``); it is then sent at most IN_FLIGHT of them ahead of
@@ -46,15 +48,9 @@ class Tab:
     once."""
 
     def __init__(self, ws: web.WebSocketResponse) -> None:
-        self.ws = ws
+        super().__init__(ws)
         self.flow = False
         self.in_flight = 0
-        self._pending: dict[str, str | bytes] = {}
-        self._ready = asyncio.Event()
-
-    def offer(self, stream: str, payload: str | bytes) -> None:
-        self._pending[stream] = payload  # replaces what the page has not taken yet
-        self._ready.set()
 
     def acknowledge(self, count: int) -> None:
         self.in_flight = max(0, self.in_flight - count)
@@ -65,11 +61,11 @@ class Tab:
             await self._ready.wait()
             self._ready.clear()
             held = self.flow and self.in_flight >= IN_FLIGHT
-            for stream in list(self._pending):
-                payload = self._pending[stream]
+            for slot in list(self._pending):
+                payload = self._pending[slot]
                 if isinstance(payload, bytes) and held:
                     continue  # waits, replaced by a newer one meanwhile, until the page drew
-                del self._pending[stream]
+                del self._pending[slot]
                 if isinstance(payload, bytes):
                     self.in_flight += 1
                     held = self.flow and self.in_flight >= IN_FLIGHT
@@ -78,27 +74,13 @@ class Tab:
                     await self.ws.send_str(payload)
 
 
-class Hub:
-    """The event loop's side: the newest payload of each stream, offered to every tab."""
-
-    def __init__(self, loop: asyncio.AbstractEventLoop) -> None:
-        self.loop = loop
-        self.tabs: set[Tab] = set()
-        self.newest: dict[str, str | bytes] = {}
-
-    def from_ros(self, stream: str, payload: str | bytes) -> None:
-        """The scene's handoff (ROS thread)."""
-        self.loop.call_soon_threadsafe(self._offer, stream, payload)
-
-    def _offer(self, stream: str, payload: str | bytes) -> None:
-        self.newest[stream] = payload
-        for tab in self.tabs:
-            tab.offer(stream, payload)
-
-    def add(self, tab: Tab) -> None:
-        self.tabs.add(tab)
-        for stream, payload in self.newest.items():
-            tab.offer(stream, payload)
+def deliver(hub: Hub, stream: str, payload: Payload) -> None:
+    """A payload of the scene (on the event loop): kept for tabs to come, sent to every tab."""
+    if stream not in hub.always:  # a display added since: every tab gets it too
+        hub.always.add(stream)
+        for tab in hub.tabs:
+            hub.want(tab, stream)
+    hub.offer(stream, payload)
 
 
 def ask(scene: Scene, asked: Any) -> None:
@@ -120,7 +102,7 @@ def ask(scene: Scene, asked: Any) -> None:
         scene.request(lambda: scene.add_for_topic(topic))
 
 
-def make_app(hub: Hub, scene: Scene, guard: Guard, say: Callable[[str], None]) -> web.Application:
+def make_app(hub: Hub, scene: Scene, door: Guard) -> web.Application:
     async def page(_request: web.Request) -> web.FileResponse:
         return web.FileResponse(STATIC / "rviz.html")
 
@@ -138,9 +120,15 @@ def make_app(hub: Hub, scene: Scene, guard: Guard, say: Callable[[str], None]) -
     async def websocket(request: web.Request) -> web.WebSocketResponse:
         ws = web.WebSocketResponse(heartbeat=20, max_msg_size=64 * 1024)
         await ws.prepare(request)
-        tab = Tab(ws)
-        hub.add(tab)
+        tab = FlowTab(ws)
+        hub.add(tab, list(hub.always))
         sender = asyncio.create_task(tab.send())
+
+        def sent(task: asyncio.Task) -> None:  # a tab whose sending failed is closed
+            if not task.cancelled() and task.exception() is not None:
+                hub.loop.create_task(ws.close())
+
+        sender.add_done_callback(sent)
         try:
             async for message in ws:
                 if message.type != WSMsgType.TEXT:
@@ -154,58 +142,15 @@ def make_app(hub: Hub, scene: Scene, guard: Guard, say: Callable[[str], None]) -
                     ask(scene, asked)
         finally:
             sender.cancel()
-            hub.tabs.discard(tab)
+            hub.remove(tab)
             with contextlib.suppress(asyncio.CancelledError, ConnectionError):
                 await sender
         return ws
 
-    app = web.Application(middlewares=[guard.middleware(say)])
+    app = web.Application(middlewares=[door.middleware(scene.get_logger().warning)])
+    app.on_shutdown.append(hub.close)
     app.router.add_get("/", page)
     app.router.add_get("/ws", websocket)
     app.router.add_get("/mesh/{display}/{index}/{name}", mesh)
     app.router.add_static("/static/", STATIC)
     return app
-
-
-async def serve(
-    sock: Any, guard: Guard, make_scene: Callable[[Callable], Scene], ready: Callable
-) -> None:
-    """Serve until Ctrl-C or SIGTERM, with the scene's node spinning in a thread of its own;
-    ``ready(scene)`` once the page can be opened."""
-    import signal
-
-    loop = asyncio.get_running_loop()
-    stop = asyncio.Event()
-    for signum in (signal.SIGINT, signal.SIGTERM):
-        loop.add_signal_handler(signum, stop.set)
-    hub = Hub(loop)
-    scene = make_scene(hub.from_ros)
-    executor = SingleThreadedExecutor()
-    executor.add_node(scene)
-    spinning = threading.Event()
-    spinning.set()
-
-    def spin() -> None:
-        with contextlib.suppress(ExternalShutdownException):
-            while spinning.is_set():
-                executor.spin_once(timeout_sec=0.2)
-
-    thread = threading.Thread(target=spin, name="ros", daemon=True)
-    thread.start()
-    app = make_app(hub, scene, guard, scene.get_logger().warning)
-    runner = web.AppRunner(app, handle_signals=False, access_log=None)
-    await runner.setup()
-    try:
-        await web.SockSite(runner, sock, shutdown_timeout=1.0).start()
-        ready(scene)
-        await stop.wait()
-    finally:
-        for tab in list(hub.tabs):
-            with contextlib.suppress(Exception):
-                await tab.ws.close()
-        await runner.cleanup()
-        spinning.clear()
-        scene.request(lambda: None)  # wakes the executor at once
-        thread.join()
-        executor.shutdown()
-        scene.destroy_node()

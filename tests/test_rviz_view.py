@@ -451,28 +451,20 @@ class TestBadInput:
 
 
 def browser_for(tmp_path: Path) -> Any:
-    """Headless Chromium (Debian's chromium and chromium-driver) with WebGL in software."""
-    import shutil
+    """Headless Chromium (tests/browser.py's, skipped with its reason where there is none)
+    with WebGL drawn in software: there is no GPU here."""
+    from browser import FLAGS, browser_paths
 
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    driver = shutil.which("chromedriver")
-    if not chromium or not driver:
-        pytest.skip("no headless browser here: needs Debian's chromium and chromium-driver")
+    chromium, driver = browser_paths()
     webdriver = pytest.importorskip("selenium.webdriver")
     from selenium.webdriver.chrome.service import Service
 
     options = webdriver.ChromeOptions()
     options.binary_location = chromium
     for argument in (
-        "--headless=new",
-        "--no-sandbox",
-        "--disable-gpu",
+        *FLAGS,
         "--use-angle=swiftshader",
         "--enable-unsafe-swiftshader",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        "--no-first-run",
         "--window-size=1400,900",
         f"--user-data-dir={tmp_path / 'chromium'}",
     ):
