@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+import shlex
 import subprocess
 import sys
 from pathlib import Path
@@ -205,9 +206,25 @@ def test_robot_state_publisher_page_r2d2_walks_in_a_circle(tmp_path, executor):
             return math.dist((now.x, now.y), start) > 0.05
 
         frames.until(walked, "R2D2 walking along its circle")
-        # 7 View the results: the rviz2 command's file is where the page says.
-        installed = workspace / "install/urdf_tutorial_r2d2/share/urdf_tutorial_r2d2/r2d2.rviz"
-        assert installed.is_file()
+        # 7 View the results, in a new terminal: the page's rviz2 command opens the 3D view.
+        view = NodeProcess(
+            prefix=[
+                "bash",
+                "-c",
+                f"cd {shlex.quote(str(tmp_path))}\n"
+                + activated(
+                    "exec rviz2 -d second_ros2_ws/install/urdf_tutorial_r2d2/share/"
+                    "urdf_tutorial_r2d2/r2d2.rviz --port 0"
+                ),
+                "bash",
+            ],
+            env=HEADLESS,
+        )
+        try:
+            view.wait_for_text("in a browser (Ctrl-C to stop)")
+        finally:
+            view.interrupt()
+        assert "error" not in view.output.lower(), view.output
     finally:
         page_stop(launch)
 
