@@ -173,6 +173,13 @@ CHECKS: dict[tuple[str, str], Check] = {
     # tf2.md
     ("docs/tf2.md", "ros2 node list"): Check(scene="tf2_demo"),
     ("docs/tf2.md", "ros2 pkg executables turtle_tf2_py"): Check(),
+    # urdf.md
+    ("docs/urdf.md", "ros2 pkg executables robot_state_publisher"): Check(),
+    (
+        "docs/urdf.md",
+        "ros2 run robot_state_publisher robot_state_publisher --ros-args -p "
+        "\"robot_description:=<robot name='r'/>\"",
+    ): Check(fails=True),
     # own-package.md
     (
         "docs/own-package.md",

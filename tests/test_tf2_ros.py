@@ -286,3 +286,13 @@ def test_bad_transforms_on_tf_are_refused_and_the_listener_goes_on(context, exec
     with pytest.raises(LookupException, match="contains a loop"):
         buffer.lookup_transform("fine", "x", Time(seconds=1))
     assert 'TF_NAN_INPUT: Ignoring transform for child_frame_id "broken"' in capfd.readouterr().err
+
+
+def test_transform_stamped_comes_from_tf2_ros_as_in_jazzy():
+    """`from tf2_ros import TransformBroadcaster, TransformStamped`: the URDF page's
+    state_publisher.py imports geometry_msgs' message through tf2_ros, as Jazzy's star
+    imports hand it on."""
+    import tf2_ros
+
+    assert tf2_ros.TransformStamped is TransformStamped
+    assert "TransformStamped" in tf2_ros.__all__

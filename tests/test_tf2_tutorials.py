@@ -1,5 +1,6 @@
 """The official Jazzy tf2 pages typed as a learner: "Writing a static broadcaster (Python)",
 "Writing a broadcaster (Python)", "Writing a listener (Python)", "Adding a frame (Python)",
+"Using stamped datatypes with tf2_ros::MessageFilter" (its Python part),
 "Quaternion fundamentals" and "Debugging".
 
 One workspace for the whole module, as the pages build one package, learning_tf2_py, page
@@ -45,11 +46,13 @@ PAGE_FILES = [
     "turtle_tf2_listener.py",
     "fixed_frame_tf2_broadcaster.py",
     "dynamic_frame_tf2_broadcaster.py",
+    "turtle_tf2_message_broadcaster.py",  # the stamped datatypes page's download
 ]
 LAUNCH_FILES = [
     "turtle_tf2_demo_launch.py",  # as the listener page leaves it
     "turtle_tf2_fixed_frame_demo_launch.py",
     "turtle_tf2_dynamic_frame_demo_launch.py",
+    "turtle_tf2_sensor_message_launch.py",
 ]
 # The pages' package.xml lines (static broadcaster page, then the broadcaster page's launch ones).
 EXEC_DEPENDS = [
@@ -279,6 +282,24 @@ def test_dynamic_frame_carrot_moves_and_turtle2_follows_it(workspace, executor):
     finally:
         stop(echo)
         stop(launch)
+
+
+def test_stamped_datatypes_page_publishes_turtle3s_point(workspace):
+    """Using stamped datatypes with tf2_ros::MessageFilter, 3 Run: the page's launch file
+    starts turtlesim, the two broadcasters and turtle_tf2_py's turtle_tf2_message_broadcaster,
+    which spawns turtle3, drives it in a circle and publishes where it is; `ros2 topic echo`
+    shows that PointStamped in the world frame."""
+    launch = launched(workspace, "turtle_tf2_sensor_message_launch.py")
+    try:
+        launch.wait_for_text("Successfully spawned turtle3", timeout=FOLLOW_TIMEOUT)
+        echoed = ok(sourced("ros2 topic echo /turtle3/turtle_point_stamped --once"), workspace)
+    finally:
+        stop(launch)
+    assert re.search(
+        r"^  frame_id: world\npoint:\n  x: \d+\.\d+\n  y: \d+\.\d+\n  z: 0\.0\n---$",
+        echoed,
+        re.MULTILINE,
+    ), echoed
 
 
 def test_debugging_page_commands(workspace, tmp_path):

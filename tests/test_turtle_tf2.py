@@ -270,3 +270,19 @@ def test_launch_for_large_projects_page_runs_turtle_tf2_py(launched, executor):
         assert {"/turtlesim2/sim", "/sim", "/mimic", "/learner_fixed_broadcaster"} <= set(nodes)
     finally:
         stop(launch)
+
+
+def test_the_rviz_file_and_the_sensor_message_demo_are_installed():
+    """Introducing tf2's `ros2 run rviz2 rviz2 -d $(ros2 pkg prefix --share
+    turtle_tf2_py)/rviz/turtle_rviz.rviz` names a file that is there: the world frame fixed, a
+    TF display; and the stamped datatypes page's executable and launch file are in the package."""
+    import yaml
+
+    share = ok("ros2", "pkg", "prefix", "--share", "turtle_tf2_py").strip()
+    config = yaml.safe_load(Path(share, "rviz", "turtle_rviz.rviz").read_text())
+    manager = config["Visualization Manager"]
+    assert manager["Global Options"]["Fixed Frame"] == "world"
+    assert "rviz_default_plugins/TF" in [d["Class"] for d in manager["Displays"]]
+    executables = ok("ros2", "pkg", "executables", "turtle_tf2_py").splitlines()
+    assert "turtle_tf2_py turtle_tf2_message_broadcaster" in executables
+    assert Path(share, "launch", "turtle_tf2_sensor_message.launch.py").is_file()

@@ -2,10 +2,10 @@
 
 colcon installs a ROS 2 Python package as: the ament index marker
 share/ament_index/resource_index/packages/PKG, and share/PKG/ with its package.xml and data
-(launch/, config/). This does the same for every folder ros_tutorials_*/ that has a package.xml
-(and for the stand-ins: every other top-level folder with one, tf2_ros/ ...), the way
-`colcon build --symlink-install` does: share/PKG/package.xml, share/PKG/launch and
-share/PKG/config are links to the source, so an edited or new launch file is used at once.
+(launch/, config/, urdf/, meshes/, rviz/). This does the same for every folder
+ros_tutorials_*/ that has a package.xml (and for the stand-ins: every other top-level folder
+with one, tf2_ros/ ...), the way `colcon build --symlink-install` does: share/PKG/package.xml
+and its data folders are links to the source, so an edited or new launch file is used at once.
 The Python code itself is installed by pip (editable), not copied to share/.
 
 The interface packages in interfaces/ are installed by tools/build_interfaces.py (colcon copies
@@ -33,7 +33,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 INTERFACES = ROOT / "interfaces"
-DATA_FOLDERS = ("launch", "config", "rviz")  # what the setup.py files would list in data_files
+# What the packages' setup.py would list in data_files: launch files, parameters, and the URDF
+# pages' models, meshes and 3D-view configurations (urdf_tutorial, turtle_tf2_py's rviz/).
+DATA_FOLDERS = ("launch", "config", "urdf", "meshes", "rviz")
 INDEX = Path("share", "ament_index", "resource_index", "packages")
 # ROS 2 Python packages PyPI lacks, which this project provides (ament_copyright, rosbag2_py,
 # tf2_ros, ...): every other top-level folder with a package.xml. Their executables are their
