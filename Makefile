@@ -29,10 +29,11 @@ $(HOLD_REMOVED): tools/remove_ctrl_c_hold.py
 	test ! -x $(PY) || $(PY) -S tools/remove_ctrl_c_hold.py $(VENV)
 	mkdir -p $(VENV) && rm -f $(VENV)/.ctrl_c && touch $@
 
-$(INSTALLED): pyproject.toml | $(HOLD_REMOVED)
+$(INSTALLED): pyproject.toml tools/rosdep_here/pyproject.toml | $(HOLD_REMOVED)
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[test,interfaces]'
+	$(PY) -m pip install --quiet ./tools/rosdep_here
 	touch $@
 
 # colcon builds them, as a learner's workspace (tools/build_interfaces.py); after the

@@ -1,5 +1,10 @@
 """`ament_copyright [PATH ...]`: every source file below PATHS has a copyright notice and a
-licence header, or one line says which it lacks (status 1)."""
+licence header, or one line says which it lacks (status 1).
+
+The files judged are those ROS 2 Jazzy's ament_copyright judges: below a folder, the files
+of its extensions, leaving out folders whose name starts with `.` or `_`, folders holding an
+AMENT_IGNORE, and the `setup.py` beside a `package.xml` (a package's own setup.py carries no
+header); an empty file is counted ("file empty" with --verbose) and is no error."""
 
 from __future__ import annotations
 
@@ -30,7 +35,7 @@ SPDX = re.compile(r"SPDX-License-Identifier:\s*\S+")
 
 
 def source_files(paths: Sequence[str], excluded: set[Path]) -> Iterator[Path]:
-    """The source files named or below PATHS, each once, in order; hidden folders skipped."""
+    """The source files named or below PATHS, each once, in order (the module's rule)."""
     seen: set[Path] = set()
     for path in map(Path, paths):
         if path.is_file():
@@ -38,13 +43,29 @@ def source_files(paths: Sequence[str], excluded: set[Path]) -> Iterator[Path]:
         else:
             found = []
             for folder, folders, files in os.walk(path):
-                folders[:] = sorted(name for name in folders if not name.startswith("."))
-                found += [Path(folder, name) for name in sorted(files)]
+                if "AMENT_IGNORE" in folders + files:
+                    folders[:] = []
+                    continue
+                folders[:] = sorted(name for name in folders if name[0] not in "._")
+                package_level = "package.xml" in files
+                found += [
+                    Path(folder, name)
+                    for name in sorted(files)
+                    if not (package_level and name == "setup.py")
+                ]
         for file in found:
             wanted = file.suffix in SOURCE_SUFFIXES or file.name in SOURCE_NAMES
             if wanted and file.resolve() not in seen and file.resolve() not in excluded:
                 seen.add(file.resolve())
                 yield file
+
+
+def is_empty(file: Path) -> bool:
+    """Whether FILE has no content at all (an empty __init__.py)."""
+    try:
+        return file.stat().st_size == 0
+    except OSError:
+        return False
 
 
 def problems(file: Path) -> list[str]:
@@ -76,6 +97,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     checked = errors = 0
     for file in source_files(args.paths, excluded):
         checked += 1
+        if is_empty(file):
+            if args.verbose:
+                print(f"{file}: file empty")
+            continue
         found = problems(file)
         errors += len(found)
         for problem in found:

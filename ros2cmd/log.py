@@ -3,10 +3,11 @@
 A running node's logger level is shown and changed through ROS 2 Jazzy's logger services,
 ``<node>/get_logger_levels`` and ``<node>/set_logger_levels`` (rcl_interfaces), which a node
 serves when created with ``Node(..., enable_logger_service=True)``; every node of this
-project is. The node's logger is named after it: ``/ns1/topic_publisher`` logs as
+project's toolkit is, and the lessons whose level the pages change (the topic lesson's publisher,
+seed 004's talker). The node's logger is named after it: ``/ns1/topic_publisher`` logs as
 ``ns1.topic_publisher``.
 
-    rqt_logger_level                              every node that serves them, and its level
+    rqt_logger_level                              every node: its level, or why it cannot be set
     rqt_logger_level /ns1/topic_publisher         one node's level
     rqt_logger_level /ns1/topic_publisher debug   change it; the node logs DEBUG lines now
     roslaunch-logs                                the latest launch's log folder
@@ -69,14 +70,17 @@ def level_command(graph: Graph, node: str | None, level: str | None) -> None:
     if node is None:
         graph.settle()
         services = graph.service_types()
-        serving = [name for name in graph.node_names() if f"{name}/{GET}" in services]
-        if not serving:
-            raise ToolError(
-                f"no running node serves {GET}: a node does when created with "
-                "enable_logger_service=True (the lessons' talker and listener are)"
-            )
-        for full_name in serving:
-            print(f"{full_name}: {_described(get_level(graph, full_name))}")
+        nodes = graph.node_names()
+        if not nodes:
+            raise ToolError("no running node (rqt_logger_level lists the running nodes)")
+        for full_name in nodes:
+            if f"{full_name}/{GET}" in services:
+                print(f"{full_name}: {_described(get_level(graph, full_name))}")
+            else:
+                print(
+                    f"{full_name}: cannot be set: it serves no {full_name}/{GET} (created "
+                    "without enable_logger_service=True)"
+                )
         return
     if level is not None:
         set_level(graph, node, level)

@@ -8,6 +8,11 @@ at start; a publisher with other QoS that appears later is never heard ("offerin
 incompatible QoS ... DURABILITY"). ``AdaptiveSubscription`` picks the QoS the same way and
 creates the subscription again whenever the set of publisher QoS changes.
 
+A subscription made again as transient-local receives what the latching publishers still hold,
+which the volatile one before it may have received already: each message is taken once (by
+its publisher's stamp and sequence number), so a latched message is seen once, as ROS 1's
+latching gave it once.
+
 When no single QoS gets everything (transient-local and volatile publishers together), it
 subscribes volatile, which matches them all, and says once on stderr that what the
 transient-local publishers sent before it joined is not received. The other policies
@@ -20,6 +25,7 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+from collections import deque
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -27,6 +33,9 @@ if TYPE_CHECKING:  # rclpy is loaded where a subscription is made, not to build 
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
 CHECK_PERIOD = 0.2  # s between looks at the topic's publishers
+# Messages remembered to take each once across a new subscription: more than a publisher's
+# history a transient-local subscription is sent on joining (`rostopic pub` keeps 10).
+SEEN_MESSAGES = 1000
 # rclpy.qos's short keys, the choices ros2topic offers, written out so that building the parser
 # does not load rclpy (tests/test_cli_imports.py checks them against rclpy's).
 PROFILE_HISTORY = {  # QoSPresetProfiles.short_keys() -> the preset's history short key
@@ -103,6 +112,8 @@ class AdaptiveSubscription:
         self._next_check = 0.0
         self._warned_mixed = False
         self._incompatible: tuple[str, float] | None = None  # (policy, when reported)
+        self._seen: set[tuple[int, int]] = set()
+        self._seen_order: deque[tuple[int, int]] = deque()
         self.update(force=True)
 
     def update(self, force: bool = False) -> None:
@@ -139,11 +150,23 @@ class AdaptiveSubscription:
         self.subscription = self.graph.node.create_subscription(
             self.msg_type,
             self.topic,
-            self.callback,
+            self._receive,
             qos,
             raw=self.raw,
             event_callbacks=SubscriptionEventCallbacks(incompatible_qos=self._on_incompatible),
         )
+
+    def _receive(self, msg: Any, info: dict) -> None:
+        """The callback, once per message: a new subscription may be sent again what a
+        latching publisher holds."""
+        key = (info["source_timestamp"], info["publication_sequence_number"])
+        if key in self._seen:
+            return
+        self._seen.add(key)
+        self._seen_order.append(key)
+        if len(self._seen_order) > SEEN_MESSAGES:
+            self._seen.discard(self._seen_order.popleft())
+        self.callback(msg)
 
     def _on_incompatible(self, event: Any) -> None:
         """rmw reports a publisher we do not match: usually one that just appeared."""

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
+import shlex
 import sys
 from collections.abc import Collection, Sequence
 from importlib import metadata
@@ -46,6 +48,39 @@ PYTHON_KEYS = {
 # ROS 2 keys that a package here stands for: ROS 2 has tf2_ros (C++, with tf2_echo ...) and
 # tf2_ros_py (the Python module tf2_ros) apart; here the package tf2_ros is both.
 PROVIDED_BY = {"tf2_ros_py": "tf2_ros"}
+# A rosdep key is a name: a ROS package's, or one of rosdep's rules (Debian-like names such as
+# libboost-dev, libstdc++-dev). Anything else (spaces, `;`, `$(...)`) is not looked up, and is
+# shown quoted, never as part of a line to paste.
+KEY_PATTERN = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]*")
+# System keys of rosdep's rules (ros/rosdistro rosdep/base.yaml) and the Debian packages they
+# install on Ubuntu 24.04, ROS 2 Jazzy's platform (read 2026-11-28).
+SYSTEM_KEYS = {
+    "assimp": ("libassimp-dev",),
+    "boost": ("libboost-all-dev",),
+    "bullet": ("libbullet-dev",),
+    "clang-format": ("clang-format",),
+    "cmake": ("cmake",),
+    "cppcheck": ("cppcheck",),
+    "curl": ("libcurl4-openssl-dev", "curl"),
+    "doxygen": ("doxygen",),
+    "eigen": ("libeigen3-dev",),
+    "ffmpeg": ("ffmpeg", "libavcodec-dev", "libavformat-dev", "libavutil-dev", "libswscale-dev"),
+    "git": ("git",),
+    "graphviz": ("graphviz",),
+    "gtest": ("libgtest-dev",),
+    "libpcl-all-dev": ("libpcl-dev",),
+    "libqt5-core": ("libqt5core5t64",),
+    "nlohmann-json-dev": ("nlohmann-json3-dev",),
+    "openssl": ("openssl",),
+    "pkg-config": ("pkg-config",),
+    "sqlite3": ("sqlite3",),
+    "tinyxml": ("libtinyxml-dev",),
+    "tinyxml2": ("libtinyxml2-dev",),
+    "uncrustify": ("uncrustify",),
+    "wget": ("wget",),
+    "yaml-cpp": ("libyaml-cpp-dev",),
+    "zlib": ("zlib1g-dev",),
+}
 # rosdep's commands this rosdep has no answer for.
 OTHER_COMMANDS = ("db", "resolve", "search", "what-needs", "where-defined", "fix-permissions")
 # Test dependencies of every ament_cmake package `ros2 pkg create` makes, needed only with
@@ -80,7 +115,9 @@ def parser() -> Parser:
     p.add_argument("--rosdistro", help="the ROS distribution (this environment: jazzy)")
     p.add_argument("--default-yes", "-y", action="store_true", help="accepted (installs nothing)")
     p.add_argument("--simulate", "-s", action="store_true", help="do not print the success line")
-    p.add_argument("-r", dest="robust", action="store_true", help="accepted")
+    p.add_argument(
+        "-r", dest="robust", action="store_true", help="continue despite keys not resolved"
+    )
     p.add_argument("-q", dest="quiet", action="store_true", help="accepted")
     p.add_argument("--skip-keys", action="append", default=[], help="keys not to check")
     p.add_argument(
@@ -147,8 +184,25 @@ def python_installed(key: str) -> tuple[bool, str]:
     return True, name
 
 
+def is_key(key: str) -> bool:
+    """Whether KEY is a name rosdep could look up (KEY_PATTERN)."""
+    return KEY_PATTERN.fullmatch(key) is not None
+
+
+def shown(key: str) -> str:
+    """KEY as printed: itself when it is a key, else its characters escaped (control
+    characters, non-ASCII) and single-quoted as the shell quotes, so that it stays on its line
+    and pasted runs nothing."""
+    return key if is_key(key) else shlex.quote(key.encode("unicode_escape").decode("ascii"))
+
+
 def missing_reason(key: str, index: Collection[str], workspace: Collection[str]) -> str | None:
     """None if KEY is here, else how to get it, in one line."""
+    if not is_key(key):
+        return (
+            "not a rosdep key (a key is a package name: letters, digits and - _ . +); "
+            "nothing to install for it"
+        )
     if key in index or PROVIDED_BY.get(key) in index:
         return None
     if key in workspace:
@@ -158,23 +212,48 @@ def missing_reason(key: str, index: Collection[str], workspace: Collection[str])
         )
     if key.startswith("python3-"):
         installed, name = python_installed(key)
-        return None if installed else f"pip install {name}"
+        return None if installed else f"pip install {shlex.quote(name)}"
     impossible = not_available_line(key)
     if impossible:
         return impossible
     if key in PYPI_NAMES:
-        return f"pip install {PYPI_NAMES[key]}"
-    if "-" in key:  # not a ROS package name: a system package of rosdep's rules
-        return "a system package (apt, on a ROS installation): not available here"
+        return f"pip install {shlex.quote(PYPI_NAMES[key])}"
+    if key in SYSTEM_KEYS:
+        debian = " ".join(shlex.quote(name) for name in SYSTEM_KEYS[key])
+        return f"a system package, not a ROS one: sudo apt install {debian}"
+    if not re.fullmatch(r"[a-z][a-z0-9_]*", key):  # not a ROS package name: a rule's key
+        return (
+            "a system package of rosdep's rules, not a ROS one: on Ubuntu, the Debian "
+            "package its rule names (ros/rosdistro rosdep/base.yaml), installed with apt"
+        )
     return (
         f"no package '{key}' in the ament index: if PyPI has it, pip install "
         f"ros-jazzy-{key.replace('_', '-')}; otherwise it needs a ROS installation"
     )
 
 
-def check(args: argparse.Namespace) -> tuple[dict, dict, dict]:
-    """Each package's keys; per package its missing keys with how to get them; and the
-    BUILD_TESTING_ONLY keys it names that are not here."""
+def ready_packages(
+    selected: dict[str, object], missing: dict[str, list], types: Sequence[str]
+) -> list[str]:
+    """The packages whose keys are all here and whose workspace dependencies are ready too."""
+    depends = {
+        name: {key for key in keys(package, types) if key in selected and key != name}
+        for name, package in selected.items()
+    }
+    ready: set[str] = set()
+    changed = True
+    while changed:
+        changed = False
+        for name in selected:
+            if name not in ready and name not in missing and depends[name] <= ready:
+                ready.add(name)
+                changed = True
+    return sorted(ready)
+
+
+def check(args: argparse.Namespace) -> tuple[dict, dict, dict, list[str]]:
+    """Each package's keys; per package its missing keys with how to get them; the
+    BUILD_TESTING_ONLY keys it names that are not here; and the packages that are ready."""
     if not args.arguments:
         raise ToolError("no packages or stacks specified")
     if args.from_paths:
@@ -199,7 +278,7 @@ def check(args: argparse.Namespace) -> tuple[dict, dict, dict]:
                 untested.setdefault(name, []).append(key)
             elif reason:
                 missing.setdefault(name, []).append((key, reason))
-    return all_keys, missing, untested
+    return all_keys, missing, untested, ready_packages(selected, missing, types)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -217,9 +296,9 @@ def run(args: argparse.Namespace) -> int:
         raise ToolError(f"Unsupported command {args.command}.")
     if args.rosdistro not in (None, "jazzy"):
         raise ToolError(f"--rosdistro {args.rosdistro}: this environment is ROS 2 jazzy")
-    all_keys, missing, untested = check(args)
+    all_keys, missing, untested, ready = check(args)
     if args.command == "keys":
-        print("\n".join(sorted({key for found in all_keys.values() for key in found})))
+        print("\n".join(sorted({shown(key) for found in all_keys.values() for key in found})))
         return 0
     for name, found in untested.items():
         print(
@@ -240,7 +319,18 @@ def run(args: argparse.Namespace) -> int:
     )
     for name, found in missing.items():
         for key, reason in found:
-            print(f"{name}: {key}: {reason}", file=sys.stderr)
+            print(f"{name}: {shown(key)}: {reason}", file=sys.stderr)
+    if ready:
+        print(
+            f"ready: every dependency of {', '.join(ready)} is here "
+            f"(colcon build --packages-select {' '.join(ready)})",
+            file=sys.stderr,
+        )
+    if args.command == "install" and args.robust:
+        print("Continuing to install resolvable dependencies...")
+        if not args.simulate:
+            print("#All required rosdeps installed successfully")
+        return 0
     return 1
 
 

@@ -38,6 +38,9 @@ MAX_REASON = 300  # characters: a reason longer than that is cut (the log has it
 INTERFACE_SUFFIXES = ("_Request", "_Response", "_Goal", "_Result", "_Feedback")
 # `colcon test`: pytest reports on standard output; its last lines say why it stopped.
 KEPT_STDOUT_LINES = 200
+# Terminal control sequences (CSI colours, OSC titles, two-character escapes): in a terminal
+# colcon has CMake colour its messages, and the patterns below read the text without them.
+ANSI_SEQUENCE = re.compile(r"\x1b(?:\[[0-?]*[ -/]*[@-~]|\][^\x07\x1b]*(?:\x07|\x1b\\)|[@-Z\\-_])")
 
 
 class FailureLineEventHandler(EventHandlerExtensionPoint):
@@ -66,14 +69,19 @@ class FailureLineEventHandler(EventHandlerExtensionPoint):
             lines = self._stderr.pop(job, [])
             stdout = self._stdout.pop(job, ())
             if data.rc and data.rc != SIGINT_RESULT:
-                text = b"".join(lines).decode(errors="replace")
+                text = plain(b"".join(lines))
                 source = Path(job.task_context.pkg.path)
                 if testing(job):
-                    output = b"".join(stdout).decode(errors="replace")
+                    output = plain(b"".join(stdout))
                     line = tests_not_run_line(data.identifier, source, text, output, data.rc)
                 else:
                     line = failure_line(data.identifier, source, text, data.rc)
                 print(line, file=sys.stderr)
+
+
+def plain(output: bytes) -> str:
+    """A tool's output as text without its terminal control sequences."""
+    return ANSI_SEQUENCE.sub("", output.decode(errors="replace"))
 
 
 def testing(job: Any) -> bool:

@@ -30,6 +30,7 @@ sourced workspace (an overlay: a prefix other than this environment) shadows a s
 
 from __future__ import annotations
 
+import difflib
 import importlib.util
 import os
 import pkgutil
@@ -40,6 +41,7 @@ from functools import cache
 from pathlib import Path
 
 from ros_tutorials_common import ament, lesson_scripts
+from ros_tutorials_common.pypi_packages import cpp_package_line
 
 PACKAGE_PREFIX = "ros_tutorials_"
 DISTRIBUTION = "ros-tutorials"
@@ -338,10 +340,27 @@ def resolve_package(name: str) -> tuple[str, ...]:
     return tuple(package for package in targets if package in package_dirs())
 
 
-def known_package_names() -> str:
-    """The package names ``command()`` accepts, as one line."""
-    aliases = [name for name in PACKAGE_ALIASES if resolve_package(name)]
-    return ", ".join(runnable_packages()) + "; the seeds' names: " + ", ".join(aliases)
+def known_package_names(near: str = "") -> str:
+    """The packages `ros2 pkg list` shows (the ament index) and the names `ros2 run` takes for
+    them (demo_nodes_cpp, the seeds' beginner_tutorials), as one line: the names nearest to
+    NEAR first (a typo's intended name), then the rest in order."""
+    index = ament.packages()
+    seeds = [name for name in PACKAGE_ALIASES if name not in index and resolve_package(name)]
+    names = sorted([*index, *seeds])
+    nearest = difflib.get_close_matches(near, names, n=5, cutoff=0.6) if near else []
+    return ", ".join([*nearest, *(name for name in names if name not in nearest)])
+
+
+def unknown_package_line(name: str) -> str:
+    """Why NAME is no package here, in one line: built in a workspace that is not sourced, a
+    C++ package of the official pages (with its Python twin), or unknown, with the list of
+    known packages nearest names first. The one text `ros2 run`, rosrun, a launch file's
+    `$(find-pkg-share)` and `ros2 launch PKG FILE` give."""
+    return (
+        not_sourced_hint(name)
+        or cpp_package_line(name)
+        or f"unknown package {name!r}; known packages: {known_package_names(name)}"
+    )
 
 
 @cache
@@ -405,6 +424,10 @@ def command(package: str, executable: str) -> list[str]:
     rqt_graph`` (a tool whose package and executable have one name) runs this project's
     command of that name. Raises UnknownExecutable naming the candidates.
     """
+    if PACKAGE_ALIASES.get(package) and not overlay_package(package):
+        hint = not_sourced_hint(package)
+        if hint:  # the learner's own package of a seed's name, built but not sourced
+            raise PackageNotFound(hint)
     known = executable_commands(package)
     if not known:
         if package == executable and executable in _tools():
@@ -415,18 +438,13 @@ def command(package: str, executable: str) -> list[str]:
             )
         if package in ament.packages():
             raise UnknownExecutable(f"package {package!r} has no executables")
-        hint = not_sourced_hint(package)
-        if hint:
-            raise PackageNotFound(hint)
-        raise PackageNotFound(
-            f"unknown package {package!r}; known packages: {known_package_names()}"
-        )
+        raise PackageNotFound(unknown_package_line(package))
     # The name as given first (an installed `listener.py`); then without the suffix the book's
     # ROS 1 files sometimes add to a script's name (type="talker.py").
     name = executable if executable in known else executable.removesuffix(".py")
     if name not in known:
         hint = "" if overlay_package(package) else not_sourced_hint(package)
-        if hint:  # a seed's name (my_package) that the learner's own package has too
+        if hint:  # a package of this environment's name that the learner's own has too
             raise PackageNotFound(hint)
         have = ", ".join(sorted(known))
         raise UnknownExecutable(
@@ -449,10 +467,7 @@ def ament_package(name: str) -> str:
         return targets[0]
     if targets:
         raise UnknownPackage(f"{name} (a seed's package) stands for {', '.join(targets)}; name one")
-    raise UnknownPackage(
-        f"unknown package {name!r}; known packages: {known_package_names()} "
-        "(`rospack list` shows every package of the ament index)"
-    )
+    raise UnknownPackage(unknown_package_line(name))
 
 
 def share_directory(name: str) -> Path:
@@ -481,6 +496,8 @@ def launch_packages(name: str) -> tuple[str, ...]:
     """The packages whose share folders `ros2 launch NAME FILE` looks in: this project's that
     the name stands for (a seed's name, `turtlesim`), else the package of the ament index of
     that name (a learner's own); none if it is neither."""
+    if PACKAGE_ALIASES.get(name) and not overlay_package(name) and not_sourced_hint(name):
+        return ()  # the learner's own package of a seed's name, built but not sourced
     found = resolve_package(name)
     if not found and name in ament.packages():
         found = (name,)

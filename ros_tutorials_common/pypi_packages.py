@@ -63,3 +63,49 @@ def not_available_line(package: str) -> str | None:
             f"{TWINS_PAGE}"
         )
     return f"{package}, {what}, is not available without a ROS installation (not on PyPI)"
+
+
+# The C++ packages of the official pages and of ros2/examples -> their Python twins' packages.
+CPP_TWINS = {
+    "cpp_pubsub": "py_pubsub",
+    "cpp_srvcli": "py_srvcli",
+    "cpp_parameters": "python_parameters",
+    "cpp_parameter_event_handler": "python_parameter_event_handler",
+    "action_tutorials_cpp": "action_tutorials_py",
+    "learning_tf2_cpp": "learning_tf2_py",
+    "bag_recorder_nodes": "bag_recorder_nodes_py",
+    "examples_rclcpp_multithreaded_executor": "examples_rclpy_executors",
+    **{
+        f"examples_rclcpp_minimal_{name}": f"examples_rclpy_minimal_{name}"
+        for name in (
+            "publisher",
+            "subscriber",
+            "client",
+            "service",
+            "action_client",
+            "action_server",
+        )
+    },
+}
+
+
+def cpp_twin(package: str) -> str | None:
+    """The Python twin of a C++ package of the pages (cpp_pubsub -> py_pubsub); for another of
+    ros2/examples' rclcpp packages, its rclpy packages; else None."""
+    if package in CPP_TWINS:
+        return CPP_TWINS[package]
+    if package.startswith("examples_rclcpp_"):
+        return "one of ros2/examples' examples_rclpy_* packages"
+    return None
+
+
+def cpp_package_line(package: str) -> str | None:
+    """One sentence for a C++ package of the pages, which cannot be built here: rclcpp's, as
+    colcon's build line says it, with the Python twin; None for any other name."""
+    twin = cpp_twin(package)
+    if twin is None:
+        return None
+    return (
+        f"{package!r} is a C++ package of the official pages; {not_available_line('rclcpp')}; "
+        f"this one's is {twin}"
+    )

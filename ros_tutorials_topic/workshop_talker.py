@@ -13,7 +13,8 @@ from std_msgs.msg import String
 
 class Talker(Node):
     def __init__(self):
-        super().__init__("talker")  # rospy.init_node('talker')
+        # rospy.init_node('talker'); the logger services let rqt_logger_level set its level
+        super().__init__("talker", enable_logger_service=True)
         self.pub = self.create_publisher(String, "chatter", 10)  # queue_size=10
         self.timer = self.create_timer(0.1, self.talk)  # rospy.Rate(10): ten times a second
 

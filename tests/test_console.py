@@ -142,3 +142,30 @@ def test_roslaunch_logs_prints_the_latest_launch_folder(node_process, tmp_path, 
     assert proc.wait() == 0
     assert proc.lines == [logging_to.strip()]
     assert latest_launch_folder() == Path(logging_to.strip())
+
+
+def test_seed_004_sets_its_talkers_level_and_the_listing_names_who_cannot(node_process):
+    """Seed 004's step 30: `rosrun my_package talker.py`, then rqt_logger_level. The talker
+    serves the logger services; a node that does not (a plain rclpy node) is listed with why."""
+    talker = node_process(str(BIN / "rosrun"), "my_package", "talker.py")
+    talker.wait_for_output(lambda lines: any("hello world" in x for x in lines), what="talker")
+    plain = node_process(
+        "-c",
+        "import rclpy; from ros_tutorials_common.dds import apply_dds_defaults; "
+        "apply_dds_defaults(); rclpy.init(); n = rclpy.create_node('plain'); "
+        "print('up', flush=True); rclpy.spin(n)",
+    )
+    plain.wait_for_output(lambda lines: "up" in lines)
+    listed = "\n".join(finished(tool(node_process, "rqt_logger_level")))
+    assert "/talker: UNSET (the default applies" in listed, listed
+    assert (
+        "/plain: cannot be set: it serves no /plain/get_logger_levels (created without "
+        "enable_logger_service=True)" in listed
+    ), listed
+    assert finished(tool(node_process, "rqt_logger_level", "/talker", "warn"))[-1] == (
+        "/talker: WARN"
+    )
+    quiet_from = time.time()
+    talker.wait_for_output(lambda lines: time.time() - quiet_from > 1.5, timeout=10)
+    silent = [t for t in _stamped(talker.lines, "hello world") if t > quiet_from + 0.3]
+    assert not silent, f"INFO lines while the level was WARN: {silent}"

@@ -258,8 +258,8 @@ CHECKS: dict[tuple[str, str], Check] = {
     ): Check(scene="union", lines=(1, 2)),
     (
         "docs/rqt-and-logging.md",
-        "rqt_logger_level                                   # every node that serves them,"
-        " and its level",
+        "rqt_logger_level                                   # every node: its level, or why"
+        " it cannot be set",
     ): Check(scene="union"),
     # seeds/README.md
     (

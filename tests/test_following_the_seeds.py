@@ -107,7 +107,7 @@ def test_the_seeds_package_names_find_this_projects_executables():
 
 def test_rosrun_unknown_names_say_the_candidates_in_one_line():
     for args, expected in [
-        (("nope", "talker"), "unknown package 'nope'; known packages: ros_tutorials_action"),
+        (("nope", "talker"), "unknown package 'nope'; known packages: "),
         (("ros_tutorials_topic", "nope"), "has no executable 'nope'; it has: "),
         (("beginner_tutorials",), "beginner_tutorials has: aandb_listener, aandb_talker"),
     ]:
@@ -115,7 +115,11 @@ def test_rosrun_unknown_names_say_the_candidates_in_one_line():
         assert result.returncode == 1, result
         lines = result.stderr.strip().splitlines()
         assert len(lines) == 1 and expected in lines[0], result.stderr
-    assert "beginner_tutorials" in finished("rosrun", "nope", "x").stderr
+    # A seed's name is offered for its typo.
+    assert (
+        "known packages: beginner_tutorials, "
+        in finished("rosrun", "beginner_tutorial", "x").stderr
+    )
     result = finished("rosrun", "ros_tutorials_topic", "talker", "__master:=http://x:11311")
     assert result.returncode == 1 and "ROS 2 has no master" in result.stderr
     assert "Traceback" not in result.stderr
@@ -300,6 +304,17 @@ def test_rosrun_refuses_malformed_ros_arguments_in_one_line_before_the_node_star
         (("roscd", "nope"), "unknown package 'nope'"),
         (("roscd",), "usage: roscd PKG[/DIR]"),
         (("rosed", "ros_tutorials_topic", "talker.py"), "ros_tutorials_topic/talker.py"),
+        # Seed 000's C++ file: the lesson module that runs as service_client here.
+        (
+            ("rosed", "ros_tutorials_service", "service_client.cpp"),
+            "ros_tutorials_service has no service_client.cpp here; its node service_client is "
+            f"client.py: type: ${{EDITOR:-nano}} {ROOT / 'ros_tutorials_service/client.py'}",
+        ),
+        (
+            ("rosed", "ros_tutorials_service/src", "service_client.cpp"),
+            f"type: ${{EDITOR:-nano}} {ROOT / 'ros_tutorials_service/client.py'}",
+        ),
+        (("rosed", "ros_tutorials_topic", "nope.py"), "ros_tutorials_topic has no file nope.py"),
         (("catkin_make",), "run `make interfaces`"),
         (("catkin_make",), "type: colcon build, then source install/setup.bash"),
         (

@@ -11,10 +11,11 @@
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 
 import pytest
-from helpers import NodeProcess
+from helpers import TIMEOUT, NodeProcess, run
 
 BIN = Path(sys.executable).parent
 RUNS = 20
@@ -125,3 +126,23 @@ def test_echo_hears_a_latched_and_a_periodic_publisher(node_process, latched_fir
     echo.wait_for_output(lambda lines: any(note in line for line in lines), what="the QoS note")
     assert echo.interrupt() == 0
     assert "incompatible" not in echo.output
+
+
+def test_a_latched_message_arrives_once_at_each_subscriber(node_process):
+    """ROS 1's latched `rostopic pub`: the lesson's listener (volatile) and `rostopic echo`
+    running before it (its subscription made again as transient-local once it sees the
+    latching publisher) each get the message once, however long the publisher stays."""
+    listener = node_process("-m", "ros_tutorials_topic.listener")
+    echo = _rostopic(node_process, "echo", "/chatter")
+    deadline = time.monotonic() + TIMEOUT  # both subscribed before the publisher starts
+    while "Subscription count: 2" not in run("ros2", "topic", "info", "/chatter").stdout:
+        assert time.monotonic() < deadline, "the listener and echo did not subscribe"
+    latched = _rostopic(node_process, "pub", "/chatter", "std_msgs/String", "Hello")
+    listener.wait_for_output(lambda lines: any("I heard: [Hello]" in x for x in lines))
+    _echoed(echo, "Hello")
+    heard = time.monotonic()
+    # Long enough for a copy sent again, or a subscription made again, to have arrived.
+    listener.wait_for_output(lambda lines: time.monotonic() - heard > 3.0, timeout=30)
+    assert sum("I heard: [Hello]" in x for x in listener.lines) == 1, listener.output
+    assert echo.lines.count("data: Hello") == 1, echo.output
+    assert latched.interrupt() == 0

@@ -76,9 +76,13 @@ def test_a_lesson_shows_init_spin_and_shutdown(path):
     assert "ros_tutorials_common" not in source and "DISCOVERY" not in source
 
 
-# The lesson that teaches changing a node's log level while it runs (docs/rqt-and-logging.md:
-# rqt_logger_level /ns1/topic_publisher warn): the one node that serves the logger services.
-LOGGING_LESSON = ROOT / "ros_tutorials_topic" / "publisher.py"
+# The lessons whose log level is changed while they run (docs/rqt-and-logging.md:
+# rqt_logger_level /ns1/topic_publisher warn; seed 004's step 30 on its talker): the nodes
+# that serve the logger services.
+LOGGING_LESSONS = (
+    ROOT / "ros_tutorials_topic" / "publisher.py",
+    ROOT / "ros_tutorials_topic" / "workshop_talker.py",
+)
 
 
 def node_creations(path: Path) -> list[ast.Call]:
@@ -89,12 +93,12 @@ def node_creations(path: Path) -> list[ast.Call]:
 
 
 @pytest.mark.parametrize("path", LESSON_FILES, ids=lesson_name)
-def test_only_the_logging_lesson_serves_logger_levels(path):
+def test_only_the_logging_lessons_serve_logger_levels(path):
     nodes = node_creations(path)
     assert nodes, f"{path.name} creates no node"
     for call in nodes:
         flags = {kw.arg: ast.unparse(kw.value) for kw in call.keywords}
-        expected = "True" if path == LOGGING_LESSON else None
+        expected = "True" if path in LOGGING_LESSONS else None
         assert flags.get("enable_logger_service") == expected, ast.unparse(call)
 
 

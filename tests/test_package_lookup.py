@@ -170,3 +170,46 @@ def test_a_launch_file_with_a_huge_eval_fails_in_one_line(tmp_path):
     line = fails("roslaunch", str(path), "--print", timeout=120)
     assert line.startswith(f"error: {path}:1: $(eval [[1]*1000000]*1000000 ==")
     assert line.endswith("failed: a value longer than 1048576 characters")
+
+
+def test_an_unknown_package_lists_what_ros2_pkg_list_shows_nearest_first():
+    """`ros2 run`, rosrun and a launch file's $(find-pkg-share) name an unknown package in
+    one line: the packages `ros2 pkg list` shows and the names `ros2 run` takes for them
+    (demo_nodes_cpp, the seeds'), the nearest names first (turtlesim for turtlesm)."""
+    listed = ok("ros2", "pkg", "list").split()
+    line = fails("rosrun", "turtlesm", "turtlesim_node").removeprefix("error: ")
+    start = "unknown package 'turtlesm'; known packages: "
+    assert line.startswith(start), line
+    named = line.removeprefix(start).split(", ")
+    assert named[0] == "turtlesim", named[:5]
+    seeds = {name for name in packages.PACKAGE_ALIASES if packages.resolve_package(name)}
+    assert sorted(named) == sorted({*listed, *seeds})
+    assert {"turtlesim", "xacro", "demo_nodes_cpp"} <= set(named)
+    assert fails("ros2", "run", "turtlesm", "turtlesim_node") == (
+        f"error: Package 'turtlesm' not found ({line})"
+    )
+    with pytest.raises(packages.UnknownPackage) as raised:
+        packages.share_directory("turtlesm")  # $(find-pkg-share turtlesm) in a launch file
+    assert str(raised.value) == line
+
+
+@pytest.mark.parametrize(
+    "package,executable,twin",
+    [
+        ("cpp_pubsub", "talker", "py_pubsub"),
+        ("examples_rclcpp_minimal_subscriber", "subscriber_member_function",
+         "examples_rclpy_minimal_subscriber"),
+    ],
+)  # fmt: skip
+def test_a_cpp_package_of_the_pages_names_its_python_twin(package, executable, twin):
+    line = fails("rosrun", package, executable)
+    assert line == (
+        f"error: '{package}' is a C++ package of the official pages; rclcpp, ROS 2's C++ "
+        "client library, is not available without a ROS installation (it is not on PyPI): the "
+        "C++ pages cannot build here; their Python twins are listed in "
+        f"{Path(__file__).resolve().parent.parent / 'docs' / 'official-tutorials.md'}; this "
+        f"one's is {twin}"
+    ), line
+    assert fails("ros2", "run", package, executable) == (
+        f"error: Package '{package}' not found ({line.removeprefix('error: ')})"
+    )

@@ -147,3 +147,90 @@ def test_conditions_are_evaluated_and_a_broken_package_xml_is_one_line(tmp_path)
     assert result.returncode == 1 and "Traceback" not in result.stderr, result.stderr
     assert result.stderr.startswith("error: package conditional: ")
     assert result.stderr.count("\n") == 1
+
+
+def test_a_key_that_is_not_a_name_is_refused_and_never_part_of_a_line_to_paste(tmp_path):
+    """A package.xml's key with shell in it is not looked up: it is shown quoted as a key that
+    cannot be resolved; nothing printed would run it when pasted."""
+    create(tmp_path, "--build-type", "ament_python", "my_package")
+    add_depend(tmp_path, "my_package", "<depend>python3-numpy; touch PWNED4</depend>")
+    add_depend(tmp_path, "my_package", "<depend>$(touch PWNED5)</depend>")
+    add_depend(tmp_path, "my_package", "<depend>it's $(touch PWNED6)</depend>")
+    result = run(tmp_path, *PAGES_LINE)
+    assert result.returncode == 1 and result.stdout == ""
+    lines = result.stderr.splitlines()
+    assert "my_package: 'python3-numpy; touch PWNED4': not a rosdep key" in result.stderr, lines
+    assert "my_package: '$(touch PWNED5)': not a rosdep key" in result.stderr, lines
+    assert "pip install" not in result.stderr and "ros-jazzy-$(" not in result.stderr
+    keys = run(tmp_path, "keys", "-i", "--from-paths", "src")
+    assert "'python3-numpy; touch PWNED4'" in keys.stdout.splitlines()
+    # Pasting every line printed runs nothing of the package.xml's.
+    for line in (result.stderr + keys.stdout).splitlines():
+        for word in line.split(": "):
+            subprocess.run(
+                ["bash", "-c", f": {word}"], cwd=tmp_path, capture_output=True, timeout=10
+            )
+    for name in ("PWNED4", "PWNED5", "PWNED6"):
+        assert not (tmp_path / name).exists(), name
+
+
+def test_system_keys_are_answered_with_the_debian_package(tmp_path):
+    """doxygen, eigen are rosdep rules for system packages: apt's package, not a ROS wheel."""
+    create(tmp_path, "--build-type", "ament_python", "my_package")
+    add_depend(tmp_path, "my_package", "<doc_depend>doxygen</doc_depend>")
+    add_depend(tmp_path, "my_package", "<depend>eigen</depend>")
+    add_depend(tmp_path, "my_package", "<depend>libfoo-dev</depend>")
+    result = run(tmp_path, *PAGES_LINE, "-t", "doc", "-t", "build")
+    assert result.returncode == 1
+    lines = result.stderr.splitlines()
+    assert "my_package: doxygen: a system package, not a ROS one: sudo apt install doxygen" in lines
+    assert (
+        "my_package: eigen: a system package, not a ROS one: sudo apt install libeigen3-dev"
+        in lines
+    )
+    assert "ros-jazzy-doxygen" not in result.stderr and "ros-jazzy-eigen" not in result.stderr
+    assert any(line.startswith("my_package: libfoo-dev: a system package") for line in lines)
+
+
+def test_a_cpp_package_in_the_workspace_leaves_the_python_ones_ready(tmp_path):
+    """A learner who did the C++ pages first: rclcpp is reported as a key that cannot be
+    resolved, and the line after the error says which packages are ready to build; -r, as
+    rosdep's, goes on (status 0)."""
+    create(tmp_path, "--build-type", "ament_cmake", "cpp_pubsub", "--dependencies", "rclcpp")
+    create(tmp_path, "--build-type", "ament_python", "py_pubsub", "--dependencies", "rclpy")
+    create(tmp_path, "--build-type", "ament_python", "uses_cpp", "--dependencies", "cpp_pubsub")
+    result = run(tmp_path, *PAGES_LINE)
+    assert result.returncode == 1 and result.stdout == ""
+    lines = [line for line in result.stderr.splitlines() if not line.startswith("note: ")]
+    assert lines[0].startswith("ERROR: the following packages/stacks could not have")
+    assert lines[2].startswith("cpp_pubsub: rclcpp: rclcpp, ROS 2's C++ client library")
+    assert lines[3:] == [
+        "ready: every dependency of py_pubsub is here (colcon build --packages-select py_pubsub)"
+    ]
+    robust = run(tmp_path, *PAGES_LINE, "-r")
+    assert robust.returncode == 0, robust.stderr
+    assert robust.stdout == (
+        "Continuing to install resolvable dependencies...\n"
+        "#All required rosdeps installed successfully\n"
+    )
+
+
+def test_the_rosdep_pages_pip_install_rosdep_leaves_this_rosdep_in_place():
+    """The Rosdep page's `pip install rosdep`, typed in the activated environment: rosdep is
+    installed already (this environment's distribution of that name), so PyPI's, which would
+    replace the `rosdep` command, is not fetched."""
+    result = subprocess.run(
+        [sys.executable, "-m", "pip", "install", "--dry-run", "--no-index", "rosdep"],
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "Requirement already satisfied: rosdep" in result.stdout, result.stdout
+    assert "Would install" not in result.stdout
+    shown = subprocess.run(
+        [sys.executable, "-m", "pip", "show", "rosdep"], capture_output=True, text=True,
+        timeout=TIMEOUT,
+    )  # fmt: skip
+    assert "Summary: This environment's rosdep" in shown.stdout, shown.stdout
+    assert run(Path.cwd(), "init").stdout.startswith("rosdep init: nothing to set up here")

@@ -5,6 +5,8 @@ latching), so hz counts it once however many subscribers join."""
 
 from __future__ import annotations
 
+import itertools
+
 from helpers import BIN
 
 
@@ -40,10 +42,29 @@ def test_two_latched_messages_are_one_rate_then_no_new_messages(ros_domain, node
     assert shown[shown.index(rates[0]) + 1 :] == ["no new messages"] * (len(shown) - 1), lines
     echo.wait_for_text("data: two")
     assert [line for line in echo.lines if line.startswith("data:")] == ["data: one", "data: two"]
-    # A volatile subscriber that joins late still gets it: sent again for it (to all).
-    volatile = node_process(
-        str(BIN / "ros2"), "topic", "echo", "/hz_latched", "--qos-durability", "volatile"
-    )
-    volatile.wait_for_text("data: ")
-    for proc in (hz, echo, volatile, first, second):
+    for proc in (hz, echo, first, second):
         assert proc.interrupt() == 0
+
+
+def bandwidths(lines: list[str]) -> list[float]:
+    """bw's figures, in B/s, in the order printed."""
+    return [float(line.split(" B/s")[0]) for line in lines if " B/s from " in line]
+
+
+def test_bw_falls_after_the_publisher_stops(ros_domain, node_process):
+    """ROS 1's rostopic bw divides the window's bytes by the time from its first message until
+    now: when the messages stop, the figure falls each second."""
+    pub = node_process(
+        str(BIN / "rostopic"), "pub", "-r", "10", "/bw_topic", "std_msgs/String", "x"
+    )
+    bw = node_process(str(BIN / "rostopic"), "bw", "/bw_topic")
+    bw.wait_for_output(lambda lines: len(bandwidths(lines)) >= 2, what="two bandwidths")
+    assert pub.interrupt() == 0
+    stopped = len(bandwidths(bw.lines))
+    # The first report after the stop may still count a message; the ones after it cannot.
+    lines = bw.wait_for_output(
+        lambda lines: len(bandwidths(lines)) >= stopped + 4, what="four bandwidths after the stop"
+    )
+    after = bandwidths(lines)[stopped + 1 :]
+    assert all(later < earlier for earlier, later in itertools.pairwise(after)), lines
+    assert bw.interrupt() == 0

@@ -106,6 +106,8 @@ def test_first_package_ament_python_builds_and_runs(tmp_path):
     )
     built = colcon_build(workspace)
     assert "Summary: 1 package finished" in built
+    # The template's setup.py (tests_require) builds without a warning, as on Jazzy.
+    assert "stderr output" not in built, built
     assert ok(sourced("ros2 run my_package my_node"), workspace) == "Hi from my_package.\n"
     prefix = workspace / "install" / "my_package"
     listed = ok(sourced("ros2 pkg list"), workspace).splitlines()
@@ -116,6 +118,15 @@ def test_first_package_ament_python_builds_and_runs(tmp_path):
     assert ok(sourced("rosrun my_package my_node"), workspace) == "Hi from my_package.\n"
     node = "install/my_package/lib/my_package/my_node"
     assert ok(sourced(node), workspace) == "Hi from my_package.\n"
+
+
+def test_a_learners_package_is_built_with_jazzys_setuptools():
+    """colcon runs an ament_python package's setup.py with this environment's Python, so its
+    setuptools is the learner's: ROS 2 Jazzy's (Ubuntu 24.04's 68), whatever the Python. Since
+    72, setuptools no longer knows the template's `tests_require` (a warning on each build, and
+    `colcon test` finds no pytest tests); a 3.12 venv would get the newest."""
+    shown = ok(activated("python -c 'import setuptools; print(setuptools.__version__)'"), DATA)
+    assert shown == "68.1.2\n"
 
 
 def test_a_package_built_but_not_sourced_says_source_install_setup_bash(tmp_path):
@@ -628,3 +639,108 @@ def test_colcon_cd_with_this_environments_lines(tmp_path):
     shown = ok(activated(script), tmp_path)
     assert shown.splitlines()[-1] == str(workspace / "src" / "my_package")
     assert (share / "colcon_argcomplete" / "hook" / "colcon-argcomplete.bash").is_file()
+
+
+def test_a_package_named_as_a_seeds_built_but_not_sourced_is_not_the_lesson(tmp_path):
+    """`my_package` (seed 004's name) and `pub_sub` (seed 003's), the learner's own, built in
+    ~/ros2_ws and not sourced: the same line as any other name, not the lesson's node."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_python --node-name talker my_package")
+    create(workspace, "--build-type ament_python --node-name publisher pub_sub")
+    colcon_build(workspace)
+    for command in (
+        "ros2 run my_package talker",
+        "rosrun my_package talker",
+        "ros2 run pub_sub publisher",
+        "ros2 launch my_package talker.launch",
+    ):
+        result = bash(activated(command), workspace)
+        assert result.returncode == 1 and result.stdout == "", (command, result.stdout)
+        assert result.stderr.count("\n") == 1, result.stderr
+        assert "is built in" in result.stderr and "but that workspace is not sourced" in (
+            result.stderr
+        ), (command, result.stderr)
+    # Sourced, the learner's own package runs.
+    shown = ok(sourced("ros2 run my_package talker"), workspace)
+    assert shown == "Hi from my_package.\n"
+
+
+def in_terminal(script: str, cwd: Path, timeout: float) -> tuple[int, str]:
+    """Run SCRIPT in bash with a pseudo-terminal as its terminal (stdin, stdout, stderr), as a
+    learner types it; its exit status and everything it wrote."""
+    import pty
+    import select
+
+    main, side = pty.openpty()
+    process = subprocess.Popen(
+        ["bash", "-c", script],
+        cwd=cwd,
+        env={**learner_environment(), "TERM": "xterm-256color"},
+        stdin=side,
+        stdout=side,
+        stderr=side,
+        start_new_session=True,
+    )
+    os.close(side)
+    output = bytearray()
+    try:
+        while True:
+            ready, _, _ = select.select([main], [], [], timeout)
+            if not ready:
+                process.kill()
+                pytest.fail(f"{script!r} wrote nothing for {timeout:.0f} s: {bytes(output)!r}")
+            try:
+                chunk = os.read(main, 65536)
+            except OSError:  # the terminal closed: every process on it ended
+                break
+            if not chunk:
+                break
+            output += chunk
+        return process.wait(timeout=timeout), output.decode(errors="replace")
+    finally:
+        os.close(main)
+        if process.poll() is None:
+            process.kill()
+
+
+def test_a_cpp_page_in_a_terminal_says_why_too(tmp_path):
+    """Typed in a terminal, colcon has CMake colour its errors: the one line still explains
+    (rclcpp needs a ROS installation, the Python twins' page), without colour codes in it."""
+    workspace = new_workspace(tmp_path)
+    create(workspace, "--build-type ament_cmake cpp_pubsub --dependencies rclcpp std_msgs")
+    status, output = in_terminal(
+        activated("colcon build --packages-select cpp_pubsub"), workspace, BUILD_TIMEOUT
+    )
+    assert status != 0, output
+    lines = [line for line in output.splitlines() if line.startswith("error: cpp_pubsub")]
+    assert len(lines) == 1, output
+    why = "find_package(rclcpp): rclcpp, ROS 2's C++ client library, is not available"
+    assert why in lines[0], output
+    assert "\x1b" not in lines[0], lines[0]
+
+
+def test_a_cpp_package_beside_python_ones_is_left_out_and_the_rest_builds(tmp_path):
+    """Creating-A-Workspace's turtlesim clone (C++, rclcpp) in src/ beside the docs' Python
+    overlay: colcon builds the Python package and says in one line why turtlesim is left out;
+    named, it is tried and fails with colcon's one line."""
+    workspace = new_workspace(tmp_path)
+    (workspace / "src" / "ros_tutorials").mkdir()
+    ok(
+        activated("ros2 pkg create --build-type ament_cmake turtlesim --dependencies rclcpp"),
+        workspace / "src" / "ros_tutorials",
+    )
+    create(workspace, "--build-type ament_python --node-name talker ros_tutorials_topic")
+    result = bash(activated("colcon build"), workspace, BUILD_TIMEOUT)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "Summary: 1 package finished" in result.stdout, result.stdout
+    notes = [line for line in result.stderr.splitlines() if line.startswith("note: ")]
+    assert len(notes) == 1 and notes[0].startswith(
+        "note: turtlesim is left out: rclcpp, ROS 2's C++ client library, is not available"
+    ), result.stderr
+    assert notes[0].endswith("(`colcon build --packages-select turtlesim` tries it)")
+    listed = ok(activated("colcon list --names-only"), workspace).split()
+    assert sorted(listed) == ["ros_tutorials_topic", "turtlesim"]
+    [line] = failure_lines(
+        bash(activated("colcon build --packages-select turtlesim"), workspace, BUILD_TIMEOUT)
+    )
+    assert "find_package(rclcpp)" in line

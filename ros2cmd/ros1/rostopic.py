@@ -310,40 +310,26 @@ def _why_no_subscriber(graph: Graph, topic: str, msg_type: type) -> str:
     return f"no subscriber on {topic}; publishing anyway"
 
 
-# A volatile subscription gets the latched message sent again once it has lasted this long
-# (s): the tools' own subscriptions start volatile and become transient-local within
-# ros2cmd/qos.py's CHECK_PERIOD once they see the publisher, and those need no second copy.
-VOLATILE_SETTLE = 0.6
-LATCH_MATCH_WAIT = 1.0  # s: then how long its match is waited for
+LATCH_MATCH_WAIT = 1.0  # s: how long a subscription seen in the graph is waited for to match
 
 
 def _latch(graph: Graph, publisher: Publisher, msg: Any) -> None:
-    """ROS 1 latching: every subscriber gets the message once, however late it joins. A
-    transient-local subscription gets it from the publisher's history; a volatile one would
-    miss it, so it is sent again for a volatile one that has joined and matched; only then,
-    as every other subscriber gets that copy too (`rostopic hz` would count it)."""
-    from rclpy.qos import DurabilityPolicy
-
-    publish_one(graph, publisher, msg)
-    first_seen: dict[bytes, float] = {}  # volatile subscriptions: when seen first
-    served: set[bytes] = set()  # those it was sent again for
+    """ROS 1 latching: every subscriber gets the message once. It is sent once, when the
+    subscriptions running now have matched (with none yet, when the first one does, volatile
+    or not), and the transient-local publisher keeps it for those that come later and ask for
+    it: the tools' subscriptions do (ros2cmd/qos.py), and take it once. A volatile subscriber
+    that joins after it was sent does not get it (docs/dev/limits.md)."""
+    graph.settle()
+    deadline = time.monotonic() + LATCH_MATCH_WAIT
     while True:
-        now = time.monotonic()
-        subscriptions = graph.node.get_subscriptions_info_by_topic(publisher.topic_name)
-        volatile = {
-            bytes(s.endpoint_gid)
-            for s in subscriptions
-            if s.qos_profile.durability == DurabilityPolicy.VOLATILE
-        }
-        first_seen = {gid: first_seen.get(gid, now) for gid in volatile}
-        served &= volatile  # forget those that left
-        due = {gid for gid, seen in first_seen.items() if now - seen >= VOLATILE_SETTLE}
-        if due - served:
-            matched = publisher.get_subscription_count() >= len(subscriptions)
-            oldest = min(first_seen[gid] for gid in due - served)
-            if matched or now - oldest > VOLATILE_SETTLE + LATCH_MATCH_WAIT:
-                publish_one(graph, publisher, msg)
-                served |= due
+        subscriptions = len(graph.node.get_subscriptions_info_by_topic(publisher.topic_name))
+        if not subscriptions:
+            deadline = time.monotonic() + LATCH_MATCH_WAIT
+        elif publisher.get_subscription_count() >= subscriptions or time.monotonic() > deadline:
+            break
+        graph.spin_once(0.1)
+    publish_one(graph, publisher, msg)
+    while True:
         graph.spin_once(0.1)
 
 
@@ -392,9 +378,11 @@ class _SizeMeter:
         self.sizes.append(len(raw))
 
     def report(self) -> str | None:
+        """The bytes of the window over the time from its first message until now, as ROS 1's
+        rostopic bw: after the publisher stops, the figure falls."""
         if len(self.times) < 2:
             return None
-        rate = sum(self.sizes) / (self.times[-1] - self.times[0] or 1.0)
+        rate = sum(self.sizes) / (time.monotonic() - self.times[0] or 1.0)
         return (
             f"{rate:.2f} B/s from {len(self.sizes)} messages\n"
             f"\tMessage size mean: {statistics.fmean(self.sizes):.0f} B"

@@ -82,13 +82,58 @@ def roscd(argv: Sequence[str] | None = None) -> int:
 
 @program_main
 def rosed(argv: Sequence[str] | None = None) -> int:
+    """The editor line for FILE of PKG, found by name anywhere in the package, as ROS 1's rosed
+    found it; a file of the book's C++ (service_client.cpp) is the lesson module that runs as
+    the executable of its name here (client.py)."""
     _complete_package("rosed", "file")
-    return _pointed(
-        argv,
-        2,
-        "usage: rosed PKG FILE; here: $EDITOR $(rospack find PKG)/FILE",
-        "rosed is a ROS 1 shell function; type: ${{EDITOR:-nano}} {folder}/{args[1]}",
-    )
+    args = _args(argv)
+    if len(args) != 2:
+        return _say("usage: rosed PKG FILE; here: $EDITOR $(rospack find PKG)/FILE")
+    package, name = args[0].partition("/")[0], args[1]
+    try:
+        folders = _package_folders(package)
+    except LookupError as error:
+        return _say(str(error))
+    found = next((f for f in (_file_in(folder, name) for folder in folders) if f), None)
+    if found is not None:
+        return _say(f"rosed is a ROS 1 shell function; type: ${{EDITOR:-nano}} {_quoted(found)}")
+    module = _executable_source(package, Path(name).stem)
+    if module is not None:
+        return _say(
+            f"{package} has no {name} here; its node {Path(name).stem} is {module.name}: "
+            f"type: ${{EDITOR:-nano}} {_quoted(module)}"
+        )
+    where = ", ".join(str(folder) for folder in folders)
+    return _say(f"{package} has no file {name} here ({where})")
+
+
+def _quoted(path: Path) -> str:
+    return shlex.quote(str(path))
+
+
+def _package_folders(package: str) -> list[Path]:
+    """The package's folder; for a seed's name for several packages, each one's."""
+    try:
+        return [packages.package_folder(package)]
+    except LookupError:
+        folders = [packages.package_folder(p) for p in packages.resolve_package(package)]
+        if not folders:
+            raise
+        return folders
+
+
+def _executable_source(package: str, executable: str) -> Path | None:
+    """The source file of the module that runs as EXECUTABLE of PACKAGE, if it is one."""
+    try:
+        line = packages.command(package, executable)
+    except LookupError:
+        return None
+    if line[1:2] != ["-m"]:
+        return None
+    package_name, _, module = line[2].rpartition(".")
+    folder = packages.package_dirs().get(package_name)
+    source = folder / f"{module}.py" if folder else None
+    return source if source is not None and source.is_file() else None
 
 
 INTERFACE_KINDS = ("msg", "srv", "action")
@@ -105,12 +150,10 @@ def roscp(argv: Sequence[str] | None = None) -> int:
         return _say("usage: roscp PKG FILE DEST; here: cp $(rospack find PKG)/FILE DEST")
     package, name, destination = args
     try:
-        folders = [packages.package_folder(package)]
-    except LookupError as error:
         # A seed's name for several packages (rospy_tutorials): the file of any of them.
-        folders = [packages.package_folder(p) for p in packages.resolve_package(package)]
-        if not folders:
-            return _say(str(error))
+        folders = _package_folders(package)
+    except LookupError as error:
+        return _say(str(error))
     found = [_file_in(folder, name) for folder in folders]
     source = next((f for f in found if f is not None), None) or _interface_file(name)
     if source is None:
