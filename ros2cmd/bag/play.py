@@ -37,10 +37,10 @@ from ros2cmd.bag.record import message_class
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import load_type
+from ros_tutorials_common.wait import spin_until
 from rosbag2.mcap_file import BagMessage
 from rosbag2.metadata import NS, TopicInfo
 from rosbag2.reader import BagReader
-from ros_tutorials_common.wait import spin_until
 
 ADVERTISE_WAIT = 0.2  # ROS 1's "Waiting 0.2 seconds after advertising topics"
 MATCH_TIMEOUT = 5.0  # seconds: the longest play waits to meet the subscribers already running

@@ -38,6 +38,7 @@ from ros2cmd.graph import Graph, absolute_name, is_hidden
 from ros2cmd.qos import compatible_qos
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.ros import RCLError
+from ros_tutorials_common.shutdown import StopSignals
 from rosbag2.definitions import schema
 from rosbag2.errors import BagError
 from rosbag2.loss import LossCount
@@ -45,7 +46,6 @@ from rosbag2.metadata import TopicInfo
 from rosbag2.offered_qos import qos_to_dict
 from rosbag2.reader import BagReader
 from rosbag2.writer import BagWriter, default_bag_name
-from ros_tutorials_common.shutdown import StopSignals
 
 SPIN_PERIOD = 0.05
 FINAL_DRAIN_TIME = 5.0  # seconds at most to take what arrived before the stop
