@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import importlib
 import runpy
+import signal
 import sys
 from collections.abc import Callable
 from typing import Any
@@ -65,14 +66,17 @@ def started_module(line: list[str]) -> str | None:
 
 def start(main: Callable[[], Any]) -> Any:
     """Check the environment, apply the DDS defaults, then run ``main``: rclpy's race on
-    Ctrl-C/SIGTERM (``shutdown.is_shutdown_race``: its handler shut ROS down under the spin or a
-    timer's publish) ends it with status 0 and nothing printed, and a Ctrl-C that Python lost in
-    a ``__del__`` (rclpy's Future's) is not printed: rclpy's handler has shut ROS down all the
-    same, which ends the spin."""
+    Ctrl-C/SIGTERM ends it with status 0 and nothing printed (``shutdown.is_shutdown_race``: its
+    handler shut ROS down under the spin or a timer's publish; ``shutdown.interrupted``: the
+    Ctrl-C landed while rclpy's C++ converted a message, which pybind11 reports as its own
+    RuntimeError), and a Ctrl-C that Python lost in a ``__del__`` (rclpy's Future's) is not
+    printed: rclpy's handler has shut ROS down all the same, which ends the spin."""
     problem = environment_problem()  # as `ros2 run` checks: rclpy.init would fail
     if problem:
         raise SystemExit(f"error: {problem}")
     apply_dds_defaults()  # before the lesson's rclpy.init, which is when DDS reads them
+    previous_handler = signal.getsignal(signal.SIGINT)
+    shutdown.count_presses(deliver_lost=False)  # rclpy's handler calls it after its own
     previous = sys.unraisablehook
 
     def unraisable(what: Any) -> None:
@@ -83,11 +87,13 @@ def start(main: Callable[[], Any]) -> Any:
     try:
         return main()
     except RuntimeError as error:
-        if not shutdown.is_shutdown_race(error):
+        if not (shutdown.is_shutdown_race(error) or shutdown.interrupted(error)):
             raise
         return 0
     finally:
         sys.unraisablehook = previous
+        if shutdown.counts_presses():  # for a caller that goes on (a test)
+            signal.signal(signal.SIGINT, previous_handler)
 
 
 def run(module: str) -> int | None:

@@ -1,14 +1,14 @@
 """How a program of this project ends: on Ctrl-C, on SIGTERM, and when its output cannot be
 written. The one design for the tools (``ros2``, the ROS 1 spellings, rosbag, rosrun, the
 launcher, view_frames), the toolkit's nodes (tf2_echo, static_transform_publisher, tf2_monitor,
-mimic, draw_square, the viewer), turtlesim, and the start of a lesson (``lesson_scripts``);
-docs/dev/architecture.md ("How a program stops") has the table. Its rclpy half is
-``ros_tutorials_common.ros`` (``init``, ``node_stopped``, ``run_node``).
+mimic, draw_square, turtle_teleop_key), turtlesim, and the start of a lesson
+(``lesson_scripts``); docs/dev/architecture.md ("How a program stops") has the table. Its rclpy
+half is ``ros_tutorials_common.ros`` (``init``, ``node_stopped``, ``run_node``, ``SpinThread``).
 
-- ``program_main``: a console script's or a module's main. A Ctrl-C that reaches it ends the program
-  with 130; the reader of its output gone (``| head``: EPIPE) ends it quietly with 0; output
-  that cannot be written (a full device: ENOSPC, EIO ...) with one line and 1. A program that
-  runs until stopped catches the stop itself and returns 0.
+- ``program_main``: a console script's or a module's main. A Ctrl-C that reaches it ends the
+  program with 130; the reader of its output gone (``| head``: EPIPE) ends it quietly with 0;
+  output that cannot be written (a full device: ENOSPC, EIO ...) with one line and 1. A
+  program that runs until stopped catches the stop itself and returns 0.
 - ``StopSignals``: for a program that must finish its work before it ends (turtlesim's node and
   its PNG, a bag's summary, an action goal's cancel): SIGINT and SIGTERM are noted, and the
   program's loop asks.
@@ -207,12 +207,14 @@ def _count_and_raise(signum: int, frame: object) -> None:
     raise KeyboardInterrupt
 
 
-def count_presses() -> None:
+def count_presses(deliver_lost: bool = True) -> None:
     """From now on Ctrl-C raises KeyboardInterrupt as Python's own handler does, counted, and
-    one lost in a __del__ is delivered again (a tool's entry, and its graph node: Graph)."""
+    (deliver_lost) one lost in a __del__ is delivered again (a tool's entry, and its graph
+    node: Graph; a lesson's start only counts)."""
     if _in_main_thread():  # where signal.signal works
         signal.signal(signal.SIGINT, _count_and_raise)
-    sys.unraisablehook = _unraisable
+    if deliver_lost:
+        sys.unraisablehook = _unraisable
 
 
 def counts_presses() -> bool:

@@ -27,12 +27,13 @@ import tty
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.action import ActionClient
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.action import RotateAbsolute
 
-from ros_tutorials_common.ros import init
+from ros_tutorials_common.ros import SpinThread, init
+from ros_tutorials_common.shutdown import program_main
 
 HELP = """Reading from keyboard
 ---------------------------
@@ -151,16 +152,11 @@ def key_loop(node: TeleopTurtle, keyboard: Keyboard) -> None:
             node.cancel_goal()
 
 
-def spin(executor: SingleThreadedExecutor) -> None:
-    # Ctrl-C: rclpy has shut down and the key loop ends too; nothing to report here
-    with contextlib.suppress(ExternalShutdownException):
-        executor.spin()
-
-
 def _hang_up(_signum: int, _frame) -> None:
     raise KeyboardInterrupt  # the terminal was closed: leave as on Ctrl-C, cleaning up
 
 
+@program_main
 def main(argv: list[str] | None = None) -> int:
     fd = sys.stdin.fileno()
     if not os.isatty(fd):
@@ -173,10 +169,7 @@ def main(argv: list[str] | None = None) -> int:
     init(argv)  # rclpy.init with this project's DDS defaults
     signal.signal(signal.SIGHUP, _hang_up)
     node = TeleopTurtle()
-    executor = SingleThreadedExecutor()
-    executor.add_node(node)
-    spinner = threading.Thread(target=spin, args=(executor,), daemon=True)  # ROS alongside
-    spinner.start()
+    spinner = SpinThread(node, name="ros")  # ROS alongside the key loop
     saved = termios.tcgetattr(fd)
     try:
         tty.setcbreak(fd)  # keys arrive one by one, not echoed; Ctrl-C still interrupts
@@ -188,8 +181,7 @@ def main(argv: list[str] | None = None) -> int:
             termios.tcsetattr(fd, termios.TCSADRAIN, saved)
         # Stop the background spin and wait for it: a thread still inside rclpy's C++ code
         # when Python exits aborts the process.
-        executor.shutdown(timeout_sec=1.0)
-        spinner.join(timeout=5.0)
+        spinner.stop()
         node.destroy_node()
         rclpy.try_shutdown()
     return 0

@@ -211,6 +211,26 @@ def test_a_lesson_started_by_ros2_run_takes_the_race_for_the_stop(tmp_path, rais
         assert "another error" in result.stderr
 
 
+def test_a_ctrl_c_in_rclpys_message_conversion_is_the_stop_of_a_lesson(tmp_path):
+    """A Ctrl-C that lands while rclpy's C++ converts a message comes out of pybind11 as its
+    own RuntimeError; where the lesson started, after a press, that is the stop (status 0)."""
+    (tmp_path / "converting.py").write_text(
+        "import os, signal\n"
+        "try:\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "    sum(range(10))  # the KeyboardInterrupt comes here\n"
+        "except KeyboardInterrupt:\n"
+        "    pass\n"
+        "raise RuntimeError(\"Unable to convert call argument '0' to Python object\")\n"
+    )
+    env = {**os.environ, "PYTHONPATH": f"{tmp_path}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    result = subprocess.run(
+        lesson_scripts.command("converting"), capture_output=True, text=True, env=env, timeout=60
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+
+
 def test_lessons_packages_run_through_the_lesson_start():
     """`ros2 run` and the launcher start a lesson where the project handles rclpy's shutdown
     race (lesson_scripts), not through the lesson's package."""

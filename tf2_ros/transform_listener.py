@@ -10,16 +10,12 @@ that does not spin; the thread ends when ROS shuts down or the listener goes (``
 
 from __future__ import annotations
 
-import threading
-from threading import Thread
-
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from tf2_msgs.msg import TFMessage
 
-from ros_tutorials_common.ros import node_stopped
+from ros_tutorials_common.ros import SpinThread
 from tf2_ros.buffer import Buffer
 
 __all__ = ["TransformListener"]
@@ -58,36 +54,16 @@ class TransformListener:
         self.tf_static_sub = node.create_subscription(
             TFMessage, "/tf_static", self.static_callback, static_qos, callback_group=self.group
         )
-        if spin_thread:
-            self.executor = SingleThreadedExecutor(context=node.context)
-            self.spinning = True
-            self.dedicated_listener_thread = Thread(
-                target=self._spin, name="tf2_listener", daemon=True
-            )
-            self.dedicated_listener_thread.start()
-
-    def _spin(self) -> None:
-        self.executor.add_node(self.node)
-        try:
-            while self.spinning:
-                self.executor.spin_once()
-        except Exception as error:
-            if not node_stopped(error):  # rclpy shut down (SIGTERM, Ctrl-C): work over
-                raise
+        if spin_thread:  # as tf2_ros: its executor and thread, by these names
+            self.spinner = SpinThread(node, name="tf2_listener")
+            self.executor = self.spinner.executor
+            self.dedicated_listener_thread = self.spinner.thread
 
     def stop_spinning(self) -> None:
-        """End the spin thread, then its executor. In this order: rclpy's Executor.shutdown
-        destroys the executor's guard condition at once, also under a thread that waits on it
-        (which then fails: "InvalidHandle: cannot use Destroyable because destruction was
-        requested")."""
-        executor = getattr(self, "executor", None)
-        if executor is None:
-            return
-        self.spinning = False
-        executor.wake()
-        if threading.current_thread() is not self.dedicated_listener_thread:
-            self.dedicated_listener_thread.join()
-        executor.shutdown()
+        """End the spin thread, if there is one (before the node is destroyed)."""
+        spinner = getattr(self, "spinner", None)
+        if spinner is not None:
+            spinner.stop()
 
     def __del__(self) -> None:
         self.stop_spinning()

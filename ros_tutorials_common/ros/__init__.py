@@ -12,6 +12,7 @@ and ends as ros_tutorials_common/shutdown.py says, its spin's stop told by ``nod
 from ros_tutorials_common.ros.node_main import (
     NODE_STOPPED,
     RCLError,
+    SpinThread,
     init,
     node_stopped,
     ros_args,
@@ -19,4 +20,13 @@ from ros_tutorials_common.ros.node_main import (
     user_args,
 )
 
-__all__ = ["NODE_STOPPED", "RCLError", "init", "node_stopped", "ros_args", "run_node", "user_args"]
+__all__ = [
+    "NODE_STOPPED",
+    "RCLError",
+    "SpinThread",
+    "init",
+    "node_stopped",
+    "ros_args",
+    "run_node",
+    "user_args",
+]

@@ -18,7 +18,8 @@ can run while that thread is still shutting down: try_shutdown then fails with "
 already called", and the node ends killed by SIGINT (status 130) instead of exiting 0.
 
 How a node of the toolkit stops is ros_tutorials_common/shutdown.py's design; its rclpy half is
-here: ``NODE_STOPPED`` and ``node_stopped`` (what ends a node's spin normally), ``run_node``.
+here: ``NODE_STOPPED`` and ``node_stopped`` (what ends a node's spin normally), ``run_node``,
+and ``SpinThread`` (a node spun in a thread of its own, stopped before its executor).
 """
 
 from __future__ import annotations
@@ -132,6 +133,49 @@ NODE_STOPPED = (KeyboardInterrupt, ExternalShutdownException, NotInitializedExce
 def node_stopped(error: BaseException) -> bool:
     """Whether ERROR is how a Ctrl-C or SIGTERM ended a node's spin: the stop, not a failure."""
     return isinstance(error, NODE_STOPPED) or shutdown.is_shutdown_race(error)
+
+
+class SpinThread:
+    """NODE spun in a thread of its own (tf2's TransformListener(spin_thread=True),
+    turtle_teleop_key) until ROS shuts down or ``stop()``.
+
+    ``stop()`` ends the thread, then shuts its executor down. In that order: rclpy's
+    Executor.shutdown destroys the executor's guard condition at once, also under a thread that
+    waits on it, which then fails ("InvalidHandle: cannot use Destroyable because destruction
+    was requested"). The thread's spin returns only for work (rclpy's executor waits again after
+    its own wake), so ``stop()`` triggers a guard condition of the node's.
+    """
+
+    def __init__(self, node: Node, name: str) -> None:
+        self.node = node
+        self.executor = SingleThreadedExecutor(context=node.context)
+        self.running = True
+        self.wake = node.create_guard_condition(lambda: None)
+        self.thread = threading.Thread(target=self._spin, name=name, daemon=True)
+        self.thread.start()
+
+    def _spin(self) -> None:
+        self.executor.add_node(self.node)
+        try:
+            while self.running:
+                self.executor.spin_once()
+        except Exception as error:
+            if not node_stopped(error):  # ROS shut down (Ctrl-C, SIGTERM): the spin is over
+                raise
+
+    def stop(self) -> None:
+        """End the thread (its callback running now finishes first), then the executor."""
+        if not self.running:
+            return
+        self.running = False
+        if self.thread.is_alive():
+            try:
+                self.wake.trigger()
+            except Exception:  # the node is destroyed already, its guard with it:
+                self.executor.shutdown()  # the executor's own wake ends the spin, racing
+        if threading.current_thread() is not self.thread:
+            self.thread.join()
+        self.executor.shutdown()
 
 
 def init(
