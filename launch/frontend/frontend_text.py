@@ -9,7 +9,8 @@ import shlex
 from collections.abc import Callable
 from typing import Any
 
-from launch._base import LaunchContext, Substitution
+from launch._base import Substitution
+from launch.launch_context import LaunchContext
 from launch_foundation.parse import Element
 
 
@@ -33,7 +34,9 @@ class FrontendText(Substitution):
             self._parts = parse_at(self.text, self.where)
         return self._parts
 
-    def perform(self, context: LaunchContext) -> str:
+    def perform(self, context: LaunchContext | None) -> str:
+        if context is None:  # performed without a launch, as ros2/launch's tests do
+            context = LaunchContext()
         scope = context.frontend_scope
         if getattr(scope, "fmt", "ros2") == "ros1":  # the ROS 1 dialect: roslaunch's names
             from launch_foundation.substitutions import substitute
