@@ -94,6 +94,7 @@ class LaunchService:
             for description in self.__descriptions:
                 context.visit(description)
             launch = loader.finish()
+            self.__context = context  # what the run's descriptions set, for the caller to read
             specs = plan.make_plan(launch)
             log_dir = supervise.make_log_dir()
         except LaunchError as error:
