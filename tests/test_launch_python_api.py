@@ -41,7 +41,8 @@ def test_path_substitution_joins_with_slash(tmp_path):
         "    urdf = PathSubstitution(ThisLaunchFileDir()) / 'urdf' / LaunchConfiguration('f')\n"
         "    also = PathJoinSubstitution([ThisLaunchFileDir(), 'config', 'a.yaml'])\n"
         "    return LaunchDescription([DeclareLaunchArgument('f', default_value='r.urdf'),\n"
-        "        LogInfo(msg=urdf), LogInfo(msg=also), LogInfo(msg=PathSubstitution(Path('/x')))])\n"
+        "        LogInfo(msg=urdf), LogInfo(msg=also),\n"
+        "        LogInfo(msg=PathSubstitution(Path('/x')))])\n"
     )
     assert messages(tmp_path, body) == [
         f"{tmp_path}/urdf/r.urdf", f"{tmp_path}/config/a.yaml", "/x",
