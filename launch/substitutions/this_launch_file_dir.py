@@ -22,4 +22,7 @@ class ThisLaunchFileDir(ThisLaunchFile):
         return cls, {}
 
     def perform(self, context: LaunchContext) -> str:
+        given = context.get_locals_as_dict().get("current_launch_file_directory")
+        if given is not None:  # set by who loads a file
+            return str(given)
         return os.path.dirname(super().perform(context))
