@@ -7,9 +7,10 @@ from __future__ import annotations
 import inspect
 from typing import Any
 
-from launch._base import Action, EventHandler, LaunchContext, is_ours
+from launch._base import Action, EventHandler, is_ours
 from launch._missing import module_getattr
 from launch.events import event_from
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import Step, When
 
 __all__ = [

@@ -15,20 +15,48 @@ __all__ = [
 
 
 class LaunchDescriptionSource:
-    def __init__(self, launch_file_path: Any, *args: Any, **kwargs: Any) -> None:
-        self.location = launch_file_path
+    """A LaunchDescription given as it is, or where to read one (``location``: a file path,
+    text or substitutions). The launcher reads the file by its name's ending."""
+
+    def __init__(
+        self,
+        launch_description: Any = None,
+        location: Any = "<string>",
+        method: str = "interpreted python launch file",
+    ) -> None:
         self.where = caller_where()
+        self._launch_description = launch_description
+        self.location = location
+        self.method = method
+
+    def try_get_launch_description_without_context(self) -> Any:
+        return self._launch_description
+
+    def get_launch_description(self, context: Any) -> Any:
+        if self._launch_description is None:
+            raise RuntimeError(
+                "LaunchDescriptionSource.get_launch_description(): called without a "
+                "launch description being set"
+            )
+        return self._launch_description
 
 
-class PythonLaunchDescriptionSource(LaunchDescriptionSource):
+class _FileSource(LaunchDescriptionSource):
+    """A source named by its file (text or substitutions)."""
+
+    def __init__(self, launch_file_path: Any, *args: Any, **kwargs: Any) -> None:
+        super().__init__(None, launch_file_path)
+
+
+class PythonLaunchDescriptionSource(_FileSource):
     pass
 
 
-class AnyLaunchDescriptionSource(LaunchDescriptionSource):
+class AnyLaunchDescriptionSource(_FileSource):
     pass
 
 
-class FrontendLaunchDescriptionSource(LaunchDescriptionSource):
+class FrontendLaunchDescriptionSource(_FileSource):
     pass
 
 

@@ -5,14 +5,10 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, perform
 from launch.actions._common import env_name, flag
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("append_env")

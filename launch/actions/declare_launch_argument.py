@@ -5,14 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, perform
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("arg")

@@ -9,14 +9,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-from launch._base import (
-    Action,
-    Condition,
-    LaunchContext,
-    SomeSubstitutionsType,
-    Substitution,
-    perform,
-)
+from launch._base import Action, Condition, SomeSubstitutionsType, Substitution, perform
 from launch.actions._common import (
     DEFAULT_OUTPUT_FORMAT,
     _env_name_check,
@@ -39,6 +32,7 @@ from launch.actions.shutdown_action import Shutdown
 from launch.event_handlers import OnProcessExit
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import (
     DEFAULT_RESPAWN_MAX_RETRIES,
     NodeDecl,

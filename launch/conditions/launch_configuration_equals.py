@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import Condition, LaunchContext, perform
+from launch._base import Condition, perform
+from launch.launch_context import LaunchContext
 
 
 class LaunchConfigurationEquals(Condition):

@@ -6,8 +6,9 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from launch._base import LaunchContext, Substitution, normalize_to_list_of_substitutions, perform
+from launch._base import Substitution, normalize_to_list_of_substitutions, perform
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 
 

@@ -6,8 +6,8 @@ import os
 from collections.abc import Sequence
 from typing import Any
 
-from launch._base import LaunchContext
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 from launch.substitutions.this_launch_file import ThisLaunchFile
 
