@@ -131,13 +131,13 @@ class Action(LaunchDescriptionEntity):
         kwargs: dict[str, Any] = {} if condition is None else {"condition": condition}
         return cls, kwargs
 
-    def visit(self, context: Any) -> None:
-        """Execute this action into the plan, with what it returns, if its condition holds."""
+    def visit(self, context: Any) -> list[LaunchDescriptionEntity] | None:
+        """Execute this action into the plan if its condition holds: the entities it returns,
+        for the executor (LaunchContext.visit) to visit next, as ros2/launch's visit."""
         if self.condition is not None and not self.condition.evaluate(context):
-            return
+            return None
         context.state.executed[id(self)] = self
-        for entity in self.execute(context) or []:
-            context.visit(entity)
+        return self.execute(context)
 
     def describe(self) -> str:
         return f"{type(self).__name__}(...)"

@@ -19,6 +19,9 @@ if TYPE_CHECKING:  # the front-ends' scope, as their substitutions read it
     from launch_foundation.substitutions import Context as Scope
 
 
+_DETACHED_ANON_NAMES: dict[str, str] = {}  # a name's anonymous name outside a launch
+
+
 @dataclass
 class _DetachedScope:
     """The values of a LaunchContext made outside a launch (the fields of resolve.Scope that
@@ -41,7 +44,15 @@ class _DetachedScope:
         return replace(self, **{**copies, **changes})
 
     def anon(self, name: str) -> str:
-        return f"{name}_{os.getpid()}_{id(self) % 10000}"
+        """name_host_pid_number, as ros2 launch makes an anonymous name; the same each time."""
+        made = _DETACHED_ANON_NAMES
+        if name not in made:
+            import random
+            import socket
+
+            host = "".join(c if c.isalnum() else "_" for c in socket.gethostname())
+            made[name] = f"{name}_{host}_{os.getpid()}_{random.randrange(10**9)}"
+        return made[name]
 
     # What a front-end's substitutions read of their context
     # (launch_foundation.substitutions.Context).
@@ -328,7 +339,8 @@ class LaunchContext:
     def visit(self, entity: Any) -> None:
         """Execute one entity of a description, or refuse what is not one."""
         if isinstance(entity, Action):
-            entity.visit(self)
+            for sub in entity.visit(self) or []:
+                self.visit(sub)
         elif isinstance(entity, LaunchDescriptionEntity):
             for sub in entity.execute(self) or []:
                 self.visit(sub)

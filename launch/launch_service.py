@@ -82,6 +82,10 @@ class LaunchService:
         if self.__running.is_set():
             os.kill(os.getpid(), signal.SIGINT)
 
+    def _executed(self, context: LaunchContext) -> None:
+        """The run's context once its descriptions executed: what they set, for the caller."""
+        self.__context = context
+
     def run(self, *, shutdown_when_idle: bool = True) -> int:
         """Execute the descriptions into a plan and supervise it until it ends (every process
         exited, a Shutdown, Ctrl-C or ``shutdown()``). The exit code: 0, 1 after an error (one
@@ -102,6 +106,7 @@ class LaunchService:
                 self.__context.argv,
                 self.__debug,
                 self.__running.set,
+                self._executed,
             )
         finally:
             self.__running.clear()

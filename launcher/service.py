@@ -21,10 +21,12 @@ def run(
     argv: list[str] | None,
     debug: bool,
     started: Callable[[], None],
+    executed: Callable[[Any], None] | None = None,
 ) -> int:
     """Execute ``descriptions`` in one launch, then supervise its processes until it ends;
-    ``started`` is called once the processes are about to start. The exit code: 0, 1 after
-    an error (one line on stderr), 130 after Ctrl-C."""
+    ``executed`` gets the launch's context once they executed (what they set), ``started`` is
+    called once the processes are about to start. The exit code: 0, 1 after an error (one
+    line on stderr), 130 after Ctrl-C."""
     from launch.launch_context import LaunchContext
     from launcher import plan, supervise
     from launcher.loading import Loader
@@ -38,6 +40,8 @@ def run(
         for description in descriptions:
             context.visit(description)
         launch = loader.finish()
+        if executed is not None:
+            executed(context)
         specs = plan.make_plan(launch)
         log_dir = supervise.make_log_dir()
     except LaunchError as error:

@@ -32,7 +32,8 @@ class AppendEnvironmentVariable(Action):
         prepend = entity.get_attr("prepend", optional=True)
         if prepend is not None:  # launch_xml's own test writes "yes"
             word = prepend.strip().lower()
-            kwargs["prepend"] = {"yes": "true", "no": "false"}.get(word, prepend)
+            words = {"true": True, "1": True, "yes": True, "false": False, "0": False, "no": False}
+            kwargs["prepend"] = words[word] if word in words else parser.parse_substitution(prepend)
         separator = entity.get_attr("separator", optional=True)
         if separator is not None:
             kwargs["separator"] = parser.parse_substitution(separator)

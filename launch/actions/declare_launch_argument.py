@@ -28,8 +28,15 @@ class DeclareLaunchArgument(Action):
         super().__init__(**kwargs)
         self.name = name
         self.default_value = default_value
-        self.description = description
         self.choices = list(choices) if choices is not None else None
+        if self.choices is not None:  # as ros2 launch says them (--show-args too)
+            if description is None:
+                description = f"One of: {self.choices}"
+            else:
+                description += ("" if description.endswith(".") else ".") + (
+                    f" Valid choices are: {self.choices}"
+                )
+        self.description = description
 
     @classmethod
     def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
