@@ -194,6 +194,9 @@ class LaunchContext:
     @property
     def current_launch_file_path(self) -> str | None:
         """The launch file being read (ThisLaunchFile), None outside one."""
+        given = self.locals.get("current_launch_file_path")  # set by who loads a file
+        if given is not None:
+            return str(given)
         file = getattr(self._scope, "file", None)
         return None if file is None or str(file) == "<launch>" else str(file)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from launch._base import Action, SomeSubstitutionsType, perform
+from launch._base import Action, SomeSubstitutionsType, normalize_to_list_of_substitutions, perform
 from launch.actions._common import env_name, flag
 from launch.frontend.expose import expose_action
 from launch.launch_context import LaunchContext
@@ -22,7 +22,10 @@ class AppendEnvironmentVariable(Action):
         **kw: Any,
     ) -> None:
         super().__init__(**kw)
-        self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
+        self.name = normalize_to_list_of_substitutions(name)
+        self.value = normalize_to_list_of_substitutions(value)
+        self.separator = normalize_to_list_of_substitutions(separator)
+        self.prepend = prepend
 
     @classmethod
     def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:

@@ -8,6 +8,7 @@ from launch._missing import module_getattr
 from launch.event import Event
 from launch.events import process
 from launch.events.execution_complete import ExecutionComplete
+from launch.events.matchers import matches_action
 from launch.events.process import (
     ProcessExited,
     ProcessIO,
@@ -18,7 +19,7 @@ from launch.events.process import (
 
 __all__ = [
     "Event", "ExecutionComplete", "ProcessExited", "ProcessIO", "ProcessStarted",
-    "ProcessStderr", "ProcessStdout", "Shutdown", "process",
+    "ProcessStderr", "ProcessStdout", "Shutdown", "matches_action", "process",
 ]  # fmt: skip
 
 
