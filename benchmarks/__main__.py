@@ -37,7 +37,7 @@ from benchmarks.common import Row, print_table, private_domain
 
 # Each group is a list of steps; a step that fails costs only its own rows.
 GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
-    "launch": [launch.launch_and_shutdown, launch.escalation, launch.formats],
+    "launch": [launch.launch_and_shutdown, launch.escalation, launch.formats, launch.print_tree],
     "service": [service.round_trip],
     "topic": [topic.latency, topic.loss_and_throughput],
     "rate": [topic.rate_accuracy],

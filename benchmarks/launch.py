@@ -319,3 +319,100 @@ def formats(rounds: int = 5) -> list[Row]:
         )
         for kind in ("Python", "XML", "YAML")
     ]
+
+
+PRINT_TARGET = 1.0  # issue 43: --print of a 200-include tree under 1 s
+INCLUDES = 200
+
+
+def include_tree(folder: Path, fmt: str) -> Path:
+    """A launch file including INCLUDES files in ``fmt`` ("xml" or "py"), each with an argument
+    and a node, ten to a group: the shape of a robot's bringup, made large."""
+    leaves = []
+    for index in range(INCLUDES):
+        if fmt == "xml":
+            leaf = folder / f"part{index}.launch.xml"
+            leaf.write_text(
+                '<launch><arg name="ns" default="/"/>'
+                '<node pkg="ros_tutorials_topic" exec="talker" name="talker" '
+                'namespace="$(var ns)"><param name="rate" value="2"/></node></launch>\n'
+            )
+        else:
+            leaf = folder / f"part{index}.launch.py"
+            leaf.write_text(
+                "from launch import LaunchDescription\n"
+                "from launch.actions import DeclareLaunchArgument\n"
+                "from launch.substitutions import LaunchConfiguration\n"
+                "from launch_ros.actions import Node\n\n"
+                "def generate_launch_description():\n"
+                "    return LaunchDescription([DeclareLaunchArgument('ns', default_value='/'),\n"
+                "        Node(package='ros_tutorials_topic', executable='talker', name='talker',\n"
+                "             namespace=LaunchConfiguration('ns'), parameters=[{'rate': 2}])])\n"
+            )
+        leaves.append(leaf)
+    if fmt == "xml":
+        groups = "".join(
+            "<group>"
+            + "".join(
+                f'<include file="{leaf}"><arg name="ns" value="/robot{i}"/></include>'
+                for i, leaf in enumerate(leaves[start : start + 10], start)
+            )
+            + "</group>"
+            for start in range(0, INCLUDES, 10)
+        )
+        main = folder / "bringup.launch.xml"
+        main.write_text(f"<launch>{groups}</launch>\n")
+        return main
+    includes = ",\n".join(
+        f"        IncludeLaunchDescription(PythonLaunchDescriptionSource({str(leaf)!r}), "
+        f"launch_arguments={{'ns': '/robot{i}'}}.items())"
+        for i, leaf in enumerate(leaves)
+    )
+    main = folder / "bringup.launch.py"
+    main.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n\n"
+        f"def generate_launch_description():\n    return LaunchDescription([\n{includes}\n    ])\n"
+    )
+    return main
+
+
+def print_tree(rounds: int = 5) -> list[Row]:
+    """`python -m launcher FILE --print` of a bringup including 200 files (XML and Python),
+    whole process, against `python -c pass` of the same interpreter."""
+    import tempfile
+
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        mains = {}
+        for fmt in ("xml", "py"):
+            (Path(folder) / fmt).mkdir()
+            mains[fmt] = include_tree(Path(folder) / fmt, fmt)
+        runs = {fmt: python("-m", "launcher", str(main), "--print") for fmt, main in mains.items()}
+        runs["python -c pass"] = python("-c", "pass")
+        times: dict[str, list[float]] = {kind: [] for kind in runs}
+        for _ in range(rounds):  # interleaved, so machine load hits all alike
+            for kind, args in runs.items():
+                began = time.monotonic()
+                done = subprocess.run(args, capture_output=True, text=True, timeout=120)
+                took = time.monotonic() - began
+                if done.returncode != 0:
+                    raise RuntimeError(f"{args}: {done.stderr.strip()[-300:]}")
+                if kind != "python -c pass" and done.stdout.count("talker") < INCLUDES:
+                    raise RuntimeError(f"{args}: the plan lacks nodes")
+                times[kind].append(took)
+    base = p50(times["python -c pass"])
+    for fmt, name in (("xml", "XML"), ("py", "Python")):
+        value = p50(times[fmt])
+        rows.append(
+            Row(
+                f"--print of a {INCLUDES}-include bringup ({name}), p50/p99 of {rounds}",
+                f"{value:.2f} s / {p99(times[fmt]):.2f} s",
+                f"{base:.2f} s (python -c pass)",
+                value / base,
+                f"< {PRINT_TARGET:g} s",
+                value < PRINT_TARGET,
+            )
+        )
+    return rows

@@ -4,28 +4,35 @@ ls.run()``).
 
 The descriptions are executed by the model's own executor (``LaunchContext.visit``) into a
 plan, and the plan is run by the tool that supervises processes: this project's launcher,
-found by its module names as the front-ends are (``TOOL``), so that ``launch`` imports
-nothing above it. Plan, then supervise: the processes, event handlers and timers of the
-descriptions run as they do under ``ros2 launch``; an event emitted from another thread
-while it runs (``emit_event``) is not seen by the plan (a deliberate difference, see
-docs/dev/launch-upstream-tests.md), ``shutdown()`` ends the run.
+found through the ``launch.runner`` entry point (``launcher.service.run``), as ros2/launch
+finds its front-ends, so that ``launch`` imports nothing above it. Plan, then supervise: the
+processes, event handlers and timers of the descriptions run as they do under ``ros2
+launch``; an event emitted from another thread while it runs (``emit_event``) is not seen by
+the plan (a deliberate difference, see docs/dev/launch-upstream-tests.md), ``shutdown()``
+ends the run.
 """
 
 from __future__ import annotations
 
-import importlib
 import os
 import signal
 import threading
-from pathlib import Path
 from typing import Any
 
 from launch.launch_context import LaunchContext
 from launch_foundation import LaunchError
 
-# The modules of the tool that runs a plan: loading (the plan sink and the executor state),
-# scope (the scope a description is executed in), plan (processes), supervise (running them).
-TOOL = ("launcher.loading", "launcher.scope", "launcher.plan", "launcher.supervise")
+RUNNER_GROUP = "launch.runner"  # the entry point of the tool that plans and supervises
+
+
+def _runner() -> Any:
+    """The installed tool's run(descriptions, configurations, argv, debug, started)."""
+    from importlib.metadata import entry_points
+
+    found = list(entry_points(group=RUNNER_GROUP))
+    if not found:
+        raise LaunchError(f"no launch runner is installed (entry point group {RUNNER_GROUP!r})")
+    return found[0].load()
 
 
 class LaunchService:
@@ -75,6 +82,10 @@ class LaunchService:
         if self.__running.is_set():
             os.kill(os.getpid(), signal.SIGINT)
 
+    def _executed(self, context: LaunchContext) -> None:
+        """The run's context once its descriptions executed: what they set, for the caller."""
+        self.__context = context
+
     def run(self, *, shutdown_when_idle: bool = True) -> int:
         """Execute the descriptions into a plan and supervise it until it ends (every process
         exited, a Shutdown, Ctrl-C or ``shutdown()``). The exit code: 0, 1 after an error (one
@@ -83,28 +94,19 @@ class LaunchService:
 
         if self.__shutdown.is_set():
             return 0
-        loading, scope, plan, supervise = (importlib.import_module(name) for name in TOOL)
         try:
-            loader = loading.Loader(scope.Options(allow_code=True))
-            root = scope.Scope(loader, Path("<LaunchService>"), "ros2", {}, {})
-            root.args.update(self.__context.launch_configurations)
-            context = LaunchContext(
-                root, loader.plan, loader.launch_state(), argv=self.__context.argv
-            )
-            for description in self.__descriptions:
-                context.visit(description)
-            launch = loader.finish()
-            self.__context = context  # what the run's descriptions set, for the caller to read
-            specs = plan.make_plan(launch)
-            log_dir = supervise.make_log_dir()
+            run = _runner()
         except LaunchError as error:
             print(f"error: {error}", file=sys.stderr)
             return 1
-        runner = supervise.Supervisor(
-            specs, log_dir, self.__debug, launch.steps, True, launch.warnings, launch.messages
-        )
-        self.__running.set()
         try:
-            return runner.run()
+            return run(
+                list(self.__descriptions),
+                dict(self.__context.launch_configurations),
+                self.__context.argv,
+                self.__debug,
+                self.__running.set,
+                self._executed,
+            )
         finally:
             self.__running.clear()

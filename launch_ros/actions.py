@@ -24,8 +24,8 @@ from launch_ros.utilities import (
 from ros_tutorials_common.bounded import parameter_problem
 
 __all__ = [
-    "ComposableNodeContainer", "LoadComposableNodes", "Node", "PushROSNamespace",
-    "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap",
+    "ComposableNodeContainer", "LifecycleNode", "LoadComposableNodes", "Node",
+    "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap",
 ]  # fmt: skip
 
 
@@ -103,6 +103,17 @@ class Node(ExecuteProcess):
         if self.name is not None:  # exec_name: the output prefix
             decl.label = perform(self.name, context) or decl.label
         return decl
+
+
+class LifecycleNode(Node):
+    """launch_ros's LifecycleNode: a managed node, planned and started as a Node (it starts
+    unconfigured, as under ros2 launch until something asks it to change state, through its
+    ``<node>/change_state`` service); its name and namespace are required keywords, as
+    launch_ros jazzy requires them. The launcher hosts no ROS node, so it makes no such call
+    itself: a launch file's EmitEvent(ChangeState) is refused with one line."""
+
+    def __init__(self, *, name: Any, namespace: Any, **kwargs: Any) -> None:
+        super().__init__(name=name, namespace=namespace, **kwargs)
 
 
 def _not_blank(attr: str) -> Any:

@@ -3,16 +3,18 @@ as launch_ros evaluates them in a launch context."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from launch._base import Substitution, element_at, perform
 from launch.actions import enabled, flag
+from launch.frontend.frontend_text import FrontendText
 from launch.launch_context import LaunchContext
 from launch_foundation.errors import LaunchError
 from launch_foundation.naming import flatten, namespace_under, remap_problem, yaml_parameter
 from launch_foundation.parse import Element
-from launch_foundation.substitutions import substitute, substituted_params_file, to_bool
+from launch_foundation.substitutions import substituted_params_file, to_bool
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 from ros_tutorials_common.bounded import (
     InputError,
@@ -91,9 +93,14 @@ def node_parameters(
             path = Path(perform(source, context))
             if isinstance(item, ParameterFile) and flag(item.allow_substs, context):
                 element = element_at(where)
-                path = substituted_params_file(path, context.frontend_scope, element)
+                path = substituted_params_file(path, _performer(element, context), element)
             files.append(str(params_file_checked(path, where, context)))
     return params, files
+
+
+def _performer(element: Element, context: LaunchContext) -> Callable[[str], str]:
+    """A text's $(...) performed at ``element`` in ``context`` (a parameters file's)."""
+    return lambda text: FrontendText(text, element).perform(context)
 
 
 def params_file_checked(path: Path, where: str, context: LaunchContext) -> Path:
@@ -128,7 +135,6 @@ def frontend_node_parts(entity: Any) -> tuple[list[Any], list[Any]]:
     """The parameters and remappings a front-end's <node> or <composable_node> gives its
     action: its <param>s (each read when the node is planned) and <remap>s (from, to)."""
     from launch.frontend.entity import Entity
-    from launch.frontend.frontend_text import FrontendText
 
     params = entity.get_attr("param", data_type=list[Entity], optional=True) or []
     remaps = entity.get_attr("remap", data_type=list[Entity], optional=True) or []
@@ -167,7 +173,7 @@ class FrontendParameter:
         def text(name: str) -> str:
             if name not in element.attrs:
                 raise element.error(f"<{element.tag}> needs a {name!r} attribute")
-            return substitute(element.attrs[name], scope, element)
+            return FrontendText(element.attrs[name], element).perform(context)
 
         if "from" in element.attrs:
             path = Path(text("from"))
@@ -191,7 +197,9 @@ class FrontendParameter:
         if "value_sep" in element.attrs:  # each item substituted and typed on its own
             separator = element.attrs["value_sep"]
             items = element.attrs.get("value", "").split(separator) if separator else []
-            texts: str | list[str] = [substitute(item, scope, element) for item in items]
+            texts: str | list[str] = [
+                FrontendText(item, element).perform(context) for item in items
+            ]
         else:
             texts = text("value")
         value = _typed(texts, element.attrs.get("type"), element)

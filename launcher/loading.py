@@ -267,6 +267,12 @@ class Loader:
         action.where = element.where
         LaunchContext(scope, sink or self.plan, self.launch_state()).visit(action)
 
+    def context(self, scope: Scope) -> Any:
+        """A launch context of ``scope``, for a front-end's text performed outside an action."""
+        from launch.launch_context import LaunchContext
+
+        return LaunchContext(scope, self.plan, self.launch_state())
+
     def launch_state(self) -> Any:
         """The launch model's executor state, one for the whole launch (every format)."""
         if self.python_state is None:

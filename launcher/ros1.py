@@ -25,8 +25,9 @@ from launch_foundation.declarations import NodeDecl
 from launch_foundation.errors import CodeRefused, LaunchError
 from launch_foundation.naming import flatten, join_namespace, remap_problem, valid_name
 from launch_foundation.parse import Element
-from launch_foundation.substitutions import run_command, substitute, to_bool
+from launch_foundation.substitutions import run_command, to_bool
 from launcher import attributes as read
+from launcher.ros1_substitutions import substitute
 from launcher.scope import Scope
 from launcher.sink import Recording, note_unreached
 from launcher.tags import check_tag, tag

@@ -536,10 +536,12 @@ def _ends(pid: int) -> bool:
 def _setsid_grandchild(marker: Path, then: str) -> str:
     """A $(command) whose grandchild leaves the command's session (setsid) keeping its output
     open, its pid written to ``marker``; the command then runs ``then``."""
-    return (
-        "$(command 'sh -c &quot;( setsid sh -c &apos;echo $$ > "
-        f"{marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600&apos; &amp; ); {then}&quot;')"
+    script = marker.with_suffix(".sh")
+    script.write_text(
+        f"( setsid sh -c 'echo $$ > {marker}.tmp; mv {marker}.tmp {marker}; exec sleep 600' & )\n"
+        f"{then}\n"
     )
+    return f"$(command 'sh {script}')"
 
 
 def test_a_grandchild_in_a_session_of_its_own_neither_holds_the_launch_nor_outlives_it(
@@ -688,3 +690,99 @@ def generate_launch_description():
     params.write_text("talker: [1, 2]\n")
     with pytest.raises(LaunchError, match=r"p.launch.xml:2: .*has no 'ros__parameters:' mapping"):
         resolve(xml, {}, Options())
+
+
+def test_planning_calls_no_function_of_an_on_shutdown_handler(tmp_path):
+    # An OnShutdown handler's OpaqueFunction is the launch file's clean-up: ros2 launch calls
+    # it when the launch shuts down, so planning (--print) must not.
+    marker = tmp_path / "cleaned"
+    path = write(tmp_path, "t.launch.py", f"""from pathlib import Path
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction, RegisterEventHandler
+from launch.event_handlers import OnShutdown
+from launch_ros.actions import Node
+
+def cleanup(context):
+    Path({str(marker)!r}).write_text("cleaned")
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="ros_tutorials_topic", executable="talker"),
+        RegisterEventHandler(OnShutdown(on_shutdown=[OpaqueFunction(function=cleanup)])),
+    ])
+""")  # fmt: skip
+    done = run("ros2", "launch", str(path), "--print")
+    assert done.returncode == 0, done.stderr
+    assert "when the launch shuts down" in done.stdout
+    assert not marker.exists(), "planning ran the OnShutdown handler's function"
+
+
+def test_a_lifecycle_node_plans_as_its_node_and_needs_a_name_and_namespace(tmp_path):
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker",
+                      namespace="demo", output="screen", parameters=[{"rate": 2}]),
+    ])
+""")  # fmt: skip
+    (node,) = resolve(path, {}, Options()).nodes
+    assert (node.name, node.namespace, node.params) == ("lc_talker", "/demo", [("rate", 2)])
+    unnamed = write(tmp_path, "u.launch.py", """from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc_talker"),
+    ])
+""")  # fmt: skip
+    with pytest.raises(LaunchError, match=r"u.launch.py:6: .*missing 1 required keyword-only "
+                       r"argument: 'namespace'"):  # fmt: skip
+        resolve(unnamed, {}, Options())
+
+
+def test_a_lifecycle_transition_asked_by_the_launch_file_is_refused_in_one_line(tmp_path):
+    # The launcher hosts no ROS node to call change_state: ChangeState builds, and its
+    # EmitEvent is refused at the launch file's line (not a wrong plan, not a traceback).
+    path = write(tmp_path, "t.launch.py", """from launch import LaunchDescription
+from launch.actions import EmitEvent
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+
+def generate_launch_description():
+    node = LifecycleNode(package="ros_tutorials_topic", executable="talker", name="lc",
+                         namespace="")
+    return LaunchDescription([node, EmitEvent(event=ChangeState(
+        lifecycle_node_matcher=lambda action: action is node, transition_id=1))])
+""")  # fmt: skip
+    with pytest.raises(LaunchError) as raised:
+        resolve(path, {}, Options())
+    assert str(raised.value) == (
+        f"{path}:9: EmitEvent(ChangeState) is not supported here; only "
+        "EmitEvent(event=Shutdown(...))"
+    )
+
+
+def test_launch_service_runs_a_description_through_the_launchers_entry_point(tmp_path):
+    # launch finds the tool that plans and supervises by the launch.runner entry point
+    # (launcher.service.run), not by importing it: a script's LaunchService still runs.
+    script = tmp_path / "service.py"
+    script.write_text("""import sys
+from launch import LaunchDescription, LaunchService
+from launch.actions import ExecuteProcess
+
+ls = LaunchService()
+ls.include_launch_description(LaunchDescription([
+    ExecuteProcess(cmd=[sys.executable, "-c", "print('hello from the plan')"], output="screen"),
+]))
+sys.exit(ls.run())
+""")
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [sys.executable, str(script)], capture_output=True, text=True, timeout=TIMEOUT
+    )
+    assert done.returncode == 0, done.stderr
+    assert "hello from the plan" in done.stdout + done.stderr

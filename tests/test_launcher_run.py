@@ -283,21 +283,26 @@ def test_on_exit_shutdown_after_a_clean_exit_ends_with_code_0(node_process, tmp_
     assert_all_gone(list(started_pids(launcher.lines).values()))
 
 
-def test_a_timer_in_an_on_shutdown_handler_is_cancelled_not_fired(node_process, tmp_path):
+def test_on_shutdown_runs_its_function_and_cancels_its_timer(node_process, tmp_path):
     # ros2 launch: a TimerAction cancels itself at shutdown, one made by OnShutdown too.
     sleeper = script(
         tmp_path, "sleeper", "import time\nprint('ready', flush=True)\ntime.sleep(600)\n"
     )
+    marker = tmp_path / "cleaned"
     path = tmp_path / "t.launch.py"
     path.write_text(
+        "from pathlib import Path\n"
         "from launch import LaunchDescription\n"
-        "from launch.actions import ExecuteProcess, LogInfo, RegisterEventHandler, TimerAction\n"
+        "from launch.actions import ExecuteProcess, LogInfo, OpaqueFunction\n"
+        "from launch.actions import RegisterEventHandler, TimerAction\n"
         "from launch.event_handlers import OnShutdown\n\n"
+        f"def cleanup(context):\n    Path({str(marker)!r}).write_text('cleaned')\n\n"
         "def generate_launch_description():\n"
         "    return LaunchDescription([\n"
         f"        ExecuteProcess(cmd={sleeper.split()!r}, name='sleeper', output='screen'),\n"
         "        RegisterEventHandler(OnShutdown(on_shutdown=[\n"
         "            LogInfo(msg='cleaning up'),\n"
+        "            OpaqueFunction(function=cleanup),\n"
         "            TimerAction(period=100.0, actions=[LogInfo(msg='timer fired')]),\n"
         "        ])),\n"
         "    ])\n"
@@ -310,6 +315,7 @@ def test_a_timer_in_an_on_shutdown_handler_is_cancelled_not_fired(node_process, 
     assert launcher.wait() == 130
     assert "cleaning up" in launcher.output
     assert "timer fired" not in launcher.output
+    assert marker.read_text() == "cleaned"  # the handler's function, at the shutdown
     assert_all_gone(list(started_pids(lines).values()))
 
 

@@ -35,17 +35,12 @@ class FrontendText(Substitution):
         return self._parts
 
     def perform(self, context: LaunchContext | None) -> str:
+        from launch.frontend.parse_substitution import perform_capped
+
         if context is None:  # performed without a launch, as ros2/launch's tests do
             context = LaunchContext()
-        scope = context.frontend_scope
-        if getattr(scope, "fmt", "ros2") == "ros1":  # the ROS 1 dialect: roslaunch's names
-            from launch_foundation.substitutions import substitute
 
-            value = substitute(self.text, scope, self.element)
-        else:
-            from launch.frontend.parse_substitution import perform_capped
-
-            value = perform_capped(self.parts(), context, self.where)
+        value = perform_capped(self.parts(), context, self.where)
         return self.check(value, self.element) if self.check else value
 
     def describe(self) -> str:

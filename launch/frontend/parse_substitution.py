@@ -22,7 +22,7 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from launch_foundation import LaunchError
+from launch_foundation.errors import LaunchError
 
 MAX_NESTING = 50  # $(...) inside $(...): deeper is refused before it exhausts Python's stack
 _ESCAPE = re.compile(r"\\(.)", re.DOTALL)

@@ -53,7 +53,7 @@ class Command(Substitution):
         return f"Command({' + '.join(s.describe() for s in self.command)})"
 
     def perform(self, context: LaunchContext) -> str:
-        from launch_foundation import CodeRefused
+        from launch_foundation.errors import CodeRefused
         from launch_foundation.substitutions import run_command
 
         text = perform(self.command, context)

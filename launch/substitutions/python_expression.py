@@ -98,9 +98,9 @@ class PythonExpression(Substitution):
             ) from None
 
     def _frontend_value(self, text: str, names: dict[str, Any], context: LaunchContext) -> str:
-        """$(eval): read by launcher.expressions without running code; code only with the
+        """$(eval): read by launch_foundation.expressions without running code; code only with the
         user's --allow-code."""
-        from launch_foundation import CodeRefused
+        from launch_foundation.errors import CodeRefused
         from launch_foundation.expressions import BUILTINS, MATH, NeedsCode, evaluate
 
         safe = {**(MATH if "math" in names else {}), **BUILTINS}
