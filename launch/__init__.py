@@ -7,27 +7,36 @@ from launch import (
     conditions,
     event_handlers,
     events,
+    frontend,
     launch_description_sources,
+    logging,
     substitutions,
 )
 from launch._base import (
     Action,
     Condition,
     EventHandler,
-    LaunchContext,
     LaunchDescriptionEntity,
     SomeSubstitutionsType,
     Substitution,
 )
 from launch._missing import module_getattr
+from launch.event import Event
+from launch.invalid_launch_file_error import InvalidLaunchFileError
+from launch.launch_context import LaunchContext
 from launch.launch_description import LaunchDescription
 from launch.launch_description_sources import LaunchDescriptionSource
+from launch.launch_service import LaunchService
+from launch.some_entities_type import SomeEntitiesType, SomeEntitiesType_types_tuple
+from launch.some_substitutions_type import SomeSubstitutionsType_types_tuple
 
 __all__ = [
-    "Action", "Condition", "EventHandler", "LaunchContext", "LaunchDescription",
-    "LaunchDescriptionEntity", "LaunchDescriptionSource", "SomeSubstitutionsType",
-    "Substitution", "actions", "conditions", "event_handlers", "events",
-    "launch_description_sources", "substitutions",
+    "Action", "Condition", "Event", "EventHandler", "InvalidLaunchFileError", "LaunchContext",
+    "LaunchDescription", "LaunchDescriptionEntity", "LaunchDescriptionSource", "LaunchService",
+    "SomeEntitiesType", "SomeEntitiesType_types_tuple", "SomeSubstitutionsType",
+    "SomeSubstitutionsType_types_tuple", "Substitution", "actions", "conditions",
+    "event_handlers", "events", "frontend", "launch_description_sources", "logging",
+    "substitutions",
 ]  # fmt: skip
 
 __getattr__ = module_getattr("launch", lambda: __all__)

@@ -1,11 +1,10 @@
 """The Python launch API's core (ros2/launch's LaunchDescriptionEntity, Action, Substitution,
-Condition, EventHandler, LaunchContext), written for this project's launcher.
+TextSubstitution, Condition, EventHandler), written for this project's launcher; the context
+they are executed in is launch.launch_context's.
 
-A Python launch file builds these objects; ``launcher/python_files.py`` calls its
-``generate_launch_description()`` and executes the entities into the same plan the XML and
-YAML front-ends build (``launcher/resolve.py`` builds these actions for its tags, many by the
-parse methods of launch.frontend, and executes them the same way): executing an action hands
-a process or a step to the context's sink
+A Python launch file builds these objects, and the markup front-ends build the same ones
+(launch.frontend); the model's executor (``LaunchContext.visit``) executes them into a plan:
+executing an action hands a process or a step to the context's sink
 (``launch_foundation.declarations.PlanSink``) instead of doing it at once. Each entity remembers the
 line of the launch file that created it, so an error names the user's file:line, never a line
 in here.
@@ -16,16 +15,12 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from launch_foundation.declarations import AT_START, NodeDecl, PlanSink, Step, When
+from launch_foundation.declarations import Step, When
 from launch_foundation.errors import LaunchError
 from launch_foundation.parse import Element
-
-if TYPE_CHECKING:
-    from launch_foundation.substitutions import Context as Scope
 
 # The folders of the stand-in: frames in them are not the user's.
 _STACK = ("launch", "launch_ros", "launch_xml", "launch_yaml", "launch_foundation", "launcher")
@@ -74,33 +69,51 @@ class LaunchDescriptionEntity:
     def error(self, message: str) -> LaunchError:
         return LaunchError(f"{self.where}: {message}")
 
-    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
+    def execute(self, context: Any) -> list[LaunchDescriptionEntity] | None:
         return None
+
+    def describe(self) -> str:
+        raise NotImplementedError(f"{type(self).__name__}.describe()")
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return []
+
+    def describe_conditional_sub_entities(self) -> list[tuple[str, list[Any]]]:
+        return []
+
+    def visit(self, context: Any) -> list[LaunchDescriptionEntity] | None:
+        """ros2/launch's visit of an entity that is no action: nothing to do."""
+        return None
+
+    def get_asyncio_future(self) -> None:
+        return None
 
 
 class FrontendEntity(LaunchDescriptionEntity):
     """An element a front-end (launch XML or YAML) parsed, executed where the description
     reaches it: ``handle`` reads the element in the context's scope (its tag's handler)."""
 
-    def __init__(self, handle: Callable[[LaunchContext], None], where: str) -> None:
+    def __init__(self, handle: Callable[[Any], None], where: str) -> None:
         super().__init__()
         self.handle, self.where = handle, where
 
-    def execute(self, context: LaunchContext) -> None:
+    def execute(self, context: Any) -> None:
         self.handle(context)
 
 
 class Condition:
-    """When an action runs (launch.conditions)."""
+    """When an action runs (launch.Condition): ``predicate(context)``, else a subclass's
+    ``evaluate``."""
 
-    def __init__(self) -> None:
+    def __init__(self, *, predicate: Callable[[Any], bool] | None = None) -> None:
         self.where = caller_where()
+        self._predicate = predicate
 
-    def evaluate(self, context: LaunchContext) -> bool:
-        raise NotImplementedError
+    def evaluate(self, context: Any) -> bool:
+        return bool(self._predicate(context)) if self._predicate is not None else False
+
+    def describe(self) -> str:
+        return f"{type(self).__name__}()"
 
 
 class Action(LaunchDescriptionEntity):
@@ -118,15 +131,18 @@ class Action(LaunchDescriptionEntity):
         kwargs: dict[str, Any] = {} if condition is None else {"condition": condition}
         return cls, kwargs
 
-    def visit(self, context: LaunchContext) -> None:
-        """Execute this action into the plan, with what it returns, if its condition holds."""
+    def visit(self, context: Any) -> list[LaunchDescriptionEntity] | None:
+        """Execute this action into the plan if its condition holds: the entities it returns,
+        for the executor (LaunchContext.visit) to visit next, as ros2/launch's visit."""
         if self.condition is not None and not self.condition.evaluate(context):
-            return
+            return None
         context.state.executed[id(self)] = self
-        for entity in self.execute(context) or []:
-            context.visit(entity)
+        return self.execute(context)
 
-    def step_when_returned(self, when: When, context: LaunchContext) -> Step | None:
+    def describe(self) -> str:
+        return f"{type(self).__name__}(...)"
+
+    def step_when_returned(self, when: When, context: Any) -> Step | None:
         """What this action does when an event handler's function returns it, as the event
         happens: a step, or None if it cannot happen then (the plan's processes are fixed)."""
         return None
@@ -140,7 +156,7 @@ class Substitution:
     def __init__(self) -> None:
         self.where = caller_where()
 
-    def perform(self, context: LaunchContext) -> str:
+    def perform(self, context: Any) -> str:
         raise NotImplementedError
 
     def describe(self) -> str:
@@ -197,7 +213,7 @@ def normalize(value: Any, where: str = "") -> list[Substitution | str]:
     return out
 
 
-def perform(value: Any, context: LaunchContext) -> str:
+def perform(value: Any, context: Any) -> str:
     """The text of a substitutions value, as the launch sees it now."""
     if value is None:
         return ""
@@ -207,312 +223,30 @@ def perform(value: Any, context: LaunchContext) -> str:
 
 
 class EventHandler:
-    """Base of launch.event_handlers: what runs when an event of a process happens."""
-
-    def __init__(self) -> None:
-        self.where = caller_where()
-
-
-@dataclass
-class _DetachedScope:
-    """The values of a LaunchContext made outside a launch (the fields of resolve.Scope that
-    LaunchContext reads)."""
-
-    args: dict[str, str] = field(default_factory=dict)
-    env: dict[str, str | None] = field(default_factory=dict)
-    namespace: str = "/"
-    remaps: list[tuple[str, str]] = field(default_factory=list)
-    params: list[tuple[str, Any]] = field(default_factory=list)
-    params_files: list[str] = field(default_factory=list)
-    declared: dict[str, int] = field(default_factory=dict)
-    file: Path = field(default_factory=lambda: Path("<launch>"))
-    when: When = AT_START
-    fmt: str = "ros2"
-
-    def child(self, **changes: Any) -> _DetachedScope:
-        copies = {"args": dict(self.args), "env": dict(self.env), "remaps": list(self.remaps),
-                  "params": list(self.params), "params_files": list(self.params_files)}  # fmt: skip
-        return replace(self, **{**copies, **changes})
-
-    def anon(self, name: str) -> str:
-        return f"{name}_{os.getpid()}_{id(self) % 10000}"
-
-    # What a front-end's substitutions read of their context
-    # (launch_foundation.substitutions.Context).
-    allow_code = True  # made by Python code: its own $(command) and $(eval) are its own code
-
-    def read_arg(self, name: str, element: Element) -> str:
-        if name not in self.args:
-            raise element.error(f"launch configuration {name!r} is not set")
-        return self.args[name]
-
-    def charge(self, size: int, element: Element) -> None:
-        """Outside a launch there is no whole launch to count toward."""
-
-
-class _NoPlan:
-    """The sink of a LaunchContext made outside a launch: nothing can be added to a plan."""
-
-    def add_node(self, node: NodeDecl) -> int:
-        raise LaunchError(f"{node.where}: this LaunchContext is not part of a launch")
-
-    def add_step(self, step: Step) -> None:
-        raise LaunchError(f"{step.where}: this LaunchContext is not part of a launch")
-
-    def warn(self, text: str) -> None:
-        print(f"[WARNING] [launch]: {text}", file=sys.stderr)
-
-    def include(self, path: Path, given: dict[str, str], scope: Any, *where: Any) -> None:
-        raise LaunchError(f"{path}: this LaunchContext is not part of a launch")
-
-
-class _Environment(dict):
-    """LaunchContext.environment: ``os.environ`` with a scope's changes (``changes``: name ->
-    value, None for unset) applied; writes and deletes go to ``changes``."""
-
-    def __init__(self, changes: dict[str, str | None]) -> None:
-        merged = dict(os.environ)
-        for name, value in changes.items():
-            if value is None:
-                merged.pop(name, None)
-            else:
-                merged[name] = value
-        super().__init__(merged)
-        self._changes = changes
-
-    def __setitem__(self, name: str, value: str) -> None:
-        super().__setitem__(name, value)
-        self._changes[name] = value
-
-    def __delitem__(self, name: str) -> None:
-        super().__delitem__(name)
-        self._changes[name] = None
-
-    def pop(self, name: str, *default: Any) -> Any:
-        if name in self:
-            self._changes[name] = None
-        return super().pop(name, *default)
-
-    def update(self, *args: Any, **kwargs: Any) -> None:
-        for name, value in dict(*args, **kwargs).items():
-            self[name] = value
-
-    def clear(self) -> None:
-        for name in list(self):
-            del self[name]
-
-    def setdefault(self, name: str, default: Any = None) -> Any:
-        if name not in self:
-            self[name] = default
-        return self[name]
-
-
-class _Locals(dict):
-    """LaunchContext.locals: a dict whose keys read as attributes too (``context.locals.event``)."""
-
-    def __getattr__(self, name: str) -> Any:
-        try:
-            return self[name]
-        except KeyError:
-            raise AttributeError(f"context.locals has no {name!r}") from None
-
-
-class LaunchState:
-    """What one launch's executor keeps across files: the index of each process action (what
-    an event handler's target_action names), the handlers waiting for their target, the
-    launch configurations read (an argument read but not declared is not a typo), and the
-    actions executed (kept alive: their id() names them)."""
-
-    def __init__(self) -> None:
-        self.executed: dict[int, Any] = {}
-        self.process_index: dict[int, int] = {}
-        self.deferred_handlers: list[tuple[Any, LaunchContext]] = []
-        self.configurations_read: set[str] = set()
-
-
-class LaunchContext:
-    """What actions and substitutions see, as ros2/launch's LaunchContext: the launch
-    configurations, the environment, launch_ros's namespace, remaps and parameters for the
-    nodes that follow, and in an event handler the event (``locals``). Executing an entity
-    hands its result to ``sink`` (launch_foundation.declarations.PlanSink), the one interface to the
-    launcher. ``scope`` holds the values (the front-ends' scope, launcher/resolve.py): only
-    this class reads it, through the properties below."""
+    """Base of launch.event_handlers: what runs when an event happens. ``matcher(event)``
+    says whether it is one for this handler; ``entities`` are what handling it gives."""
 
     def __init__(
         self,
-        scope: Scope | None = None,
-        sink: PlanSink | None = None,
-        state: LaunchState | None = None,
-        locals_: dict[str, Any] | None = None,
         *,
-        argv: list[str] | None = None,
-        noninteractive: bool = False,
+        matcher: Callable[[Any], bool] | None = None,
+        entities: Any = None,
+        handle_once: bool = False,
     ) -> None:
-        # Without a scope (``LaunchContext()`` in OpaqueFunction code or a test, as ros2/launch
-        # allows): launch configurations and the rest of its own, and no plan to add to.
-        self._scope: Any = scope if scope is not None else _DetachedScope()
-        self.sink: PlanSink = sink if sink is not None else _NoPlan()
-        self.state = state if state is not None else LaunchState()
-        self.locals = _Locals(locals_ or {})
-        self._argv, self._noninteractive = list(argv or []), noninteractive
-        self._stacks: dict[str, list[dict[str, Any]]] = {}
+        self.where = caller_where()
+        self.matcher = matcher
+        self.entities = entities
+        self.handle_once = handle_once
 
-    @property
-    def launch_configurations(self) -> dict[str, str]:
-        return self._scope.args
+    def matches(self, event: Any) -> bool:
+        return bool(self.matcher(event)) if self.matcher is not None else False
 
-    @property
-    def environment(self) -> _Environment:
-        """The environment of the processes that follow, as a mutable mapping: the launcher's
-        own environment with what this scope set (SetEnvironmentVariable, ``<set_env>``) and
-        unset. Writing to it changes the scope, never the launcher's own ``os.environ``."""
-        return _Environment(self._scope.env)
+    def describe(self) -> tuple[str, list[Any]]:
+        return f"{type(self).__name__}(matcher=...)", []
 
-    @property
-    def allow_code(self) -> bool:
-        """Whether a front-end's ``$(command)`` and code in ``$(eval)`` may run (the user's
-        --allow-code; a context made by Python code itself: yes)."""
-        return bool(getattr(self._scope, "allow_code", False))
-
-    @property
-    def current_launch_file_path(self) -> str | None:
-        """The launch file being read (ThisLaunchFile), None outside one."""
-        file = getattr(self._scope, "file", None)
-        return None if file is None or str(file) == "<launch>" else str(file)
-
-    @property
-    def argv(self) -> list[str]:
-        return list(self._argv)
-
-    @property
-    def noninteractive(self) -> bool:
-        return self._noninteractive
-
-    @property
-    def is_shutdown(self) -> bool:
-        return bool(self.state.__dict__.get("shutdown", False))
-
-    def _push_launch_configurations(self) -> None:
-        self._stacks.setdefault("configurations", []).append(dict(self._scope.args))
-
-    def _pop_launch_configurations(self) -> None:
-        saved = self._stacks.get("configurations")
-        if not saved:
-            raise RuntimeError("launch_configurations stack unexpectedly empty")
-        self._scope.args.clear()
-        self._scope.args.update(saved.pop())
-
-    def _push_environment(self) -> None:
-        self._stacks.setdefault("environment", []).append(dict(self._scope.env))
-
-    def _pop_environment(self) -> None:
-        saved = self._stacks.get("environment")
-        if not saved:
-            raise RuntimeError("environment stack unexpectedly empty")
-        self._scope.env.clear()
-        self._scope.env.update(saved.pop())
-
-    def _reset_environment(self) -> None:
-        """Back to the launcher's own environment (ResetEnvironment)."""
-        self._scope.env.clear()
-
-    def set_env(self, name: str, value: str | None) -> None:
-        """Set (None: unset) a variable for the processes that follow in this scope."""
-        self._scope.env[name] = value
-
-    @property
-    def env_changes(self) -> dict[str, str | None]:
-        """The variables set (None: unset) for the processes that follow."""
-        return dict(self._scope.env)
-
-    @property
-    def ros_namespace(self) -> str:
-        return self._scope.namespace
-
-    @ros_namespace.setter
-    def ros_namespace(self, value: str) -> None:
-        self._scope.namespace = value
-
-    @property
-    def ros_remaps(self) -> list[tuple[str, str]]:
-        """launch_ros's global remaps (SetRemap), for the nodes that follow; add to it."""
-        return self._scope.remaps
-
-    @property
-    def ros_params(self) -> list[tuple[str, Any]]:
-        """launch_ros's global parameters (SetParameter), for the nodes that follow."""
-        return self._scope.params
-
-    @property
-    def ros_params_files(self) -> list[str]:
-        """launch_ros's global parameters files (SetParametersFromFile)."""
-        return self._scope.params_files
-
-    @property
-    def launch_file(self) -> Path:
-        """The launch file being executed (ThisLaunchFile)."""
-        return self._scope.file
-
-    @property
-    def when(self) -> When:
-        """When what executes here happens: at the start, after a timer, at an event."""
-        return self._scope.when
-
-    @property
-    def frontend_scope(self) -> Scope:
-        """The front-ends' substitution context ($(...) in a parameters file, allow_substs)."""
-        return self._scope
-
-    def declare(self, name: str) -> None:
-        """A launch argument is declared here (named in errors about undeclared ones)."""
-        self._scope.declared[name] = 0
-
-    def anon(self, name: str) -> str:
-        return self._scope.anon(name)
-
-    def include(
-        self,
-        path: Path,
-        given: dict[str, str],
-        where: str | None = None,
-        given_at: dict[str, str] | None = None,
-    ) -> None:
-        """Read another launch file with ``given`` arguments (not scoped, as ros2 launch),
-        included at file:line ``where``, each argument written at ``given_at[name]``."""
-        self.sink.include(path, given, self._scope, where, given_at)
-
-    def perform_substitution(self, substitution: Substitution) -> str:
-        return substitution.perform(self)
-
-    def extend_locals(self, values: dict[str, Any]) -> None:
-        self.locals.update(values)
-
-    def extend_globals(self, values: dict[str, Any]) -> None:
-        self.state.__dict__.setdefault("globals", {}).update(values)
-        for name, value in values.items():
-            self.locals.setdefault(name, value)
-
-    def get_locals_as_dict(self) -> dict[str, Any]:
-        return dict(self.locals)
-
-    def child(self, *, forwarding: bool = True, when: When | None = None) -> LaunchContext:
-        """A scope of its own (GroupAction, a timer, an event handler): what is set inside
-        does not leak out. Without ``forwarding`` it starts with no launch configurations;
-        ``when``: its actions happen then."""
-        changes: dict[str, Any] = {} if forwarding else {"args": {}}
-        if when is not None:
-            changes["when"] = when
-        return LaunchContext(self._scope.child(**changes), self.sink, self.state, self.locals)
-
-    def visit(self, entity: Any) -> None:
-        """Execute one entity of a description, or refuse what is not one."""
-        if isinstance(entity, Action):
-            entity.visit(self)
-        elif isinstance(entity, LaunchDescriptionEntity):
-            for sub in entity.execute(self) or []:
-                self.visit(sub)
-        elif entity is not None:
-            raise LaunchError(
-                f"{caller_where()}: {type(entity).__name__} is not a launch action "
-                "(a LaunchDescription holds actions: Node, ExecuteProcess, ...)"
-            )
+    def handle(self, event: Any, context: Any) -> Any:
+        """The event in ``context.locals.event``; the entities; once only if ``handle_once``."""
+        context.extend_locals({"event": event})
+        if self.handle_once:
+            context.unregister_event_handler(self)
+        return self.entities

@@ -8,5 +8,7 @@ from typing import Any
 class Event:
     """An event; its attributes are what the launcher reports with it."""
 
+    name = "launch.Event"
+
     def __init__(self, **fields: Any) -> None:
         self.__dict__.update(fields)

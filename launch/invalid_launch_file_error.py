@@ -16,10 +16,14 @@ class InvalidLaunchFileError(LaunchError):
             kind = f"'{extension}' " if extension else ""
             message = f"The launch file may have a syntax error, or its {kind}format is unknown"
         elif len(likely_errors) == 1:
-            message = f"Caught exception when trying to load file of format [{extension}]: " + str(
-                likely_errors[0]
+            error = likely_errors[0]
+            message = (
+                f"Caught exception when trying to load file of format [{extension}]: "
+                f"{type(error).__name__}: {error}"
             )
         else:
             message = "Caught multiple exceptions when trying to load file of format "
-            message += f"[{extension}]:\n" + "\n".join(f" - {error}" for error in likely_errors)
+            message += f"[{extension}]:\n" + "\n".join(
+                f" - {type(error).__name__}: {error}" for error in likely_errors
+            )
         super().__init__(message)

@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from launch._base import LaunchContext, LaunchDescriptionEntity
+from launch._base import LaunchDescriptionEntity
+from launch.launch_context import LaunchContext
 
 
 class LaunchDescription(LaunchDescriptionEntity):
@@ -25,7 +26,18 @@ class LaunchDescription(LaunchDescriptionEntity):
     def add_entity(self, entity: LaunchDescriptionEntity) -> None:
         self.entities.append(entity)
 
+    @property
+    def deprecated(self) -> bool:
+        return self.deprecated_reason is not None
+
+    def describe(self) -> str:
+        return f"LaunchDescription({len(self.entities)} entities)"
+
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.entities
+
+    def visit(self, context: Any) -> list[LaunchDescriptionEntity]:
+        """Its entities, to visit next (the executor's LaunchContext.visit runs them)."""
         return self.entities
 
     def execute(self, context: LaunchContext) -> list[Any]:

@@ -5,10 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from launch._base import Action, LaunchContext, caller_where, normalize, perform
+from launch._base import Action, caller_where, normalize, perform
 from launch._missing import module_getattr
 from launch.actions import ExecuteProcess, NameValueAction, command_words, frontend_attr
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import ComponentDecl, ContainerDecl, NodeDecl
 from launch_foundation.errors import LaunchError
 from launch_foundation.naming import join_namespace, namespace_under, remap_problem, valid_name

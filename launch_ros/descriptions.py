@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import LaunchContext, caller_where, perform
+from launch._base import caller_where, perform
 from launch._missing import module_getattr
 from launch.actions import enabled
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import ComponentDecl
 from launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 from launch_ros.utilities import (

@@ -7,9 +7,10 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from launch._base import LaunchContext, Substitution, perform
+from launch._base import Substitution, perform
 from launch._missing import module_getattr
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from ros_tutorials_common import packages
 
 __all__ = [

@@ -7,9 +7,10 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from launch._base import LaunchContext, Substitution, element_at, perform
+from launch._base import Substitution, element_at, perform
 from launch.actions import enabled, flag
 from launch.frontend.frontend_text import FrontendText
+from launch.launch_context import LaunchContext
 from launch_foundation.errors import LaunchError
 from launch_foundation.naming import flatten, namespace_under, remap_problem, yaml_parameter
 from launch_foundation.parse import Element

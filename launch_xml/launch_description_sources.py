@@ -1,7 +1,7 @@
 """launch_xml.launch_description_sources.XMLLaunchDescriptionSource."""
 
-from launch.launch_description_sources import LaunchDescriptionSource
+from launch.launch_description_sources import FrontendLaunchDescriptionSource
 
 
-class XMLLaunchDescriptionSource(LaunchDescriptionSource):
+class XMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
     pass

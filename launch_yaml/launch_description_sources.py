@@ -1,7 +1,7 @@
 """launch_yaml.launch_description_sources.YAMLLaunchDescriptionSource."""
 
-from launch.launch_description_sources import LaunchDescriptionSource
+from launch.launch_description_sources import FrontendLaunchDescriptionSource
 
 
-class YAMLLaunchDescriptionSource(LaunchDescriptionSource):
+class YAMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
     pass

@@ -262,21 +262,21 @@ class Loader:
         """Execute a launch action (launch/, launch_ros/) in ``scope``: what the tag does is
         the action's one definition; its handler only reads the attributes. ``sink``: another
         PlanSink than the launch's (a Recording of it)."""
-        from launch._base import LaunchContext
+        from launch.launch_context import LaunchContext
 
         action.where = element.where
         LaunchContext(scope, sink or self.plan, self.launch_state()).visit(action)
 
     def context(self, scope: Scope) -> Any:
         """A launch context of ``scope``, for a front-end's text performed outside an action."""
-        from launch._base import LaunchContext
+        from launch.launch_context import LaunchContext
 
         return LaunchContext(scope, self.plan, self.launch_state())
 
     def launch_state(self) -> Any:
         """The launch model's executor state, one for the whole launch (every format)."""
         if self.python_state is None:
-            from launch._base import LaunchState
+            from launch.launch_context import LaunchState
 
             self.python_state = LaunchState()
         return self.python_state

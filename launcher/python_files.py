@@ -87,7 +87,7 @@ def load_description(path: Path) -> Any:
 def resolve_python_file(path: Path, scope: Scope, strict: bool) -> None:
     """Execute a Python launch file into the launch plan of ``scope``'s loader
     (launcher/loading.py)."""
-    from launch._base import LaunchContext
+    from launch.launch_context import LaunchContext
 
     description = load_description(path)
     loader = scope.loader

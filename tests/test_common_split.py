@@ -24,11 +24,13 @@ LAUNCHER = [
     "launcher.__main__",
     "launch_foundation.declarations",
     "launch_foundation.parse",
+    "launch_foundation.substitutions",
     "launcher.plan",
     "launcher.loading",
     "launcher.ros1",
+    "launcher.ros1_substitutions",
     "launcher.ros2_markup",
-    "launch_foundation.substitutions",
+    "launcher.service",
     "launcher.supervise",
 ]
 PROBE = """

@@ -42,6 +42,7 @@ FENCE_CLOSE = re.compile(r"^ *```\s*$")
 # A page whose every block is marked: why it has no checked step.
 NO_CHECKED_STEP = {
     "docs/dev/testing.md": "its commands run the test suite itself",
+    "docs/dev/launch-upstream-tests.md": "its commands run ros2/launch's suite from a clone",
     "docs/ros1-to-ros2.md": "its one block sets variables for two machines",
 }
 # Where a line's output ends in the one bash that runs a block: a line of its own.

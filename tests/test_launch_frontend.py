@@ -408,7 +408,8 @@ def test_arg_and_include_build_their_actions():
         """)
     arg, include = ld.entities
     assert isinstance(arg, DeclareLaunchArgument) and isinstance(include, IncludeLaunchDescription)
-    assert (arg.name, arg.description, arg.choices) == ("mode", "how", ["fast", "slow"])
+    assert (arg.name, arg.choices) == ("mode", ["fast", "slow"])
+    assert arg.description == "how. Valid choices are: ['fast', 'slow']"  # as ros2 launch
     context = LaunchContext()
     arg.visit(context)
     assert context.launch_configurations["mode"] == "fast"

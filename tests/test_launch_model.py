@@ -762,3 +762,27 @@ def generate_launch_description():
         f"{path}:9: EmitEvent(ChangeState) is not supported here; only "
         "EmitEvent(event=Shutdown(...))"
     )
+
+
+def test_launch_service_runs_a_description_through_the_launchers_entry_point(tmp_path):
+    # launch finds the tool that plans and supervises by the launch.runner entry point
+    # (launcher.service.run), not by importing it: a script's LaunchService still runs.
+    script = tmp_path / "service.py"
+    script.write_text("""import sys
+from launch import LaunchDescription, LaunchService
+from launch.actions import ExecuteProcess
+
+ls = LaunchService()
+ls.include_launch_description(LaunchDescription([
+    ExecuteProcess(cmd=[sys.executable, "-c", "print('hello from the plan')"], output="screen"),
+]))
+sys.exit(ls.run())
+""")
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [sys.executable, str(script)], capture_output=True, text=True, timeout=TIMEOUT
+    )
+    assert done.returncode == 0, done.stderr
+    assert "hello from the plan" in done.stdout + done.stderr

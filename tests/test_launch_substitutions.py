@@ -132,9 +132,10 @@ def test_launch_configuration_equals_and_python_expression_read_the_context():
 
     context = LaunchContext()
     context.launch_configurations["mode"] = "sim"
-    assert LaunchConfigurationEquals("mode", "sim").evaluate(context)
-    assert LaunchConfigurationNotEquals("mode", "real").evaluate(context)
-    assert LaunchConfigurationEquals("other", None).evaluate(context)
+    with pytest.warns(UserWarning, match="deprecated in ros2 launch"):
+        assert LaunchConfigurationEquals("mode", "sim").evaluate(context)
+        assert LaunchConfigurationNotEquals("mode", "real").evaluate(context)
+        assert LaunchConfigurationEquals("other", None).evaluate(context)
     assert (
         PythonExpression(["'", LaunchConfiguration("mode"), "' == 'sim'"]).perform(context)
         == "True"

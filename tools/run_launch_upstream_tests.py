@@ -23,7 +23,10 @@ LINTERS = ("test_copyright.py", "test_flake8.py", "test_mypy.py", "test_pep257.p
 
 def main(argv: list[str]) -> int:
     if not argv or argv[0] in ("-h", "--help"):
-        print(__doc__.strip())
+        try:
+            print(__doc__.strip(), flush=True)
+        except BrokenPipeError:  # | head: the reader has what it wanted
+            sys.stdout = None  # type: ignore[assignment]  (nothing left to flush at exit)
         return 0 if argv else 2
     checkout = Path(argv[0]).resolve()
     missing = [suite for suite in SUITES if not (checkout / suite).is_dir()]

@@ -8,12 +8,8 @@ import shlex
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, perform
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import (
     MAX_SECONDS,
     Step,

@@ -5,14 +5,10 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, normalize_to_list_of_substitutions, perform
 from launch.actions._common import env_name, flag
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("append_env")
@@ -26,7 +22,10 @@ class AppendEnvironmentVariable(Action):
         **kw: Any,
     ) -> None:
         super().__init__(**kw)
-        self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
+        self.name = normalize_to_list_of_substitutions(name)
+        self.value = normalize_to_list_of_substitutions(value)
+        self.separator = normalize_to_list_of_substitutions(separator)
+        self.prepend = prepend
 
     @classmethod
     def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:
@@ -36,7 +35,8 @@ class AppendEnvironmentVariable(Action):
         prepend = entity.get_attr("prepend", optional=True)
         if prepend is not None:  # launch_xml's own test writes "yes"
             word = prepend.strip().lower()
-            kwargs["prepend"] = {"yes": "true", "no": "false"}.get(word, prepend)
+            words = {"true": True, "1": True, "yes": True, "false": False, "0": False, "no": False}
+            kwargs["prepend"] = words[word] if word in words else parser.parse_substitution(prepend)
         separator = entity.get_attr("separator", optional=True)
         if separator is not None:
             kwargs["separator"] = parser.parse_substitution(separator)

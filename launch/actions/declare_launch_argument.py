@@ -5,14 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, normalize_to_list_of_substitutions, perform
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("arg")
@@ -31,9 +27,18 @@ class DeclareLaunchArgument(Action):
     ) -> None:
         super().__init__(**kwargs)
         self.name = name
-        self.default_value = default_value
-        self.description = description
+        self.default_value = (
+            None if default_value is None else normalize_to_list_of_substitutions(default_value)
+        )
         self.choices = list(choices) if choices is not None else None
+        if self.choices is not None:  # as ros2 launch says them (--show-args too)
+            if description is None:
+                description = f"One of: {self.choices}"
+            else:
+                description += ("" if description.endswith(".") else ".") + (
+                    f" Valid choices are: {self.choices}"
+                )
+        self.description = description
 
     @classmethod
     def parse(cls, entity: Any, parser: Any) -> tuple[type, dict[str, Any]]:

@@ -4,13 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    perform,
-)
+from launch._base import Action, perform
 from launch.actions._common import lazy_step
 from launch.events import Shutdown as ShutdownEvent
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import (
     Step,
     When,

@@ -9,14 +9,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-from launch._base import (
-    Action,
-    Condition,
-    LaunchContext,
-    SomeSubstitutionsType,
-    Substitution,
-    perform,
-)
+from launch._base import Action, Condition, SomeSubstitutionsType, Substitution, perform
 from launch.actions._common import (
     DEFAULT_OUTPUT_FORMAT,
     _env_name_check,
@@ -39,6 +32,7 @@ from launch.actions.shutdown_action import Shutdown
 from launch.event_handlers import OnProcessExit
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import (
     DEFAULT_RESPAWN_MAX_RETRIES,
     NodeDecl,
@@ -103,6 +97,10 @@ class ExecuteProcess(Action):
             name = frontend_attr(entity, "name")
             if name is not None:
                 kwargs["name"] = name
+        for attr in ("shell", "emulate_tty"):
+            value = entity.get_attr(attr, data_type=bool, optional=True)
+            if value is not None:
+                kwargs[attr] = parser.parse_if_substitutions(value)
         checks: dict[str, Callable[[str, Any], str] | None] = {
             "cwd": None, "output": _output_check, "respawn": _flag_check("respawn"),
             "respawn_delay": number_check("respawn_delay"),
@@ -133,13 +131,17 @@ class ExecuteProcess(Action):
             }
         return cls, kwargs
 
+    def get_sub_entities(self) -> list[Any]:
+        """The actions that happen when the process exits (on_exit)."""
+        return normalize_actions(self.on_exit)
+
     def process_decl(self, context: LaunchContext) -> NodeDecl:
         """The process as the launcher's plan holds it (launch_ros's Node fills in more)."""
         words = command_words(self.cmd, context)
         if not words or not words[0]:
             raise self.error("ExecuteProcess needs a non-empty cmd")
         label = (perform(self.name, context) or None) if self.name is not None else None
-        if self.shell:
+        if flag(self.shell, context):
             first = shlex.split(words[0])[:1] if words[0].strip() else []
             label = label or (Path(first[0]).name if first else "sh")
             command = ["/bin/sh", "-c", " ".join(words)]

@@ -5,15 +5,11 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    LaunchDescriptionEntity,
-    perform,
-)
+from launch._base import Action, LaunchDescriptionEntity, perform
 from launch.actions._common import flag
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("group")

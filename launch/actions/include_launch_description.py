@@ -6,13 +6,10 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    perform,
-)
+from launch._base import Action, perform
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("include")
@@ -48,8 +45,17 @@ class IncludeLaunchDescription(Action):
         ]
         return cls, kwargs
 
-    def execute(self, context: LaunchContext) -> None:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         source = self.launch_description_source
+        given_description = getattr(source, "try_get_launch_description_without_context", None)
+        description = given_description() if given_description is not None else source
+        if type(description).__name__ != "LaunchDescription":  # a file to read
+            description = None
+        if description is not None:  # a description given as it is: its arguments set, then it
+            for name, value, *condition in self.launch_arguments:
+                if not condition or condition[0].evaluate(context):
+                    context.launch_configurations[perform(name, context)] = perform(value, context)
+            return [description]
         location = getattr(source, "location", source)
         path = Path(perform(location, context))
         if not path.is_absolute():
@@ -68,3 +74,10 @@ class IncludeLaunchDescription(Action):
             context.include(path, given, self.where, self.arguments_at)
         except RecursionError:
             raise self.error("launch files include each other too deeply") from None
+        return None
+
+    def describe(self) -> str:
+        return f"IncludeLaunchDescription({self.launch_description_source!r})"
+
+    def get_sub_entities(self) -> list[Any]:
+        return []

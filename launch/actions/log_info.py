@@ -4,15 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    normalize,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, normalize, perform
 from launch.actions._common import lazy_step
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import (
     Step,
     When,

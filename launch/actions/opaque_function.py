@@ -5,11 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    LaunchDescriptionEntity,
-)
+from launch._base import Action, LaunchDescriptionEntity
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import Step
 
 

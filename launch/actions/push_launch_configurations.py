@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import Action, LaunchContext
+from launch._base import Action
+from launch.launch_context import LaunchContext
 
 
 class PushLaunchConfigurations(Action):

@@ -4,11 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    EventHandler,
-    LaunchContext,
-)
+from launch._base import Action, EventHandler
+from launch.launch_context import LaunchContext
 
 
 class RegisterEventHandler(Action):

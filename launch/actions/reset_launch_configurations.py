@@ -4,13 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    perform,
-)
+from launch._base import Action, perform
 from launch.frontend.entity import Entity
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("reset")

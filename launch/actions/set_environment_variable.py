@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-from launch._base import (
-    LaunchContext,
-    perform,
-)
+from launch._base import perform
 from launch.actions._common import NameValueAction, env_name
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("set_env")

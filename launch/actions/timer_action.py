@@ -5,14 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    LaunchDescriptionEntity,
-    SomeSubstitutionsType,
-)
+from launch._base import Action, LaunchDescriptionEntity, SomeSubstitutionsType
 from launch.actions._common import flag, seconds
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("timer")

@@ -4,13 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-)
+from launch._base import Action, SomeSubstitutionsType
 from launch.actions._common import env_name
 from launch.frontend.expose import expose_action
+from launch.launch_context import LaunchContext
 
 
 @expose_action("unset_env")

@@ -4,12 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import (
-    Action,
-    LaunchContext,
-    SomeSubstitutionsType,
-    perform,
-)
+from launch._base import Action, SomeSubstitutionsType, perform
+from launch.launch_context import LaunchContext
 
 
 class UnsetLaunchConfiguration(Action):

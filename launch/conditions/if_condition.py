@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from launch._base import (
     Condition,
-    LaunchContext,
     SomeSubstitutionsType,
     normalize_to_list_of_substitutions,
     perform,
 )
 from launch.conditions.evaluate_condition_expression_impl import condition_truth
+from launch.launch_context import LaunchContext
 
 
 class IfCondition(Condition):

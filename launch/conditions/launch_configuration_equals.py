@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch._base import Condition, LaunchContext, perform
+from launch._base import Condition, perform
+from launch.launch_context import LaunchContext
 
 
 class LaunchConfigurationEquals(Condition):
@@ -12,6 +13,14 @@ class LaunchConfigurationEquals(Condition):
     ``expected_value`` None, when the configuration is not set."""
 
     def __init__(self, launch_configuration_name: str, expected_value: Any) -> None:
+        import warnings
+
+        warnings.warn(
+            f"{type(self).__name__} is deprecated in ros2 launch; use IfCondition with "
+            "EqualsSubstitution (or NotEqualsSubstitution)",
+            UserWarning,
+            stacklevel=2,
+        )
         super().__init__()
         self.launch_configuration_name = launch_configuration_name
         self.expected_value = expected_value

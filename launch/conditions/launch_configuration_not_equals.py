@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from launch._base import LaunchContext
 from launch.conditions.launch_configuration_equals import LaunchConfigurationEquals
+from launch.launch_context import LaunchContext
 
 
 class LaunchConfigurationNotEquals(LaunchConfigurationEquals):

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from launch._base import LaunchContext
 from launch.conditions.if_condition import IfCondition
+from launch.launch_context import LaunchContext
 
 
 class UnlessCondition(IfCondition):

@@ -7,6 +7,8 @@ from typing import Any
 from launch._missing import module_getattr
 from launch.event import Event
 from launch.events import process
+from launch.events.execution_complete import ExecutionComplete
+from launch.events.matchers import matches_action
 from launch.events.process import (
     ProcessExited,
     ProcessIO,
@@ -16,8 +18,8 @@ from launch.events.process import (
 )
 
 __all__ = [
-    "Event", "ProcessExited", "ProcessIO", "ProcessStarted", "ProcessStderr", "ProcessStdout",
-    "Shutdown", "process",
+    "Event", "ExecutionComplete", "ProcessExited", "ProcessIO", "ProcessStarted",
+    "ProcessStderr", "ProcessStdout", "Shutdown", "matches_action", "process",
 ]  # fmt: skip
 
 

@@ -9,7 +9,8 @@ import shlex
 from collections.abc import Callable
 from typing import Any
 
-from launch._base import LaunchContext, Substitution
+from launch._base import Substitution
+from launch.launch_context import LaunchContext
 from launch_foundation.parse import Element
 
 
@@ -33,8 +34,11 @@ class FrontendText(Substitution):
             self._parts = parse_at(self.text, self.where)
         return self._parts
 
-    def perform(self, context: LaunchContext) -> str:
+    def perform(self, context: LaunchContext | None) -> str:
         from launch.frontend.parse_substitution import perform_capped
+
+        if context is None:  # performed without a launch, as ros2/launch's tests do
+            context = LaunchContext()
 
         value = perform_capped(self.parts(), context, self.where)
         return self.check(value, self.element) if self.check else value

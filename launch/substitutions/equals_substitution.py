@@ -6,8 +6,9 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from launch._base import LaunchContext, Substitution, normalize_to_list_of_substitutions, perform
+from launch._base import Substitution, normalize_to_list_of_substitutions, perform
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 
 
@@ -23,19 +24,24 @@ def _text(value: Any) -> Any:
     return value
 
 
-def _same(left: str, right: str) -> bool:
-    """Equal as text, or as the numbers or booleans the text names (``1.0`` equals ``1``,
-    ``True`` equals ``true``)."""
-    if left == right:
-        return True
-    words = {"true": True, "false": False}
-    if left.lower() in words and right.lower() in words:
-        return words[left.lower()] == words[right.lower()]
+def _typed(text: str) -> Any:
+    """Text as ros2 launch compares it: true/false (any case) a boolean, a number a float,
+    anything else the text."""
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
     try:
-        a, b = float(left), float(right)
+        return float(text)
     except ValueError:
-        return False
-    return a == b or (math.isnan(a) and math.isnan(b))
+        return text
+
+
+def _same(left: str, right: str) -> bool:
+    """Equal as booleans and numbers (1 is true, 10 is 10.0 within float precision, nan
+    equals nothing), else as text."""
+    a, b = _typed(left), _typed(right)
+    if isinstance(a, (bool, float)) and isinstance(b, (bool, float)):
+        return math.isclose(float(a), float(b))
+    return a == b
 
 
 @expose_substitution("equals")

@@ -9,13 +9,13 @@ from collections.abc import Sequence
 from typing import Any
 
 from launch._base import (
-    LaunchContext,
     SomeSubstitutionsType,
     Substitution,
     normalize_to_list_of_substitutions,
     perform,
 )
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 from launch.substitutions.substitution_failure import SubstitutionFailure
 

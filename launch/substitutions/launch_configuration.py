@@ -6,7 +6,6 @@ from collections.abc import Sequence
 from typing import Any
 
 from launch._base import (
-    LaunchContext,
     SomeSubstitutionsType,
     Substitution,
     element_at,
@@ -14,6 +13,7 @@ from launch._base import (
     perform,
 )
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 from launch.substitutions.substitution_failure import SubstitutionFailure
 

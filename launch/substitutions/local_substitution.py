@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from launch._base import LaunchContext, Substitution
+from launch._base import Substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions.substitution_failure import SubstitutionFailure
 
 

@@ -7,7 +7,8 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from launch._base import LaunchContext, Substitution, perform
+from launch._base import Substitution, perform
+from launch.launch_context import LaunchContext
 
 
 class PathJoinSubstitution(Substitution):

@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from launch._base import LaunchContext, Substitution
+from launch._base import Substitution
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 from launch.substitutions.substitution_failure import SubstitutionFailure
 

@@ -6,8 +6,8 @@ import os
 from collections.abc import Sequence
 from typing import Any
 
-from launch._base import LaunchContext
 from launch.frontend.expose import expose_substitution
+from launch.launch_context import LaunchContext
 from launch.substitutions._args import arguments
 from launch.substitutions.this_launch_file import ThisLaunchFile
 
@@ -22,4 +22,7 @@ class ThisLaunchFileDir(ThisLaunchFile):
         return cls, {}
 
     def perform(self, context: LaunchContext) -> str:
+        given = context.get_locals_as_dict().get("current_launch_file_directory")
+        if given is not None:  # set by who loads a file
+            return str(given)
         return os.path.dirname(super().perform(context))

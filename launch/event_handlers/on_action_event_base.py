@@ -1,20 +1,16 @@
-"""launch.event_handlers: actions that happen when a process starts, exits or prints a line,
-or when the launch shuts down. Each becomes steps and processes of the plan that wait for
-their event (``launch_foundation.declarations.When``)."""
+"""launch.event_handlers.on_action_event_base: what the event handlers share: one event of one
+process (or of any), its actions or function made into steps and processes of the plan that
+wait for the event (``launch_foundation.declarations.When``)."""
 
 from __future__ import annotations
 
 import inspect
 from typing import Any
 
-from launch._base import Action, EventHandler, LaunchContext, is_ours
-from launch._missing import module_getattr
+from launch._base import Action, EventHandler, LaunchDescriptionEntity, is_ours
 from launch.events import event_from
+from launch.launch_context import LaunchContext
 from launch_foundation.declarations import Step, When
-
-__all__ = [
-    "OnExecutionComplete", "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown",
-]  # fmt: skip
 
 
 class _OnEvent(EventHandler):
@@ -27,6 +23,16 @@ class _OnEvent(EventHandler):
         self, target_action: Any = None, actions: Any = None, handle_once: bool = False
     ) -> None:
         super().__init__()
+        if target_action is not None and not isinstance(target_action, Action):
+            raise TypeError(
+                f"{type(self).__name__}: target_action must be an action, not "
+                f"{type(target_action).__name__}"
+            )
+        if not _handles(actions):
+            raise TypeError(
+                f"{type(self).__name__}: its actions must be an action, a list of them or a "
+                f"function, not {type(actions).__name__}"
+            )
         self.target_action = target_action
         self.actions = actions
         self.handle_once = handle_once  # only the first such event (a respawning process)
@@ -60,6 +66,15 @@ class _OnEvent(EventHandler):
         actions = self.actions if isinstance(self.actions, (list, tuple)) else [self.actions]
         for action in actions:
             inner.visit(action)
+
+
+def _handles(actions: Any) -> bool:
+    """What an event handler may do: nothing, a function, an entity or a list of entities."""
+    if actions is None or callable(actions) or isinstance(actions, LaunchDescriptionEntity):
+        return True
+    return isinstance(actions, (list, tuple)) and all(
+        isinstance(item, LaunchDescriptionEntity) or callable(item) for item in actions
+    )
 
 
 def first_event(context: LaunchContext, info: dict) -> bool:
@@ -109,62 +124,4 @@ def _frames(tb: Any) -> list[Any]:
     return list(traceback.extract_tb(tb))
 
 
-class OnProcessStart(_OnEvent):
-    event = "start"
-
-    def __init__(
-        self, *, target_action: Any = None, on_start: Any, handle_once: bool = False
-    ) -> None:
-        super().__init__(target_action, on_start, handle_once)
-
-
-class OnProcessExit(_OnEvent):
-    event = "exit"
-
-    def __init__(
-        self, *, target_action: Any = None, on_exit: Any, handle_once: bool = False
-    ) -> None:
-        super().__init__(target_action, on_exit, handle_once)
-
-
-class OnExecutionComplete(_OnEvent):
-    """For a process, its execution completes when it exits."""
-
-    event = "exit"
-
-    def __init__(
-        self, *, target_action: Any = None, on_completion: Any, handle_once: bool = False
-    ) -> None:
-        super().__init__(target_action, on_completion, handle_once)
-
-
-class OnProcessIO(_OnEvent):
-    takes_context = False
-
-    def __init__(
-        self,
-        *,
-        target_action: Any = None,
-        on_stdin: Any = None,
-        on_stdout: Any = None,
-        on_stderr: Any = None,
-        handle_once: bool = False,
-    ) -> None:
-        super().__init__(target_action, None, handle_once)
-        self.on_stdout, self.on_stderr = on_stdout, on_stderr
-
-    def register_at(self, context: LaunchContext, when: When) -> None:
-        for event, actions in (("stdout", self.on_stdout), ("stderr", self.on_stderr)):
-            if actions is not None:
-                self.actions = actions
-                super().register_at(context, When(event, when.target))
-
-
-class OnShutdown(_OnEvent):
-    event = "shutdown"
-
-    def __init__(self, *, on_shutdown: Any, handle_once: bool = False) -> None:
-        super().__init__(None, on_shutdown, handle_once)
-
-
-__getattr__ = module_getattr("launch.event_handlers", lambda: __all__)
+OnActionEventBase = _OnEvent  # ros2/launch's name for it
