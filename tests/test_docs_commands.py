@@ -44,6 +44,7 @@ NO_CHECKED_STEP = {
     "docs/dev/testing.md": "its commands run the test suite itself",
     "docs/dev/launch-upstream-tests.md": "its commands run ros2/launch's suite from a clone",
     "docs/ros1-to-ros2.md": "its one block sets variables for two machines",
+    "docs/rqt-in-the-browser.md": "its steps are clicks in a browser (tests/test_web_rqt.py)",
 }
 # Where a line's output ends in the one bash that runs a block: a line of its own.
 END = "\x1eend of line, exit status "

@@ -256,3 +256,30 @@ def write_bag(path: Path) -> Path:
         )
     writer.close()
     return path
+
+
+class TestRqtCommands:
+    """Each command opens the view at its tool; given what the terminal form takes, the
+    terminal form runs (tests/test_console.py and test_graph_view.py check those)."""
+
+    def test_each_command_prints_the_link_to_its_tool(self, own_domain, node_process) -> None:
+        for command, fragment in (
+            (["rqt_console"], "#console"),
+            (["rqt_logger_level"], "#logger_level"),
+            (["rqt_reconfigure"], "#reconfigure"),
+            (["rqt_service_caller"], "#service_caller"),
+            (["rqt_plot", "/turtle1/pose/x", "/turtle1/pose/y"], "#plot:/turtle1/pose/x,/turtle1/pose/y"),  # noqa: E501
+            (["ros2", "run", "rqt_bag", "rqt_bag", "/tmp/no bag"], "#bag:/tmp/no%20bag"),
+        ):  # fmt: skip
+            tool = node_process(str(BIN / command[0]), *command[1:], "--port", "0", env=HEADLESS)
+            line = tool.wait_for_text("in a browser")[-1]
+            assert re.search(r"/rqt\?token=[\w-]{32}" + re.escape(fragment) + " in a browser", line)
+            tool.kill()
+
+    def test_graph_and_console_are_the_viewers_panels(self, rqt: str) -> None:
+        with chromium(1200, 800) as browser:
+            browser.get(rqt + "#console")
+            until(lambda: browser.current_url.endswith("#log-section"), "the viewer's log")
+            until(lambda: "Spawning turtle" in text_of(browser, "#log"), "turtlesim's log lines")
+            browser.get(rqt + "#graph")
+            until(lambda: "/turtlesim" in text_of(browser, "#graph"), "the viewer's graph")
