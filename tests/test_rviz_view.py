@@ -11,6 +11,7 @@ import asyncio
 import json
 import math
 import re
+import signal
 import struct
 import threading
 import time
@@ -863,3 +864,23 @@ def test_every_display_by_topic(sensors: Sensors, node_process, tmp_path: Path) 
         browser.save_screenshot(str(tmp_path / "rviz_sensors.png"))
     finally:
         browser.quit()
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_ctrl_c_and_sigterm_end_the_view_with_a_page_open(node_process, signum) -> None:
+    """Ctrl-C or SIGTERM while a page holds the WebSocket: rviz2 closes it and ends, status 0,
+    no traceback."""
+    process = node_process(str(BIN / "rviz2"), "--port", "0", env=HEADLESS)
+    link = started(process)
+
+    async def hold() -> None:
+        async with aiohttp.ClientSession() as client, client.ws_connect(at(link, "ws")) as ws:
+            await Tab(ws).until(lambda item: kind_of(item), "a first payload")
+            process.process.send_signal(signum)
+            ending = (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED)
+            while (await ws.receive(timeout=TIMEOUT)).type not in ending:
+                pass  # what was on its way before the signal
+
+    asyncio.run(hold())
+    assert process.wait() == 0
+    assert "Traceback" not in "\n".join(process.lines)
