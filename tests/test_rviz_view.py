@@ -862,6 +862,22 @@ def test_every_display_by_topic(sensors: Sensors, node_process, tmp_path: Path) 
             "window.rvizState.setView({distance: 11, pitch: 0.75, yaw: -2.2, focal: [5, 5, 0]})"
         )
         browser.save_screenshot(str(tmp_path / "rviz_sensors.png"))
+        # The learner types another fixed frame: everything is drawn from base_link now,
+        # the map's corner 3 m behind and 2 m to the side of the robot, turned by -45 degrees.
+        from selenium.webdriver.common.keys import Keys
+
+        field = browser.find_element("id", "fixed")
+        field.click()  # selects the frame's name: what is typed replaces it
+        field.send_keys("base_link", Keys.ENTER)
+        corner = page_until(
+            browser,
+            """const s = window.rvizState;
+               const map = s.objects().find((o) => o.what === "map 200x200 cells");
+               return s.fixed === "base_link" && map && map.visible ? map.position : null;""",
+            "the map placed in base_link",
+        )
+        c, s = math.cos(-math.pi / 4), math.sin(-math.pi / 4)
+        assert corner[:2] == pytest.approx([c * -3 - s * -2, s * -3 + c * -2], abs=1e-3)
     finally:
         browser.quit()
 
