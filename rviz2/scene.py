@@ -329,8 +329,8 @@ class Scene(Node):
                 payload = binary_frame(head, blob) if blob else json.dumps(head)
             else:
                 return
-        except (ValueError, robot_model.UrdfError) as error:
-            status = f"error: {error}"
+        except Exception as error:  # a message its type allows but the view cannot draw
+            status = "error: " + ((str(error).splitlines() or [type(error).__name__])[0][:300])
             payload = json.dumps({"type": "display", "id": state.number, "clear": True})
         state.newest = None if kind != "RobotModel" else state.newest
         if status != state.status:

@@ -900,3 +900,51 @@ def test_ctrl_c_and_sigterm_end_the_view_with_a_page_open(node_process, signum) 
     asyncio.run(hold())
     assert process.wait() == 0
     assert "Traceback" not in "\n".join(process.lines)
+
+
+def test_a_cloud_the_view_cannot_draw_is_one_status_line(node_process, context) -> None:
+    """A PointCloud2 without x, y and z (its type allows it): the display's status says so in
+    one line, once in rviz2's log; the view goes on."""
+    node = rclpy.create_node("rviz_bad_cloud", context=context)
+    bad = PointCloud2(height=1, width=2, point_step=4, row_step=8, data=bytes(8))
+    bad.fields = [PointField(name="intensity", offset=0, datatype=PointField.FLOAT32, count=1)]
+    bad.header.frame_id = "map"
+    publisher = node.create_publisher(PointCloud2, "/bad_cloud", 10)
+    timer = node.create_timer(0.2, lambda: publisher.publish(bad))
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    try:
+        process = node_process(str(BIN / "rviz2"), "--port", "0", env=HEADLESS)
+        link = started(process)
+
+        def status(item: Any) -> Any:
+            if not (isinstance(item, dict) and item.get("type") == "config"):
+                return None
+            shown = [d for d in item["displays"] if d["topic"] == "/bad_cloud"]
+            return shown and shown[0]["status"].startswith("error") and shown[0]["status"]
+
+        async def check(tab: Tab) -> str:
+            return await tab.until(status, "the bad cloud's status")
+
+        stop = threading.Event()
+
+        def spin() -> None:
+            while not stop.is_set():
+                executor.spin_once(timeout_sec=0.05)
+
+        spinner = threading.Thread(target=spin)
+        spinner.start()
+        try:
+            line = with_tab(link, check)
+        finally:
+            stop.set()
+            spinner.join()
+        assert line == "error: a PointCloud2 without x, y and z fields"
+        warnings = [entry for entry in process.lines if "without x, y and z" in entry]
+        assert len(warnings) == 1, warnings
+        assert "Traceback" not in "\n".join(process.lines)
+    finally:
+        node.destroy_timer(timer)
+        executor.remove_node(node)
+        executor.shutdown()
+        node.destroy_node()
