@@ -948,3 +948,10 @@ def test_a_cloud_the_view_cannot_draw_is_one_status_line(node_process, context) 
         executor.remove_node(node)
         executor.shutdown()
         node.destroy_node()
+
+
+def test_rviz2_is_a_package_with_its_executable() -> None:
+    """As a ROS 2 installation has it: `ros2 pkg executables rviz2`, and its share folder."""
+    assert run("ros2", "pkg", "executables", "rviz2").stdout == "rviz2 rviz2\n"
+    share = run("ros2", "pkg", "prefix", "--share", "rviz2").stdout.strip()
+    assert (Path(share) / "package.xml").is_file()
