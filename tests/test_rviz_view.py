@@ -955,3 +955,37 @@ def test_rviz2_is_a_package_with_its_executable() -> None:
     assert run("ros2", "pkg", "executables", "rviz2").stdout == "rviz2 rviz2\n"
     share = run("ros2", "pkg", "prefix", "--share", "rviz2").stdout.strip()
     assert (Path(share) / "package.xml").is_file()
+
+
+def test_with_no_page_open_nothing_is_encoded(context) -> None:
+    """The scene's timer encodes the tf frames and the displays only while a page is open
+    (the robot model excepted: a bad URDF is said at once); once one opens, the newest is
+    sent."""
+    from rviz2.config import default_config
+    from rviz2.scene import Scene
+    from tf2_ros import StaticTransformBroadcaster
+
+    sent: list[str] = []
+    scene = Scene(
+        default_config(), lambda stream, _payload: sent.append(stream), Path, context=context
+    )
+    node = rclpy.create_node("rviz_test_tf", context=context)
+    broadcaster = StaticTransformBroadcaster(node)
+    broadcaster.sendTransform(transform("world", "base_link", (1.0, 0.0, 0.0)))
+    executor = SingleThreadedExecutor(context=context)
+    for each in (scene, node):
+        executor.add_node(each)
+    try:
+        deadline = time.monotonic() + 3.0  # three seconds: ninety ticks of the scene's timer
+        while time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.05)
+        assert "tf" not in sent and sent.count("config") <= 1
+        scene.set_viewers(1)
+        deadline = time.monotonic() + TIMEOUT
+        while "tf" not in sent:
+            assert time.monotonic() < deadline, "no tf payload once a page was open"
+            executor.spin_once(timeout_sec=0.05)
+    finally:
+        executor.shutdown()
+        scene.destroy_node()
+        node.destroy_node()
