@@ -214,7 +214,7 @@ class TF extends Display {
     this.root.visible = true;
     const showNames = this.options["Show Names"] !== false;
     const showArrows = this.options["Show Arrows"] !== false;
-    const names = new Set([state.fixed, ...state.frames.keys()]);
+    const names = new Set(state.frames.keys()); // the fixed frame too, when tf knows it
     for (const [name, item] of this.items) {
       if (!names.has(name)) { this.root.remove(item); disposeTree(item); this.items.delete(name); }
     }
@@ -645,6 +645,7 @@ function renderFrames() {
 
 const fixedInput = $("fixed");
 fixedInput.addEventListener("change", () => send({ fixed: fixedInput.value.trim() }));
+fixedInput.addEventListener("focus", () => fixedInput.select()); // typing replaces the frame
 
 // --- the connection
 let socket = null;
