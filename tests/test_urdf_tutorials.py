@@ -120,8 +120,15 @@ def test_display_launch_publishes_the_model_and_a_frame_for_every_link(
         links = set(robot.links) - {robot.root}  # each has a frame, its joint's child
         frames.until(lambda: links <= set(frames.parents), f"frames for {sorted(links)}")
         for joint in robot.joints.values():
-            if joint.type != "floating":
-                assert frames.parents[joint.child] == joint.parent
+            assert frames.parents[joint.child] == joint.parent
+            if joint.type == "fixed":  # where the page's <origin> puts it, on /tf_static
+                t = frames.latest[joint.child].transform
+                assert (t.translation.x, t.translation.y, t.translation.z) == pytest.approx(
+                    joint.origin.xyz, abs=1e-9
+                )
+                assert (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w) == pytest.approx(
+                    joint.origin.rotation, abs=1e-9
+                )
         if robot.moving_joints():  # the sliders' node publishes every movable joint
             frames.until(lambda: bool(frames.joint_states), "/joint_states")
             names = [joint.name for joint in robot.moving_joints()]
