@@ -260,3 +260,31 @@ def test_urdf_tutorial_is_installed_as_the_pages_name_it():
     shown = run("ros2", "launch", "urdf_tutorial", "display.launch.py", "--show-args").stdout
     for argument in ("'gui':", "'rvizconfig':", "'model':"):
         assert argument in shown, shown
+
+
+def test_display_launch_without_the_sliders(node_process, executor):
+    """`gui:=false`: joint_state_publisher instead of the sliders, every joint at its zero;
+    a value outside the argument's choices is one line."""
+    frames = Frames(executor)
+    launch = node_process(
+        script("ros2"),
+        "launch",
+        "urdf_tutorial",
+        "display.launch.py",
+        "model:=urdf/06-flexible.urdf",
+        "gui:=false",
+        env=ACTIVATED,
+    )
+    try:
+        frames.until(lambda: bool(frames.joint_states), "/joint_states")
+        assert set(frames.joint_states[-1].position) == {0.0}
+        frames.until(lambda: "head" in frames.latest, "the head's frame on /tf")
+        assert "[joint_state_publisher-2]: process started" in launch.output
+    finally:
+        stop(launch)
+    assert "joint_state_publisher_gui" not in launch.output
+    refused = run("ros2", "launch", "urdf_tutorial", "display.launch.py", "gui:=maybe")
+    assert refused.returncode == 1
+    assert refused.stderr.strip().endswith(
+        "argument 'gui' is 'maybe'; choose one of ['true', 'false']"
+    )
