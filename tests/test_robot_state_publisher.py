@@ -235,3 +235,16 @@ def test_joint_state_publisher_refuses_a_malformed_file_in_one_line(tmp_path):
     assert result.returncode == 1
     output = (result.stdout + result.stderr).strip().splitlines()
     assert len(output) == 1 and "[FATAL]" in output[0] and "not valid XML" in output[0], output
+
+
+def test_robot_state_publisher_reads_a_file_argument_with_upstreams_warning(node_process, executor):
+    """No robot_description, a URDF file as the first argument: ROS 2's old fallback, with its
+    warning; the file's robot is published as if it had been the parameter."""
+    watcher = Watcher(executor)
+    first = MODELS / "01-myfirst.urdf"
+    rsp = ros2_run(node_process, "robot_state_publisher", "robot_state_publisher", str(first))
+    rsp.wait_for_text("Robot initialized")
+    assert "No robot_description parameter, but command-line argument available." in rsp.output
+    watcher.until(lambda: watcher.description is not None, "/robot_description")
+    assert watcher.description == first.read_text()
+    assert rsp.interrupt() in (0, 130)

@@ -120,8 +120,15 @@ def test_display_launch_publishes_the_model_and_a_frame_for_every_link(
         links = set(robot.links) - {robot.root}  # each has a frame, its joint's child
         frames.until(lambda: links <= set(frames.parents), f"frames for {sorted(links)}")
         for joint in robot.joints.values():
-            if joint.type != "floating":
-                assert frames.parents[joint.child] == joint.parent
+            assert frames.parents[joint.child] == joint.parent
+            if joint.type == "fixed":  # where the page's <origin> puts it, on /tf_static
+                t = frames.latest[joint.child].transform
+                assert (t.translation.x, t.translation.y, t.translation.z) == pytest.approx(
+                    joint.origin.xyz, abs=1e-9
+                )
+                assert (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w) == pytest.approx(
+                    joint.origin.rotation, abs=1e-9
+                )
         if robot.moving_joints():  # the sliders' node publishes every movable joint
             frames.until(lambda: bool(frames.joint_states), "/joint_states")
             names = [joint.name for joint in robot.moving_joints()]
@@ -253,3 +260,31 @@ def test_urdf_tutorial_is_installed_as_the_pages_name_it():
     shown = run("ros2", "launch", "urdf_tutorial", "display.launch.py", "--show-args").stdout
     for argument in ("'gui':", "'rvizconfig':", "'model':"):
         assert argument in shown, shown
+
+
+def test_display_launch_without_the_sliders(node_process, executor):
+    """`gui:=false`: joint_state_publisher instead of the sliders, every joint at its zero;
+    a value outside the argument's choices is one line."""
+    frames = Frames(executor)
+    launch = node_process(
+        script("ros2"),
+        "launch",
+        "urdf_tutorial",
+        "display.launch.py",
+        "model:=urdf/06-flexible.urdf",
+        "gui:=false",
+        env=ACTIVATED,
+    )
+    try:
+        frames.until(lambda: bool(frames.joint_states), "/joint_states")
+        assert set(frames.joint_states[-1].position) == {0.0}
+        frames.until(lambda: "head" in frames.latest, "the head's frame on /tf")
+        assert "[joint_state_publisher-2]: process started" in launch.output
+    finally:
+        stop(launch)
+    assert "joint_state_publisher_gui" not in launch.output
+    refused = run("ros2", "launch", "urdf_tutorial", "display.launch.py", "gui:=maybe")
+    assert refused.returncode == 1
+    assert refused.stderr.strip().endswith(
+        "argument 'gui' is 'maybe'; choose one of ['true', 'false']"
+    )
