@@ -49,7 +49,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "turtlesim": [turtlesim.update_rate, turtlesim.many_turtles],
     "web": [web.viewer_figures, web.load],
     "workspace": [workspace.build_times],
-    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
+    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2.callback_cost, tf2_follow.follow_loop],
     "completion": [completion.answer_times],
 }
 

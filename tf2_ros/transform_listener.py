@@ -131,9 +131,16 @@ class TransformListener:
         self.node.destroy_subscription(self.tf_static_sub)
 
     def callback(self, data: TFMessage) -> None:
-        for transform in data.transforms:
-            self.buffer.set_transform(transform, AUTHORITY)
+        self._set(data, False)
 
     def static_callback(self, data: TFMessage) -> None:
+        self._set(data, True)
+
+    def _set(self, data: TFMessage, is_static: bool) -> None:
+        set_transforms = getattr(self.buffer, "set_transforms", None)
+        if set_transforms is not None:  # tf2_ros.Buffer: the message's transforms at once
+            set_transforms(data.transforms, AUTHORITY, is_static)
+            return
+        add = self.buffer.set_transform_static if is_static else self.buffer.set_transform
         for transform in data.transforms:
-            self.buffer.set_transform_static(transform, AUTHORITY)
+            add(transform, AUTHORITY)
