@@ -21,10 +21,10 @@ import time
 
 import numpy as np
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, start, stop, wait_for_lines
+from benchmarks.common import Row, fmt_us, p50, p99, python, smoke, start, stop, wait_for_lines
 
 CHAIN = 10
-CALLS = 5000
+CALLS = smoke(5000, 50)
 
 
 def _chain_buffer():
@@ -183,7 +183,7 @@ def _listeners_cpu(scripts: list[str], seconds: float) -> list[float]:
             stop(process)
 
 
-def listener_cpu(seconds: float = 10.0) -> list[Row]:
+def listener_cpu(seconds: float = smoke(10.0, 1.0)) -> list[Row]:
     broadcaster = start(python("-c", BROADCASTER))
     try:
         if not wait_for_lines(broadcaster, lambda line: "broadcasting" in line, timeout=60):
@@ -204,7 +204,7 @@ def listener_cpu(seconds: float = 10.0) -> list[Row]:
     ]
 
 
-def callback_cost(messages: int = 50, rounds: int = 30) -> list[Row]:
+def callback_cost(messages: int = smoke(50, 5), rounds: int = smoke(30, 2)) -> list[Row]:
     """The listener's callback on a TFMessage of 100 transforms against rclpy deserialising
     it (p50 of ROUNDS rounds of MESSAGES messages, each round newer stamps)."""
     from geometry_msgs.msg import TransformStamped
