@@ -1,6 +1,6 @@
 """make bench: every figure beside its baseline from the same run, printed as one table.
 
-python -m benchmarks [GROUP ...]
+python -m benchmarks [--smoke] [GROUP ...]
     groups: launch service topic rate memory setup bag graph daemon turtlesim web workspace
     tf2 rviz
     completion
@@ -14,11 +14,13 @@ import datetime
 import os
 import platform
 import signal
+import sys
 import traceback
 from collections.abc import Callable
 
 from benchmarks import (
     bag,
+    common,
     completion,
     daemon,
     graph,
@@ -51,7 +53,7 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
     "web": [web.viewer_figures, web.load],
     "rviz": [rviz.view_figures],
     "workspace": [workspace.build_times],
-    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2_follow.follow_loop],
+    "tf2": [tf2.lookup_chain, tf2.listener_cpu, tf2.callback_cost, tf2_follow.follow_loop],
     "completion": [completion.answer_times],
 }
 
@@ -59,10 +61,19 @@ GROUPS: dict[str, list[Callable[[], list[Row]]]] = {
 def main() -> int:
     parser = argparse.ArgumentParser(prog="python -m benchmarks", description=__doc__)
     parser.add_argument("groups", nargs="*", metavar="GROUP", help=", ".join(GROUPS))
+    parser.add_argument(
+        "--smoke",
+        action="store_true",
+        help="run every step briefly, to see that it runs (its figures mean nothing)",
+    )
     args = parser.parse_args()
     unknown = [name for name in args.groups if name not in GROUPS]
     if unknown:
         parser.error(f"unknown group {unknown[0]!r}; choose from {', '.join(GROUPS)}")
+    if args.smoke and not common.SMOKE:
+        # The steps' counts and durations are read when their modules load: load them anew.
+        env = {**os.environ, common.SMOKE_VARIABLE: "1"}
+        os.execve(sys.executable, [sys.executable, "-m", "benchmarks", *sys.argv[1:]], env)
     # Started in the background (nohup, `make bench &`), this process and so its children
     # would inherit SIGINT *ignored*, and a shell cannot trap a signal ignored on entry: the
     # Ctrl-C the benchmarks send would do nothing. Take the default back for the children.
@@ -73,7 +84,8 @@ def main() -> int:
     os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
     domain = private_domain()
     print(
-        f"# ros-tutorials benchmarks, {datetime.date.today()}, {platform.machine()}, "
+        f"# ros-tutorials benchmarks{' (smoke run)' if common.SMOKE else ''}, "
+        f"{datetime.date.today()}, {platform.machine()}, "
         f"{os.cpu_count()} cores, Python {platform.python_version()}, ROS_DOMAIN_ID={domain}"
     )
     rows: list[Row] = []

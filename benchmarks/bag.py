@@ -26,12 +26,22 @@ from pathlib import Path
 
 from mcap.reader import make_reader
 
-from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, stop, wait_for_lines
+from benchmarks.common import (
+    Row,
+    p50,
+    p99,
+    peak_rss_mib,
+    python,
+    smoke,
+    start,
+    stop,
+    wait_for_lines,
+)
 from rosbag2.metadata import TopicInfo
 from rosbag2.reader import BagReader
 from rosbag2.writer import BagWriter
 
-SECONDS = 10.0
+SECONDS = smoke(10.0, 1.0)
 ROSBAG = str(Path(sys.executable).parent / "rosbag")  # the installed command, as a user runs it
 TICKS = os.sysconf("SC_CLK_TCK")
 
@@ -167,13 +177,13 @@ def info_on_a_large_bag() -> list[Row]:
         writer = BagWriter(folder)
         writer.add_topic(TopicInfo("/large", "sensor_msgs/msg/Image"), "", "ros2msg")
         payload = bytes(1024 * 1024)
-        for i in range(1024):
+        for i in range(smoke(1024, 8)):
             writer.write("/large", payload, 1_700_000_000_000_000_000 + i * 33_000_000, 0)
         writer.close()
         size = sum(p.stat().st_size for p in folder.iterdir())
         command = [ROSBAG, "info", str(folder)]
         times, cpu_times = [], []
-        for _ in range(5):
+        for _ in range(smoke(5, 1)):
             before = os.times()
             begin = time.monotonic()
             subprocess.run(command, check=True, capture_output=True, timeout=60)
@@ -186,7 +196,7 @@ def info_on_a_large_bag() -> list[Row]:
                 - before.children_system
             )
         summary_times = []
-        for _ in range(5):
+        for _ in range(smoke(5, 1)):
             begin = time.monotonic()
             with open(folder / "large_0.mcap", "rb") as stream:
                 make_reader(stream).get_summary()
@@ -204,7 +214,7 @@ def info_on_a_large_bag() -> list[Row]:
         shutil.rmtree(folder.parent, ignore_errors=True)
 
 
-MANY_TOPICS = 50
+MANY_TOPICS = smoke(50, 5)
 
 
 def many_topics(publishers: int = 1) -> list[Row]:

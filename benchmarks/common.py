@@ -16,6 +16,17 @@ from ros_tutorials_common.dds import apply_dds_defaults, claim_private_domain_id
 
 _domain_lock = None
 
+# Set (to anything but empty), every step runs briefly: the smoke run `make test` does
+# (tests/test_benchmarks.py), that only shows that each step still runs; its figures mean
+# nothing. `python -m benchmarks --smoke` sets it.
+SMOKE_VARIABLE = "ROS_TUTORIALS_BENCH_SMOKE"
+SMOKE = bool(os.environ.get(SMOKE_VARIABLE))
+
+
+def smoke(full, brief):
+    """FULL in a measuring run, BRIEF in a smoke run (a count, a duration)."""
+    return brief if SMOKE else full
+
 
 def private_domain() -> int:
     """Claim a ROS_DOMAIN_ID for this benchmark run and set it, with the DDS defaults."""

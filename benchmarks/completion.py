@@ -12,7 +12,7 @@ import subprocess
 import tempfile
 import time
 
-from benchmarks.common import Row, fmt_ms, p50, python, start, stop
+from benchmarks.common import Row, fmt_ms, p50, python, smoke, start, stop
 from benchmarks.daemon import _bytecode_kept
 from benchmarks.graph import BIN
 from ros2cmd.daemon import client as daemon
@@ -78,7 +78,7 @@ def _bare(args: list[str], runs: int) -> float:
     return p50(samples)
 
 
-def answer_times(runs: int = 20) -> list[Row]:
+def answer_times(runs: int = smoke(20, 1)) -> list[Row]:
     """p50 of RUNS completions each: a verb, a live topic (a publisher running, the daemon
     started and caught up), a type; the commands keep their bytecode, as in a learner's
     shell (benchmarks/daemon.py)."""

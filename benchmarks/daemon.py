@@ -18,6 +18,7 @@ from benchmarks.common import (
     p50,
     p99,
     python,
+    smoke,
     start,
     stop,
     wait_for_lines,
@@ -120,7 +121,7 @@ def _complete_answer(wanted: str, timeout: float = 30.0) -> None:
     raise RuntimeError(f"the daemon did not answer with {wanted} within {timeout:g} s")
 
 
-def startup(runs: int = 10) -> list[Row]:
+def startup(runs: int = smoke(10, 1)) -> list[Row]:
     """Start to exit: help, with nothing running; the daemon's answers with three nodes up
     (a daemon running), and `topic list --no-daemon` beside them; what `ros2 run` and
     `rosrun` add to a node's start (its first output line through them, minus through
@@ -185,7 +186,7 @@ def _startup(runs: int) -> list[Row]:
     return rows
 
 
-def lists(runs: int = 10) -> list[Row]:
+def lists(runs: int = smoke(10, 1)) -> list[Row]:
     """`ros2 node list` at 24 nodes: through the daemon (started and caught up first), and
     discovering for itself, interleaved; each checked complete."""
     with _bytecode_kept():

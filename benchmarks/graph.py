@@ -11,9 +11,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop
+from benchmarks.common import Row, fmt_ms, p50, p99, python, smoke, start, stop
 
-EXTRA_NODES = 20
+EXTRA_NODES = smoke(20, 2)
 UNION = ["/ns1/topic_publisher", "/ns1/topic_subscriber", "/ns2/topic_publisher"]
 UNION.append("/ns2/topic_subscriber")
 EXPECTED_NODES = sorted(UNION + [f"/extra_{n}" for n in range(EXTRA_NODES)])
@@ -53,7 +53,7 @@ def _timed(args: list[str]) -> tuple[float, str]:
     return time.monotonic() - began, out.stdout
 
 
-def lists(runs: int = 10) -> list[Row]:
+def lists(runs: int = smoke(10, 1)) -> list[Row]:
     procs = _running()
     try:
         bare = python("-c", BARE, ",".join(EXPECTED_NODES), ",".join(EXPECTED_TOPICS))
@@ -102,7 +102,7 @@ def lists(runs: int = 10) -> list[Row]:
     return rows
 
 
-def picture(runs: int = 5) -> list[Row]:
+def picture(runs: int = smoke(5, 1)) -> list[Row]:
     """Layout and drawing alone (no ROS), for a made-up graph of 50 nodes and 100 topics."""
     from ros_tutorials_common.drawing.model import example_model
     from ros_tutorials_common.drawing.render import write

@@ -12,7 +12,7 @@ import threading
 import time
 from pathlib import Path
 
-from benchmarks.common import Row, p50, p99, peak_rss_mib, python, start, wait_for_lines
+from benchmarks.common import Row, p50, p99, peak_rss_mib, python, smoke, start, wait_for_lines
 
 HERE = Path(__file__).resolve().parent
 READY = ("[ns1.topic_subscriber]: recieve msg", "[ns2.topic_subscriber]: recieve msg")
@@ -162,7 +162,7 @@ def _ready_then_stop(args: list[str]) -> Run:
         _kill_leftovers(proc)
 
 
-def launch_and_shutdown(rounds: int = 10) -> list[Row]:
+def launch_and_shutdown(rounds: int = smoke(10, 1)) -> list[Row]:
     launcher = python("-m", "launcher", "union.launch")
     shell = ["sh", str(HERE / "union.sh")]
     results: dict[str, list[Run]] = {"launcher": [], "shell": []}
@@ -219,7 +219,7 @@ def launch_and_shutdown(rounds: int = 10) -> list[Row]:
     ]
 
 
-def escalation(rounds: int = 3) -> list[Row]:
+def escalation(rounds: int = smoke(3, 1)) -> list[Row]:
     """A child that ignores SIGINT: the launcher must escalate to SIGTERM after 1 s."""
     samples = []
     for _ in range(rounds):
@@ -287,7 +287,7 @@ def _both_turtles(args: list[str]) -> float:
         _kill_leftovers(proc)
 
 
-def formats(rounds: int = 5) -> list[Row]:
+def formats(rounds: int = smoke(5, 1)) -> list[Row]:
     """`ros2 launch` of the tutorial's multisim in Python, XML and YAML against a shell script."""
     import tempfile
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import subprocess
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, start, stop
+from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, smoke, start, stop
 
 QUIET = ["--ros-args", "--log-level", "warn"]
 SERVERS = {
@@ -38,7 +38,7 @@ def _round(kind: str, count: int) -> dict:
         stop(server)
 
 
-def round_trip(count: int = 1000, rounds: int = 6) -> list[Row]:
+def round_trip(count: int = smoke(1000, 20), rounds: int = smoke(6, 1)) -> list[Row]:
     samples: dict[str, list[float]] = {kind: [] for kind in SERVERS}
     cpu: dict[str, list[float]] = {kind: [] for kind in SERVERS}
     kinds = list(SERVERS)

@@ -6,8 +6,11 @@
 - A TransformListener's CPU with 100 frames at 100 Hz: a broadcaster process sends one
   TFMessage of 100 transforms every 10 ms; the listener (a Buffer and its listener, spun) runs
   in a process of its own, measured from /proc over 10 s after a warm-up. The baseline is a
-  bare rclpy subscription to /tf with an empty callback in the same conditions: what receiving
-  the messages costs at all.
+  bare rclpy subscription to /tf with an empty callback, the two side by side over the same
+  seconds: what receiving the messages costs at all.
+- The listener's own work on one such message in this process (its callback filling the
+  Buffer), against rclpy's deserialisation of the message, which both pay: the share the
+  listener adds, without the machine's load in it.
 """
 
 from __future__ import annotations
@@ -18,10 +21,10 @@ import time
 
 import numpy as np
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, start, stop, wait_for_lines
+from benchmarks.common import Row, fmt_us, p50, p99, python, smoke, start, stop, wait_for_lines
 
 CHAIN = 10
-CALLS = 5000
+CALLS = smoke(5000, 50)
 
 
 def _chain_buffer():
@@ -162,34 +165,86 @@ def _cpu_seconds(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def _listener_cpu(script: str, seconds: float = 10.0) -> float:
-    """The share of one core SCRIPT's process takes while it receives the broadcaster."""
-    process = start(python("-c", script))
+def _listeners_cpu(scripts: list[str], seconds: float) -> list[float]:
+    """The share of one core each SCRIPT's process takes while they receive the broadcaster
+    side by side, over the same SECONDS (a loaded machine slows both alike)."""
+    processes = [start(python("-c", script)) for script in scripts]
     try:
-        if not wait_for_lines(process, lambda line: "listening" in line, timeout=60):
-            raise RuntimeError("the listener never received the frames")
+        for process in processes:
+            if not wait_for_lines(process, lambda line: "listening" in line, timeout=60):
+                raise RuntimeError("a listener never received the frames")
         time.sleep(2.0)  # warm-up: discovery settled, caches full
-        before, began = _cpu_seconds(process.pid), time.monotonic()
+        before, began = [_cpu_seconds(p.pid) for p in processes], time.monotonic()
         time.sleep(seconds)
-        return (_cpu_seconds(process.pid) - before) / (time.monotonic() - began)
+        elapsed = time.monotonic() - began
+        return [(_cpu_seconds(p.pid) - b) / elapsed for p, b in zip(processes, before, strict=True)]
     finally:
-        stop(process)
+        for process in processes:
+            stop(process)
 
 
-def listener_cpu() -> list[Row]:
+def listener_cpu(seconds: float = smoke(10.0, 1.0)) -> list[Row]:
     broadcaster = start(python("-c", BROADCASTER))
     try:
         if not wait_for_lines(broadcaster, lambda line: "broadcasting" in line, timeout=60):
             raise RuntimeError("the broadcaster did not start")
-        listener = _listener_cpu(LISTENER)
-        bare = _listener_cpu(BARE)
+        listener, bare = _listeners_cpu([LISTENER, BARE], seconds)
     finally:
         stop(broadcaster)
     return [
         Row(
-            "tf2: TransformListener CPU, 100 frames at 100 Hz (1 message / 10 ms)",
+            f"tf2: TransformListener CPU, 100 frames at 100 Hz (1 message / 10 ms), {seconds:g} s "
+            "side by side",
             f"{listener * 100:.0f} % of a core",
             f"{bare * 100:.0f} % (bare rclpy subscription to /tf)",
             listener / bare if bare else None,
+            "ratio <= 1.20",
+            bool(bare) and listener / bare <= 1.20,
+        )
+    ]
+
+
+def callback_cost(messages: int = smoke(50, 5), rounds: int = smoke(30, 2)) -> list[Row]:
+    """The listener's callback on a TFMessage of 100 transforms against rclpy deserialising
+    it (p50 of ROUNDS rounds of MESSAGES messages, each round newer stamps)."""
+    from geometry_msgs.msg import TransformStamped
+    from rclpy.serialization import deserialize_message, serialize_message
+    from tf2_msgs.msg import TFMessage
+
+    from tf2_ros.buffer import Buffer
+    from tf2_ros.transform_listener import TransformListener
+
+    listener = TransformListener.__new__(TransformListener)  # its callback, no node
+    listener.buffer = Buffer()
+    transforms = []
+    for number in range(100):
+        t = TransformStamped()
+        t.header.frame_id, t.child_frame_id = "world", f"frame{number}"
+        t.transform.translation.x, t.transform.rotation.w = float(number), 1.0
+        transforms.append(t)
+    raw = serialize_message(TFMessage(transforms=transforms))
+    batch = [deserialize_message(raw, TFMessage) for _ in range(messages)]
+    stamp = 10**9
+    callback, deserialize = [], []
+    for _ in range(rounds):
+        began = time.perf_counter()
+        for _ in range(messages):
+            deserialize_message(raw, TFMessage)
+        deserialize.append((time.perf_counter() - began) / messages)
+        for message in batch:
+            stamp += 10_000_000
+            for t in message.transforms:
+                t.header.stamp.sec, t.header.stamp.nanosec = divmod(stamp, 10**9)
+        began = time.perf_counter()
+        for message in batch:
+            listener.callback(message)
+        callback.append((time.perf_counter() - began) / messages)
+    ours, theirs = p50(callback), p50(deserialize)
+    return [
+        Row(
+            "tf2: the listener's callback on one TFMessage of 100 transforms (p50)",
+            fmt_us(ours),
+            f"{fmt_us(theirs)} (rclpy deserialising it)",
+            ours / theirs,
         )
     ]

@@ -27,10 +27,10 @@ from tf2_msgs.msg import TFMessage
 from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
-from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop
+from benchmarks.common import Row, fmt_ms, p50, p99, python, smoke, start, stop
 from ros_tutorials_common import wait
 
-STEPS = 20
+STEPS = smoke(20, 2)
 POSE_PERIOD = 0.016  # turtlesim's
 TURTLE2 = (4.0, 2.0)  # where the listener spawns it, facing +x
 PLACES = [((6.0, 2.0), 0.0), ((4.0, 4.0), math.pi / 2)]  # turtle1's place, the turn it asks

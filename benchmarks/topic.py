@@ -14,7 +14,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
-from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, start
+from benchmarks.common import Row, fmt_us, p50, p99, python, run_worker, smoke, start
 
 QUIET = ["--ros-args", "--log-level", "warn"]
 
@@ -23,7 +23,7 @@ def _worker(*args: str) -> dict:
     return run_worker("benchmarks.topic_worker", *args)
 
 
-def latency(count: int = 2000, rounds: int = 3) -> list[Row]:
+def latency(count: int = smoke(2000, 20), rounds: int = smoke(3, 1)) -> list[Row]:
     """Publish -> subscriber callback, two nodes in one process (as REFERENCE section 3)."""
     samples: dict[str, list[float]] = {"tutorial": [], "quiet": [], "bare": []}
     for _ in range(rounds):  # interleaved, so machine load hits all alike
@@ -60,7 +60,7 @@ def _pub_sub(
     return sent, json.loads(out.strip().splitlines()[-1])
 
 
-def loss_and_throughput(seconds: float = 5.0) -> list[Row]:
+def loss_and_throughput(seconds: float = smoke(5.0, 1.0)) -> list[Row]:
     """Messages lost at 1 kHz, tutorial nodes with the book's logging and without, and bare.
 
     The book's subscriber logs three lines per message (and the publisher three per send);
@@ -100,7 +100,7 @@ def loss_and_throughput(seconds: float = 5.0) -> list[Row]:
     return rows
 
 
-def rate_accuracy(seconds: float = 30.0) -> list[Row]:
+def rate_accuracy(seconds: float = smoke(30.0, 2.0)) -> list[Row]:
     """The unmodified tutorial publisher process at 10 Hz, beside a bare rclpy timer at 10 Hz."""
     context = rclpy.Context()
     rclpy.init(context=context)
@@ -150,6 +150,8 @@ def rate_accuracy(seconds: float = 30.0) -> list[Row]:
     figures = {}
     for kind, s in stamps.items():
         s = s[: int(seconds * 10) + 1]
+        if len(s) < 3:
+            raise RuntimeError(f"the {kind} publisher sent {len(s)} messages in {seconds:g} s")
         periods = [b - a for a, b in itertools.pairwise(s)]
         mean_rate = len(periods) / (s[-1] - s[0])
         jitter = [abs(p - 0.1) for p in periods]

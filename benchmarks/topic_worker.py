@@ -23,10 +23,11 @@ from rclpy.node import Node
 from ros_tutorials_interfaces.msg import MsgTutorial
 
 from ros_tutorials_common.ros import init, user_args
-from ros_tutorials_topic.publisher import QUEUE_SIZE, TopicPublisher
+from ros_tutorials_topic.publisher import TopicPublisher
 from ros_tutorials_topic.subscriber import TopicSubscriber
 
 TOPIC = "ros_tutorial_msg"
+QUEUE_SIZE = 100  # the lesson's (ros_tutorials_topic/publisher.py: create_publisher(..., 100))
 
 
 class BarePublisher(Node):

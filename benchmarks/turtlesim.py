@@ -21,7 +21,7 @@ from rclpy.node import Node
 from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
-from benchmarks.common import Row, fmt_ms, p99, python, start, stop, wait_for_lines
+from benchmarks.common import Row, fmt_ms, p99, python, smoke, start, stop, wait_for_lines
 from ros_tutorials_common import wait
 
 PERIOD = 0.016
@@ -137,7 +137,7 @@ def _row(label: str, sim: tuple, bare: tuple) -> Row:
     )
 
 
-def update_rate(seconds: float = 20.0) -> list[Row]:
+def update_rate(seconds: float = smoke(20.0, 2.0)) -> list[Row]:
     node = python("-m", "ros_tutorials_turtlesim.turtlesim_node")
     bare = _run(python("-c", BARE_TIMER), HEADLESS, loaded=False, seconds=seconds)
     modes = [("headless", HEADLESS)]
@@ -160,10 +160,10 @@ def update_rate(seconds: float = 20.0) -> list[Row]:
     return rows
 
 
-SCALE = (50, 100, 200)  # turtles, spawned one after another, none driven
+SCALE = smoke((50, 100, 200), (5, 10))  # turtles, spawned one after another, none driven
 
 
-def many_turtles(seconds: float = 5.0) -> list[Row]:
+def many_turtles(seconds: float = smoke(5.0, 1.0)) -> list[Row]:
     """How many turtles one headless turtlesim keeps at 62.5 Hz, and how long /reset takes
     with the most of them (the limit is one core: rclpy's executor and the updates)."""
     from std_srvs.srv import Empty

@@ -29,7 +29,7 @@ import aiohttp
 import rclpy
 from turtlesim.msg import Pose
 
-from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop, wait_for_lines
+from benchmarks.common import Row, fmt_ms, p50, p99, python, smoke, start, stop, wait_for_lines
 from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
 
 CANVAS = "/turtlesim/_canvas/compressed"
@@ -43,7 +43,7 @@ def _ws_url(link: str) -> str:
 
 
 FAST = "/fast"  # the 1 kHz topic of the load test
-TABS = 20
+TABS = smoke(20, 2)
 
 
 def _rss_mib(pid: int) -> float:
@@ -184,7 +184,7 @@ def _run(turtles: int, seconds: float) -> dict:
         stop(sim)
 
 
-def viewer_figures(seconds: float = 10.0) -> list[Row]:
+def viewer_figures(seconds: float = smoke(10.0, 1.0)) -> list[Row]:
     rows = []
     for turtles in (1, 10):
         got = _run(turtles, seconds)
@@ -220,7 +220,7 @@ def viewer_figures(seconds: float = 10.0) -> list[Row]:
     return rows
 
 
-def load(seconds: float = 10.0) -> list[Row]:
+def load(seconds: float = smoke(10.0, 1.0)) -> list[Row]:
     sim = start(python("-m", "ros_tutorials_turtlesim.turtlesim_node"), env=HEADLESS)
     viewer = start(python("-m", "ros_tutorials_web.viewer", "--port", "0"))
     context = rclpy.Context()

@@ -88,9 +88,28 @@ def _out_of_time(_signum: int, _frame: Any) -> None:
     os._exit(1)  # the shell completes nothing
 
 
+def _ascii_number(text: str | None) -> int | None:
+    return int(text) if text and text.isascii() and text.isdigit() else None
+
+
+def well_formed() -> bool:
+    """Whether the shell's request is argcomplete's protocol: ``_ARGCOMPLETE`` a word count
+    from 1, ``COMP_LINE`` the line, ``COMP_POINT`` the cursor within it (ASCII digits)."""
+    line = os.environ.get("COMP_LINE")
+    point = _ascii_number(os.environ.get("COMP_POINT"))
+    start = _ascii_number(os.environ.get("_ARGCOMPLETE"))
+    if line is None or point is None or not start:
+        return False
+    # The shell counts characters or bytes (which one depends on its locale): either fits.
+    return point <= len(line.encode(errors="surrogateescape"))
+
+
 def arm() -> None:
-    """Start the clock: at the end of the budget the process ends, having completed nothing."""
+    """Start the clock: at the end of the budget the process ends, having completed nothing.
+    A request that is not argcomplete's protocol completes nothing at once."""
     global _deadline
+    if not well_formed():
+        os._exit(1)
     left = budget() - _age()
     _deadline = time.monotonic() + left
     if left <= 0:
@@ -121,11 +140,8 @@ def line_words() -> list[str]:
     from argcomplete.lexers import split_line
 
     line = os.environ.get("COMP_LINE", "")
-    try:
-        point = int(os.environ.get("COMP_POINT", len(line)))
-    except ValueError:
-        point = len(line)
-    _prequote, prefix, _suffix, words, _ = split_line(line, point)
+    point = _ascii_number(os.environ.get("COMP_POINT"))
+    _prequote, prefix, _suffix, words, _ = split_line(line, len(line) if point is None else point)
     return [*words, prefix]
 
 

@@ -29,14 +29,27 @@ PRIVATE_DOMAIN_IDS = range(1, 102)
 MAX_DOMAIN_ID = 232
 
 
+def domain_id(env: Mapping[str, str] | None = None) -> int | None:
+    """ROS_DOMAIN_ID as rcl reads it: 0 when unset or empty; None when rcl would refuse it.
+
+    rcl reads it with C's strtoul, which knows ASCII digits only: Python's int() and
+    str.isdigit() also take other scripts' digits (Arabic-Indic, fullwidth), which rcl refuses.
+    """
+    text = (os.environ if env is None else env).get("ROS_DOMAIN_ID", "").strip()
+    if not text:
+        return 0
+    if not (text.isascii() and text.isdigit()):
+        return None
+    return int(text)
+
+
 def domain_id_problem(env: Mapping[str, str] | None = None) -> str | None:
     """What is wrong with ROS_DOMAIN_ID, as one line; None if it can be used (or is unset)."""
     text = (os.environ if env is None else env).get("ROS_DOMAIN_ID", "").strip()
-    if not text:
-        return None  # rcl's default: 0
-    if not text.isdigit():
-        what = "is not a whole number"
-    elif int(text) > MAX_DOMAIN_ID:
+    value = domain_id(env)
+    if value is None:
+        what = "is not a whole number in ASCII digits"
+    elif value > MAX_DOMAIN_ID:
         what = f"is above {MAX_DOMAIN_ID}, the largest domain id Fast DDS can use"
     else:
         return None

@@ -43,8 +43,6 @@ from typing import Any
 
 from aiohttp import web
 
-from ros2cmd.bag.errors import BagError
-from ros2cmd.bag.reader import BagReader
 from ros2cmd.console import LEVELS, logger_name
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import is_hidden
@@ -53,6 +51,8 @@ from ros2cmd.param.api import described_type
 from ros2cmd.typenames import full_type_name, load_type
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
+from rosbag2.errors import BagError
+from rosbag2.reader import BagReader
 
 STATIC = Path(__file__).resolve().parent / "static"
 CALL_TIMEOUT = 10.0  # s: a service that does not answer within it is said so

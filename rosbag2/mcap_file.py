@@ -48,6 +48,10 @@ LIBRARY = "ros-tutorials ros2 bag (python mcap)"
 CHUNK_SIZE = 768 * 1024  # the C++ mcap writer's default, which rosbag2 keeps
 # A chunk is decompressed whole; a recorder's chunk is CHUNK_SIZE, or one larger message.
 MAX_CHUNK_BYTES = 512 * 1024 * 1024
+# What one file may declare: each channel is a topic that info lists and play may make a
+# publisher for, each schema a type. MCAP's ids allow 65,535 of each.
+MAX_CHANNELS = 10_000
+MAX_SCHEMAS = 10_000
 
 
 @dataclass
@@ -67,6 +71,11 @@ class ChunkTooLarge(BagError):
     """A chunk that would decompress to more than MAX_CHUNK_BYTES: refused, not skipped."""
 
 
+class TooManyDeclared(BagError):
+    """More channels or schemas than MAX_CHANNELS or MAX_SCHEMAS, or one id declared twice
+    as two different things: refused, not read on."""
+
+
 class _BoundedFile(io.BufferedReader):
     """The file, whose reads never ask for more than is left in it: a length field of a
     damaged or crafted file (up to 2**64) allocates nothing larger than the file."""
@@ -81,6 +90,11 @@ class _BoundedFile(io.BufferedReader):
             if size == 0:
                 return b""
         return super().read(size)
+
+
+def _named(record: Schema | Channel) -> str:
+    text = record.name if isinstance(record, Schema) else record.topic
+    return repr(text[:80] + "..." if len(text) > 80 else text)
 
 
 def _decompressed(chunk: Chunk, source: Path) -> bytes:
@@ -145,8 +159,12 @@ class McapFile:
             self.stream.close()
             raise BagError(f"{path} is not an MCAP file ({short(error)})") from None
         statistics = None
-        with contextlib.suppress(*READ_ERRORS):
-            statistics = self._read_summary()
+        try:
+            with contextlib.suppress(*READ_ERRORS):
+                statistics = self._read_summary()
+        except BagError:
+            self.stream.close()
+            raise
         if statistics is not None:
             self.counts = dict(statistics.channel_message_counts)
             self.message_count = statistics.message_count
@@ -182,7 +200,8 @@ class McapFile:
             summary = self.reader.get_summary()  # no offsets: read the whole summary
             if summary is None:
                 return None
-            self.schemas, self.channels = dict(summary.schemas), dict(summary.channels)
+            for record in [*summary.schemas.values(), *summary.channels.values()]:
+                self._declare(record)
             self.metadata_offsets = [index.offset for index in summary.metadata_indexes]
             return summary.statistics
         statistics = None
@@ -194,15 +213,35 @@ class McapFile:
             data = io.BytesIO(stream.read(length))
             with contextlib.suppress(EndOfFile):
                 for record in StreamReader(data, skip_magic=True).records:
-                    if isinstance(record, Schema):
-                        self.schemas[record.id] = record
-                    elif isinstance(record, Channel):
-                        self.channels[record.id] = record
+                    if isinstance(record, (Schema, Channel)):
+                        self._declare(record)
                     elif isinstance(record, Statistics):
                         statistics = record
                     elif isinstance(record, MetadataIndex):
                         self.metadata_offsets.append(record.offset)
         return statistics
+
+    def _declare(self, record: Schema | Channel) -> None:
+        """Keep a schema or channel record, within MAX_SCHEMAS and MAX_CHANNELS; the same
+        record again (a summary repeats them) is nothing new."""
+        if isinstance(record, Schema):
+            known, most, what = self.schemas, MAX_SCHEMAS, "schema"
+        else:
+            known, most, what = self.channels, MAX_CHANNELS, "channel"
+        before = known.get(record.id)
+        if before == record:
+            return
+        if before is not None:
+            raise TooManyDeclared(
+                f"{shown(self.path)} is damaged: {what} id {record.id} is declared twice, "
+                f"as {_named(before)} and as {_named(record)}"
+            )
+        if len(known) >= most:
+            raise TooManyDeclared(
+                f"{shown(self.path)} declares more than {most} {what}s; a bag here may "
+                f"declare at most {most}: refusing it"
+            )
+        known[record.id] = record  # type: ignore[assignment]
 
     def rosbag2_metadata(self) -> list[dict[str, str]]:
         """The `rosbag2` metadata records of the file (rosbag2 writes one at open and close)."""
@@ -222,10 +261,8 @@ class McapFile:
         start = end = count = 0
         with contextlib.suppress(*READ_ERRORS):
             for record in self._records():
-                if isinstance(record, Schema):
-                    self.schemas[record.id] = record
-                elif isinstance(record, Channel):
-                    self.channels[record.id] = record
+                if isinstance(record, (Schema, Channel)):
+                    self._declare(record)
                 elif isinstance(record, Message) and record.channel_id in self.channels:
                     counts[record.channel_id] = counts.get(record.channel_id, 0) + 1
                     start = record.log_time if count == 0 else min(start, record.log_time)

@@ -259,3 +259,31 @@ def test_a_workspace_setup_file_registers_completion():
     assert "_python_argcomplete ros2" in shown
     activated = dict(_new_terminal(), VIRTUAL_ENV=sys.prefix)  # inherited, not the shell's
     assert "_python_argcomplete ros2" in _bash(f"source {setup}\ncomplete -p ros2", True, activated)
+
+
+@pytest.mark.parametrize("point", ["abc", "", "3.5", "-5", "\u0663", "99999"])
+@pytest.mark.parametrize("line", ["ros2 topic li", "ros2 launch tur", "rostopic li"])
+def test_a_malformed_cursor_position_completes_nothing_quietly(line, point):
+    """COMP_POINT not a position within the line (argcomplete's int() raised its
+    traceback; '-5' and '٣' completed the wrong word): nothing offered, nothing printed."""
+    environment = {
+        **os.environ,
+        "_ARGCOMPLETE": "1",
+        "_ARGCOMPLETE_IFS": "\n",
+        "COMP_LINE": line,
+        "COMP_POINT": point,
+        COMPLETION_BUDGET_VARIABLE: str(TIMEOUT),
+    }
+    with tempfile.NamedTemporaryFile("r") as answer:
+        environment["_ARGCOMPLETE_STDOUT_FILENAME"] = answer.name
+        result = subprocess.run(
+            [str(BIN / line.split()[0])],
+            env=environment,
+            stdin=subprocess.DEVNULL,
+            capture_output=True,
+            text=True,
+            timeout=TIMEOUT,
+        )
+        offered_words = answer.read()
+    assert result.returncode == 1 and result.stderr == "" and result.stdout == ""
+    assert offered_words == ""

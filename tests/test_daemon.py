@@ -187,3 +187,64 @@ def test_lists_with_the_daemon_equal_lists_without(running_daemon, node_process)
     assert "/ros_tutorial_srv [ros_tutorials_interfaces/srv/SrvTutorial]\n" in ros2(
         "service", "list", "-t"
     )
+
+
+SQUATTER = """
+import socket, sys
+s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+s.bind(sys.argv[1].encode("latin-1").replace(b"@", b"\\0", 1))
+if sys.argv[2] == "listen":
+    s.listen(1)
+print("bound", flush=True)
+sys.stdin.read()
+"""
+
+
+@pytest.mark.skipif(
+    os.getuid() != 0 or not shutil.which("setpriv"), reason="needs root to run as nobody"
+)
+@pytest.mark.parametrize("listening", ["listen", "bind only"])
+def test_the_daemons_name_taken_by_another_user_is_said_with_who(ros_domain, listening):
+    """Another user's process binds this user's daemon name first (an abstract socket has
+    no permissions): start says so at once, and status after its line, naming that user
+    and process (before: start waited 10 s for `did not start`, status only `not running`)."""
+    import subprocess
+
+    address = "@" + daemon.socket_address()[1:]
+    squatter = subprocess.Popen(
+        [
+            "setpriv",
+            "--reuid=65534",
+            "--regid=65534",
+            "--clear-groups",
+            "/usr/bin/python3",
+            "-c",
+            SQUATTER,
+            address,
+            listening,
+        ],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+        cwd="/",
+    )
+    try:
+        assert squatter.stdout.readline() == "bound\n"
+        held = (
+            "another user's process holds this daemon's name (uid 65534 (nobody), pid "
+            f"{squatter.pid} (python3)), so no daemon of yours can start with these DDS "
+            "settings; the lists discover for themselves"
+        )
+        started = time.monotonic()
+        result = run("ros2", "daemon", "start", env=_env())
+        assert (result.returncode, result.stdout, result.stderr) == (1, "", f"error: {held}\n")
+        assert time.monotonic() - started < daemon.START_TIMEOUT  # not its whole wait
+        result = run("ros2", "daemon", "status", env=_env())
+        assert (result.returncode, result.stdout, result.stderr) == (
+            0,
+            "The daemon is not running\n",
+            f"warning: {held}\n",
+        )
+    finally:
+        squatter.kill()
+        squatter.wait()

@@ -204,7 +204,8 @@ def test_a_domain_id_above_101_is_said_in_the_report_not_warned():
 @pytest.mark.parametrize(
     ("value", "problem"),
     [
-        ("abc", "ROS_DOMAIN_ID='abc' is not a whole number"),
+        ("abc", "ROS_DOMAIN_ID='abc' is not a whole number in ASCII digits"),
+        ("\uff11", "ROS_DOMAIN_ID='\uff11' is not a whole number in ASCII digits"),
         ("300", "ROS_DOMAIN_ID='300' is above 232, the largest domain id Fast DDS can use"),
     ],
 )

@@ -25,6 +25,15 @@ COMMANDS = {
 }
 PROBLEMS = {
     "domain id not a number": ({"ROS_DOMAIN_ID": "abc"}, "ROS_DOMAIN_ID='abc' is not a whole"),
+    # rcl reads ASCII digits only; Python's int() would take these.
+    "domain id in Arabic-Indic digits": (
+        {"ROS_DOMAIN_ID": "\u0663"},
+        "ROS_DOMAIN_ID='\u0663' is not a whole number in ASCII digits",
+    ),
+    "domain id in fullwidth digits": (
+        {"ROS_DOMAIN_ID": "\uff11"},
+        "ROS_DOMAIN_ID='\uff11' is not a whole number in ASCII digits",
+    ),
     "domain id above Fast DDS's ports": ({"ROS_DOMAIN_ID": "300"}, "ROS_DOMAIN_ID='300' is above"),
     "log dir a file": (
         {"ROS_LOG_DIR": "/etc/passwd"},

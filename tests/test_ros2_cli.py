@@ -37,7 +37,7 @@ def test_an_unknown_verb_is_a_usage_error_naming_the_verbs():
 @pytest.mark.parametrize(
     ("value", "problem"),
     [
-        ("abc", "'abc' is not a whole number"),
+        ("abc", "'abc' is not a whole number in ASCII digits"),
         ("300", "'300' is above 232, the largest domain id Fast DDS can use"),
     ],
 )

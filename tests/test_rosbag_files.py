@@ -686,3 +686,91 @@ def test_a_bag_name_too_long_for_its_file_is_refused_and_nothing_is_left(ros_dom
         assert len(lines) == 1 and lines[0].startswith("error: cannot create "), lines
         assert "(with '_0.mcap') would be 257 bytes, more than the 255" in lines[0]
         assert list(tmp_path.iterdir()) == []
+
+
+def _many_channels_mcap(path: Path, channels: int, messages: int = 20) -> None:
+    """One schema, CHANNELS channel records (ids wrapping at 65,536 as MCAP's uint16 does, a
+    topic each), MESSAGES messages; no chunks and no summary, as a killed recording ends:
+    written record by record with the mcap library."""
+    from mcap.data_stream import RecordBuilder
+    from mcap.records import Channel, Header, Message, Schema
+
+    builder = RecordBuilder()
+    Header(profile="ros2", library="test").write(builder)
+    Schema(id=1, name="std_msgs/msg/String", encoding="ros2msg", data=b"string data").write(builder)
+    for number in range(channels):
+        Channel(
+            id=number % 65536, schema_id=1, topic=f"/t{number}", message_encoding="cdr", metadata={}
+        ).write(builder)
+    data = serialize_message(String(data="x"))
+    for number in range(messages):
+        Message(
+            channel_id=number % channels,
+            sequence=number,
+            log_time=10**9 + number * 10**7,
+            publish_time=10**9,
+            data=data,
+        ).write(builder)
+    path.write_bytes(MCAP_MAGIC + builder.end())
+
+
+def test_a_bag_declaring_100000_channels_is_refused_in_one_line(ros_domain, tmp_path):
+    """3.5 MB declaring 100,000 channels: refused by info and play alike, within 1 GiB of
+    address space (play made a publisher for each, 25 MB a second, silent, for minutes)."""
+    from rosbag2.mcap_file import MAX_CHANNELS
+
+    path = tmp_path / "channels.mcap"
+    _many_channels_mcap(path, 100_000)
+    expected = (
+        f"error: {path} declares more than {MAX_CHANNELS} channels; a bag here may declare "
+        f"at most {MAX_CHANNELS}: refusing it\n"
+    )
+    for command in (
+        ("ros2", "bag", "play", str(path)),
+        ("ros2", "bag", "info", str(path)),
+        ("rosbag", "play", str(path)),
+    ):
+        result = _under_memory_cap(*command)
+        assert (result.returncode, result.stderr) == (1, expected), command
+
+
+def test_a_channel_id_declared_twice_as_two_topics_is_damage(tmp_path, monkeypatch):
+    from ros2cmd.bag import mcap_file
+
+    monkeypatch.setattr(mcap_file, "MAX_CHANNELS", 70_000)
+    path = tmp_path / "twice.mcap"
+    _many_channels_mcap(path, 65537)  # id 0: /t0, then /t65536
+    twice = "is damaged: channel id 0 is declared twice, as '/t0' and as '/t65536'"
+    with pytest.raises(BagError, match=twice):
+        BagReader(path)
+
+
+def test_play_makes_at_most_max_publishers(ros_domain, tmp_path):
+    """More topics to play than MAX_PUBLISHERS: one line, nothing made; chosen with
+    --topics, the bag plays."""
+    from ros2cmd.bag.play import MAX_PUBLISHERS
+
+    path = tmp_path / "topics.mcap"
+    _many_channels_mcap(path, MAX_PUBLISHERS + 1)
+    expected = (
+        f"{path}: {MAX_PUBLISHERS + 1} topics to play; play makes at most {MAX_PUBLISHERS} "
+        "publishers: choose topics with --topics"
+    )
+    assert fails("ros2", "bag", "play", str(path)) == f"error: {expected}"
+    assert fails("rosbag", "play", str(path)) == f"error: {expected}"
+    result = run("ros2", "bag", "play", str(path), "--topics", "/t1", "/t2")
+    assert result.returncode == 0 and "Traceback" not in result.stderr, result.stderr
+
+
+def test_sigterm_while_play_makes_its_publishers_ends_it(ros_domain, tmp_path):
+    """As many topics as play makes publishers for: SIGTERM on the way ends play at once,
+    without a traceback (each made publisher is closed, not left to rclpy's exit)."""
+    from ros2cmd.bag.play import MAX_PUBLISHERS
+
+    path = tmp_path / "topics.mcap"
+    _many_channels_mcap(path, MAX_PUBLISHERS)
+    play = NodeProcess(str(BIN / "ros2"), "bag", "play", str(path))
+    play.wait_for_text("has no summary")  # printed just before the publishers are made
+    play.process.send_signal(signal.SIGTERM)
+    code = play.wait()
+    assert "Traceback" not in play.output and code in (0, 130), (code, play.output)

@@ -175,6 +175,63 @@ def test_a_dynamic_broadcaster_and_a_listener(context, executor):
     assert buffer.get_latest_common_time("world", "turtle1") == Time(seconds=101)
 
 
+class TimerLookupListener(rclpy.node.Node):
+    """The Time and Debugging pages' listener: a lookup at now() with a 50 ms timeout in a
+    timer callback of a node that rclpy.spin() runs (the pages' turtle_tf2 listener)."""
+
+    def __init__(self, context, spin_thread: bool) -> None:
+        super().__init__("turtle_tf2_frame_listener", context=context)
+        self.tf_buffer = Buffer()
+        self.tf_listener = TransformListener(self.tf_buffer, self, spin_thread=spin_thread)
+        self.found: list = []
+        self.failures: list[str] = []
+        self.timer = self.create_timer(0.1, self.on_timer)
+
+    def on_timer(self) -> None:
+        try:
+            t = self.tf_buffer.lookup_transform(
+                "turtle2", "turtle1", self.get_clock().now(), timeout=Duration(seconds=0.05)
+            )
+        except TransformException as ex:
+            self.failures.append(str(ex))
+            return
+        self.found.append(t)
+
+
+def test_a_lookup_at_now_with_a_timeout_in_a_timer_callback_sees_new_data(context, executor):
+    """With spin_thread=True the listener's own thread fills the buffer while the timer
+    callback waits (rclcpp's listener, the pages' C++, always has that thread): the lookup at
+    now() succeeds once the broadcaster's next transforms arrive. (Before: the node's one
+    executor was blocked in the callback, so every lookup was an extrapolation into the
+    future.)"""
+    broadcaster_node = rclpy.create_node("turtle_broadcasters", context=context)
+    broadcaster = TransformBroadcaster(broadcaster_node)
+
+    def broadcast() -> None:
+        now = broadcaster_node.get_clock().now()
+        broadcaster.sendTransform(
+            [
+                transform("world", "turtle1", now, (5, 5, 0)),
+                transform("world", "turtle2", now, (4, 2, 0)),
+            ]
+        )
+
+    broadcaster_node.create_timer(0.02, broadcast)
+    broadcasting = SingleThreadedExecutor(context=context)
+    broadcasting.add_node(broadcaster_node)
+    threading.Thread(target=broadcasting.spin, daemon=True).start()
+    listener = TimerLookupListener(context, spin_thread=True)
+    executor.add_node(listener)  # rclpy.spin(node): the node's timer runs here
+    try:
+        spin_until(executor, lambda: len(listener.found) >= 3, what="three lookups at now()")
+        looked = listener.found[-1].transform.translation
+        assert (looked.x, looked.y) == (pytest.approx(1.0), pytest.approx(3.0))
+    finally:
+        listener.tf_listener.executor.shutdown()
+        broadcasting.shutdown()
+        broadcaster_node.destroy_node()
+
+
 def test_the_listeners_spin_thread_answers_a_lookup_of_a_program_that_does_not_spin(context):
     broadcaster_node = rclpy.create_node("static_for_thread", context=context)
     listener_node = rclpy.create_node("thread_listener", context=context)

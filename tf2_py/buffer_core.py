@@ -50,10 +50,11 @@ from tf2_py.time_cache import (
     display_time,
     inverse,
     multiply,
-    normalized,
     rotate,
 )
 
+# A transform as _parsed gives it: parent, child, stamp (ns), translation, rotation.
+_Parsed = tuple[str, str, int, Vector, Quaternion]
 DEFAULT_CACHE_TIME = 10 * NANOSECONDS  # tf2::BUFFER_CORE_DEFAULT_CACHE_TIME
 MAX_GRAPH_DEPTH = 1000  # a walk longer than this is a loop
 QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
@@ -104,19 +105,98 @@ class BufferCore:
     def set_transform_static(self, transform: Any, authority: str) -> None:
         self._set(transform, authority, True)
 
+    def set_transforms(self, transforms: Any, authority: str, is_static: bool = False) -> None:
+        """Add every TransformStamped of a TFMessage's ``transforms``, under one lock (a
+        listener's callback: one message of many transforms)."""
+        parse, store = self._parsed, self._store
+        with self._lock:
+            for transform in transforms:
+                parsed = parse(transform, authority)
+                if parsed is not None:
+                    store(parsed, authority, is_static)
+
     def _set(self, message: Any, authority: str, is_static: bool) -> bool:
+        parsed = self._parsed(message, authority)
+        if parsed is None:
+            return False
+        with self._lock:
+            return self._store(parsed, authority, is_static)
+
+    def _parsed(self, message: Any, authority: str) -> _Parsed | None:
+        """(parent, child, stamp, translation, normalised rotation) of a TransformStamped;
+        None, with tf2's line, for data tf2 refuses."""
         try:
-            parent = message.header.frame_id
+            header = message.header
+            stamp = header.stamp
+            transform = message.transform
+            t, r = transform.translation, transform.rotation
+            if type(message) is TransformStamped:  # rosidl's setters made every field's type
+                stamp = stamp.sec * NANOSECONDS + stamp.nanosec
+                tx, ty, tz, rx, ry, rz, rw = t.x, t.y, t.z, r.x, r.y, r.z, r.w
+            else:
+                stamp = to_nanoseconds(stamp)
+                tx, ty, tz = float(t.x), float(t.y), float(t.z)
+                rx, ry, rz, rw = float(r.x), float(r.y), float(r.z), float(r.w)
+            parent = header.frame_id
             child = message.child_frame_id
-            stamp = to_nanoseconds(message.header.stamp)
-            t, r = message.transform.translation, message.transform.rotation
-            translation = (float(t.x), float(t.y), float(t.z))
-            rotation = (float(r.x), float(r.y), float(r.z), float(r.w))
         except AttributeError:
             raise TypeError(
                 "transform must be a TransformStamped (header, child_frame_id, transform)"
             ) from None
-        parent, child = parent.removeprefix("/"), child.removeprefix("/")
+        if parent[:1] == "/":
+            parent = parent[1:]
+        if child[:1] == "/":
+            child = child[1:]
+        norm2 = rx * rx + ry * ry + rz * rz + rw * rw
+        total = tx + ty + tz + norm2
+        if (
+            child == parent
+            or not child
+            or not parent
+            or total != total  # a NaN among them (or infinities that cancel: looked at below)
+            or not abs(norm2 - 1.0) < QUATERNION_NORMALIZATION_TOLERANCE
+        ) and not self._acceptable(parent, child, (tx, ty, tz), (rx, ry, rz, rw), norm2, authority):
+            return None
+        norm = math.sqrt(norm2)
+        return parent, child, stamp, (tx, ty, tz), (rx / norm, ry / norm, rz / norm, rw / norm)
+
+    def _store(self, parsed: _Parsed, authority: str, is_static: bool) -> bool:
+        """Keep a parsed transform in its frame's cache (the lock held)."""
+        parent, child, stamp, translation, rotation = parsed
+        numbers = self._numbers
+        number = numbers.get(child) or self._number(child, insert=True)
+        cache = self._caches[number]
+        if cache is None or isinstance(cache, StaticCache) != is_static:
+            cache = StaticCache() if is_static else TimeCache(self.cache_time)
+            self._caches[number] = cache
+        entry: Entry = (
+            numbers.get(parent) or self._number(parent, insert=True),
+            translation,
+            rotation,
+        )
+        if not cache.insert(stamp, entry):
+            self._error(
+                "TF_OLD_DATA",
+                child,
+                f"TF_OLD_DATA ignoring data from the past for frame {child} at time "
+                f"{display_time(stamp)} according to authority {authority}\n"
+                "Possible reasons are listed at http://wiki.ros.org/tf/Errors%20explained",
+                warning=True,
+            )
+            return False
+        self._authority[number] = authority
+        return True
+
+    def _acceptable(
+        self,
+        parent: str,
+        child: str,
+        translation: tuple[float, float, float],
+        rotation: Quaternion,
+        norm2: float,
+        authority: str,
+    ) -> bool:
+        """The checks of tf2's setTransform, each refusal with its line; True if none."""
         refused = False
         if child == parent:
             self._error(
@@ -152,7 +232,6 @@ class BufferCore:
                 f'"{authority}" because of a nan value in the transform {shown}',
             )
             refused = True
-        norm2 = sum(value * value for value in rotation)
         if not abs(norm2 - 1.0) < QUATERNION_NORMALIZATION_TOLERANCE:
             shown = "({:f} {:f} {:f} {:f})".format(*rotation)
             self._error(
@@ -163,27 +242,7 @@ class BufferCore:
                 f"transform {shown}",
             )
             refused = True
-        if refused:
-            return False
-        with self._lock:
-            number = self._number(child, insert=True)
-            cache = self._caches[number]
-            if cache is None or isinstance(cache, StaticCache) != is_static:
-                cache = StaticCache() if is_static else TimeCache(self.cache_time)
-                self._caches[number] = cache
-            entry: Entry = (self._number(parent, insert=True), translation, normalized(rotation))
-            if not cache.insert(stamp, entry):
-                self._error(
-                    "TF_OLD_DATA",
-                    child,
-                    f"TF_OLD_DATA ignoring data from the past for frame {child} at time "
-                    f"{display_time(stamp)} according to authority {authority}\n"
-                    "Possible reasons are listed at http://wiki.ros.org/tf/Errors%20explained",
-                    warning=True,
-                )
-                return False
-            self._authority[number] = authority
-        return True
+        return not refused
 
     def _error(self, kind: str, frame: str, message: str, *, warning: bool = False) -> None:
         now = wall.monotonic()

@@ -112,10 +112,11 @@ class TimeCache:
     def insert(self, stamp: int, entry: Entry) -> bool:
         """Add a transform; False when it is older than the cache keeps (tf2's TF_OLD_DATA)."""
         stamps = self._stamps
-        if len(self):
-            latest = stamps[-1]
-            self._prune(latest)
-            if stamp < latest - self.max_storage:
+        if len(stamps) > self._start:
+            horizon = stamps[-1] - self.max_storage
+            if stamps[self._start] < horizon:
+                self._prune(stamps[-1])
+            if stamp < horizon:
                 return False
         if not stamps or stamp >= stamps[-1]:
             position = len(stamps)

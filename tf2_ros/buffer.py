@@ -68,6 +68,11 @@ class Buffer(BufferCore, BufferInterface):
         super().set_transform_static(transform, authority)
         self._notify()
 
+    def set_transforms(self, transforms: Any, authority: str, is_static: bool = False) -> None:
+        """A TFMessage's transforms at once: the waiting lookups are woken once for them."""
+        super().set_transforms(transforms, authority, is_static)
+        self._notify()
+
     def _notify(self) -> None:
         with self._new_data:
             self._new_data.notify_all()

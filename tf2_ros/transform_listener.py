@@ -3,14 +3,26 @@
 Subscribes with tf2's QoS: /tf keep-last 100, volatile; /tf_static keep-last 100, transient
 local (so a late listener still gets every latched static transform). Its callbacks are in a
 reentrant group, so a lookup with a timeout in another callback of the node can be answered
-while it waits (with a multi-threaded executor). ``spin_thread=True`` spins the node in a
-thread of the listener's own, as tf2_ros does, so a lookup with a timeout works in a program
-that does not spin; the thread ends when ROS shuts down or the listener goes (``stop_spinning``).
+while it waits (with a multi-threaded executor).
+
+``spin_thread=True`` gives the listener a thread of its own, as rclcpp's TransformListener
+has (by default: the tf2 pages are C++): that thread alone takes /tf and /tf_static, so a
+lookup with a timeout in a callback of the node sees the transforms that arrive while it
+waits, whatever executor runs the node; and while no executor runs the node (a program that
+does not spin), the thread runs the node's other callbacks too, as tf2_ros's Python listener
+does. (rclpy's executors take a node whole; the listener's thread takes its subscriptions
+without taking the node, and the node's own executor leaves them to it.)
+The thread ends when ROS shuts down or the listener goes (``stop_spinning``).
 """
 
 from __future__ import annotations
 
+import threading
+from threading import Thread
+from typing import Any
+
 from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
 from tf2_msgs.msg import TFMessage
@@ -21,6 +33,42 @@ from tf2_ros.buffer import Buffer
 __all__ = ["TransformListener"]
 
 AUTHORITY = "default_authority"  # what tf2_ros's listener records as each frame's broadcaster
+
+
+# How often the listener's thread looks again at what the node has (a node nobody spins
+# gains a client or a timer without waking it).
+REFRESH_PERIOD = 0.25
+
+
+class _ListenerGroup(ReentrantCallbackGroup):
+    """The listener's subscriptions: with a thread of its own, only that thread takes them."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.thread: Thread | None = None
+
+    def can_execute(self, entity: object) -> bool:
+        return self.thread is None or threading.current_thread() is self.thread
+
+
+class _ListenerExecutor(SingleThreadedExecutor):
+    """Runs the listener's callbacks, and the node's others while no executor has the node;
+    never takes the node from the executor the program adds it to."""
+
+    def __init__(self, node: Node, group: _ListenerGroup) -> None:
+        super().__init__(context=node.context)
+        self._node = node
+        self._group = group
+
+    def get_nodes(self) -> list[Node]:
+        return [self._node]
+
+    def can_execute(self, entity: Any) -> bool:
+        mine = entity.callback_group is self._group
+        return (mine or self._node.executor is None) and super().can_execute(entity)
+
+    def spin_once(self, timeout_sec: float | None = None) -> None:
+        super().spin_once(REFRESH_PERIOD if timeout_sec is None else timeout_sec)
 
 
 class TransformListener:
@@ -47,7 +95,7 @@ class TransformListener:
             )
         self.buffer = buffer
         self.node = node
-        self.group = ReentrantCallbackGroup()
+        self.group = _ListenerGroup()
         self.tf_sub = node.create_subscription(
             TFMessage, "/tf", self.callback, qos, callback_group=self.group
         )
@@ -55,9 +103,12 @@ class TransformListener:
             TFMessage, "/tf_static", self.static_callback, static_qos, callback_group=self.group
         )
         if spin_thread:  # as tf2_ros: its executor and thread, by these names
-            self.spinner = SpinThread(node, name="tf2_listener")
+            self.spinner = SpinThread(
+                node, name="tf2_listener", executor=_ListenerExecutor(node, self.group)
+            )
             self.executor = self.spinner.executor
             self.dedicated_listener_thread = self.spinner.thread
+            self.group.thread = self.dedicated_listener_thread
 
     def stop_spinning(self) -> None:
         """End the spin thread, if there is one (before the node is destroyed)."""
@@ -74,9 +125,16 @@ class TransformListener:
         self.node.destroy_subscription(self.tf_static_sub)
 
     def callback(self, data: TFMessage) -> None:
-        for transform in data.transforms:
-            self.buffer.set_transform(transform, AUTHORITY)
+        self._set(data, False)
 
     def static_callback(self, data: TFMessage) -> None:
+        self._set(data, True)
+
+    def _set(self, data: TFMessage, is_static: bool) -> None:
+        set_transforms = getattr(self.buffer, "set_transforms", None)
+        if set_transforms is not None:  # tf2_ros.Buffer: the message's transforms at once
+            set_transforms(data.transforms, AUTHORITY, is_static)
+            return
+        add = self.buffer.set_transform_static if is_static else self.buffer.set_transform
         for transform in data.transforms:
-            self.buffer.set_transform_static(transform, AUTHORITY)
+            add(transform, AUTHORITY)

@@ -38,6 +38,7 @@ from ros2cmd.errors import ToolError
 from ros2cmd.graph import Graph, absolute_name
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.wait import spin_until
+from rosbag2.errors import shown
 from rosbag2.mcap_file import BagMessage
 from rosbag2.metadata import NS, TopicInfo
 from rosbag2.reader import BagReader
@@ -45,6 +46,9 @@ from rosbag2.reader import BagReader
 ADVERTISE_WAIT = 0.2  # ROS 1's "Waiting 0.2 seconds after advertising topics"
 MATCH_TIMEOUT = 5.0  # seconds: the longest play waits to meet the subscribers already running
 PUBLISHER_DEPTH = 100
+# Publishers (and service clients) one play makes: each costs about 70 KiB and a DDS
+# endpoint that every participant on the machine is told of.
+MAX_PUBLISHERS = 1000
 ACK_TIMEOUT = 5.0  # at the end: how long reliable subscribers get to take the last messages
 MIN_LOOP_PERIOD = 0.1  # seconds: --loop plays a bag at most this often
 STEP = 0.05  # seconds: the longest the loop waits before looking at keys and services again
@@ -163,26 +167,40 @@ class Player:
         self.clients: dict[str, tuple[Any, type]] = {}  # event topic -> (client, Event class)
         self.pending: list[Any] = []  # requests sent, answers not in yet
         self.warned: set[str] = set()
+        requested = None
         if options.ros1 and options.topics is not None:
-            for name in [absolute_name(t) for t in options.topics]:
+            requested = [absolute_name(t) for t in options.topics]
+            for name in requested:
                 if name not in bag.topics:
                     print(f"warning: {name} is not in the bag", file=sys.stderr, flush=True)
+        chosen = []
         for name, topic in bag.topics.items():
             event = is_service_event_topic(name, topic.type)
-            if options.ros1:
-                requested = options.topics
-                if requested is not None and name not in [absolute_name(t) for t in requested]:
-                    continue
-            elif not allow_topic(options, event, name):
+            if options.ros1 and requested is not None and name not in requested:
                 continue
+            if not options.ros1 and not allow_topic(options, event, name):
+                continue
+            chosen.append((name, topic, event))
+        if len(chosen) > MAX_PUBLISHERS:
+            raise ToolError(
+                f"{shown(bag.path)}: {len(chosen)} topics to play; play makes at most "
+                f"{MAX_PUBLISHERS} publishers: choose topics with --topics"
+            )
+        classes: dict[str, type | ToolError] = {}  # by type name: each looked up once
+        for name, topic, event in chosen:
             if event and options.publish_service_requests:
                 self._add_client(name, topic)
                 continue
-            try:
-                msg_type = message_class(topic.type)
-            except ToolError as error:
+            if topic.type not in classes:
+                try:
+                    classes[topic.type] = message_class(topic.type)
+                except ToolError as error:
+                    classes[topic.type] = error
+            msg_type = classes[topic.type]
+            if isinstance(msg_type, ToolError):
                 self.warn(
-                    f"not playing {name}: {error}", f"Ignoring a topic '{name}', reason: {error}."
+                    f"not playing {name}: {msg_type}",
+                    f"Ignoring a topic '{name}', reason: {msg_type}.",
                 )
                 continue
             self.publishers[name] = node.create_publisher(

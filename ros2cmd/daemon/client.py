@@ -15,7 +15,7 @@ import time
 from types import SimpleNamespace
 from typing import Any
 
-from ros2cmd.daemon.protocol import ANSWER_WAIT, peer_is_this_user, socket_address
+from ros2cmd.daemon.protocol import ANSWER_WAIT, CREDENTIALS, peer_is_this_user, socket_address
 from ros2cmd.errors import ToolError
 from ros2cmd.graph import VisibleNames, split_node_name
 from ros_tutorials_common.dds import apply_dds_defaults, environment_problem
@@ -32,6 +32,97 @@ NO_DAEMON_VARIABLE = "ROS_TUTORIALS_NO_DAEMON"
 
 def use_daemon(no_daemon: bool) -> bool:
     return not no_daemon and not os.environ.get(NO_DAEMON_VARIABLE)
+
+
+def name_holder() -> str | None:
+    """Who holds this user's daemon name, if another user's process does (it took the name
+    first, so no daemon of this user can bind it): "uid 65534 (nobody), pid 4242 (python3)";
+    None if the name is free or this user's daemon holds it.
+
+    A holder that listens and accepts says who it is on connect (SO_PEERCRED); one that
+    only bound the name, or lets connections wait, is found in /proc/net/unix and, where
+    this user may look, among the processes' open files.
+    """
+    import socket
+
+    address = socket_address()
+    try:
+        with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
+            connection.settimeout(2.0)
+            connection.connect(address)
+            credentials = connection.getsockopt(
+                socket.SOL_SOCKET, socket.SO_PEERCRED, CREDENTIALS.size
+            )
+            pid, uid, _gid = CREDENTIALS.unpack(credentials)
+            return None if uid == os.getuid() else _process(pid, uid)
+    except OSError:  # a free name is refused too; a full backlog times out
+        pass
+    inodes = _bound_inodes(address)
+    if not inodes:
+        return None
+    pid = _socket_owner(inodes)
+    if pid is None:
+        return "a process this user may not look into, which does not answer"
+    uid = _process_uid(pid)
+    return None if uid == os.getuid() else _process(pid, uid)
+
+
+def _bound_inodes(address: str) -> set[str]:
+    """The inodes of the Unix sockets named by an abstract ADDRESS (/proc/net/unix): the
+    bound one, and those of connections waiting to be accepted."""
+    shown = "@" + address[1:]
+    found = set()
+    with contextlib.suppress(OSError), open("/proc/net/unix") as table:
+        for line in table:
+            fields = line.split(maxsplit=7)
+            if len(fields) == 8 and fields[7].rstrip("\n") == shown:
+                found.add(fields[6])
+    return found
+
+
+def _socket_owner(inodes: set[str]) -> int | None:
+    """The process that has one of the sockets INODES open, among those this user may look
+    into."""
+    wanted = {f"socket:[{inode}]" for inode in inodes}
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit():
+            continue
+        with contextlib.suppress(OSError):
+            for fd in os.scandir(f"/proc/{entry.name}/fd"):
+                with contextlib.suppress(OSError):
+                    if os.readlink(fd.path) in wanted:
+                        return int(entry.name)
+    return None
+
+
+def _process_uid(pid: int) -> int | None:
+    with contextlib.suppress(OSError, ValueError, IndexError), open(f"/proc/{pid}/status") as f:
+        for line in f:
+            if line.startswith("Uid:"):
+                return int(line.split()[1])
+    return None
+
+
+def _process(pid: int, uid: int | None) -> str:
+    """'uid 65534 (nobody), pid 4242 (python3)'."""
+    import pwd
+
+    user = "uid ?"
+    if uid is not None:
+        user = f"uid {uid}"
+        with contextlib.suppress(KeyError):
+            user += f" ({pwd.getpwuid(uid).pw_name})"
+    name = ""
+    with contextlib.suppress(OSError), open(f"/proc/{pid}/comm") as comm:
+        name = f" ({comm.read().strip()})"
+    return f"{user}, pid {pid}{name}"
+
+
+def held_by_another_user(holder: str) -> str:
+    return (
+        f"another user's process holds this daemon's name ({holder}), so no daemon of yours "
+        "can start with these DDS settings; the lists discover for themselves"
+    )
 
 
 def _request(question: dict[str, Any], timeout: float) -> dict[str, Any] | None:
@@ -233,8 +324,14 @@ def start() -> bool:
         raise ToolError(problem)
     if is_running():
         return False
+    holder = name_holder()
+    if holder is not None:
+        raise ToolError(held_by_another_user(holder))
     spawn()
     if not _wait_until(is_running, START_TIMEOUT):
+        holder = name_holder()  # took the name meanwhile
+        if holder is not None:
+            raise ToolError(held_by_another_user(holder))
         raise ToolError(f"the daemon did not start within {START_TIMEOUT:g} s")
     return True
 

@@ -54,9 +54,9 @@ def peer_is_this_user(connection: socket.socket) -> bool:
     """Whether the process at the other end of a Unix socket runs as this user."""
     import socket
 
-    credentials = connection.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, _CREDENTIALS.size)
-    _pid, uid, _gid = _CREDENTIALS.unpack(credentials)
+    credentials = connection.getsockopt(socket.SOL_SOCKET, socket.SO_PEERCRED, CREDENTIALS.size)
+    _pid, uid, _gid = CREDENTIALS.unpack(credentials)
     return uid == os.getuid()
 
 
-_CREDENTIALS = struct.Struct("3i")  # struct ucred: pid, uid, gid
+CREDENTIALS = struct.Struct("3i")  # struct ucred: pid, uid, gid

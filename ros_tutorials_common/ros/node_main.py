@@ -33,7 +33,7 @@ from collections.abc import Callable, Sequence
 import rclpy
 from rclpy.context import Context
 from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import Executor, ExternalShutdownException, SingleThreadedExecutor
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy  # see RCLError
 from rclpy.impl.rcutils_logger import RcutilsLogger
 from rclpy.node import Node
@@ -146,16 +146,20 @@ class SpinThread:
     its own wake), so ``stop()`` triggers a guard condition of the node's.
     """
 
-    def __init__(self, node: Node, name: str) -> None:
+    def __init__(self, node: Node, name: str, executor: Executor | None = None) -> None:
+        """EXECUTOR, if given, knows which of the node's callbacks it runs (tf2's listener
+        takes its own subscriptions without taking the node): it is not given the node."""
         self.node = node
-        self.executor = SingleThreadedExecutor(context=node.context)
+        self.adds_node = executor is None
+        self.executor = executor or SingleThreadedExecutor(context=node.context)
         self.running = True
         self.wake = node.create_guard_condition(lambda: None)
         self.thread = threading.Thread(target=self._spin, name=name, daemon=True)
         self.thread.start()
 
     def _spin(self) -> None:
-        self.executor.add_node(self.node)
+        if self.adds_node:
+            self.executor.add_node(self.node)
         try:
             while self.running:
                 self.executor.spin_once()

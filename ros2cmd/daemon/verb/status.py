@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import Any
 
 from ros2cmd.daemon import client
@@ -15,4 +16,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def main(_graph: Any, _args: argparse.Namespace) -> None:
-    print("The daemon is running" if client.is_running() else "The daemon is not running")
+    if client.is_running():
+        print("The daemon is running")
+        return
+    print("The daemon is not running")
+    holder = client.name_holder()
+    if holder is not None:
+        print(f"warning: {client.held_by_another_user(holder)}", file=sys.stderr)

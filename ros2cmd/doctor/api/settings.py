@@ -7,9 +7,8 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 
-from ros_tutorials_common.dds import DDS_DEFAULTS
+from ros_tutorials_common.dds import DDS_DEFAULTS, MAX_DOMAIN_ID, domain_id
 
-MAX_DOMAIN_ID = 232  # Fast DDS: 7400 + 250 * id must leave room for the ports below 65536
 PORTABLE_DOMAIN_IDS = 101  # above, ports may meet the OS's ephemeral ports (ROS 2 docs)
 RANGES = ("LOCALHOST", "SUBNET", "OFF", "SYSTEM_DEFAULT")
 
@@ -36,19 +35,17 @@ class Settings:
     @property
     def domain_id(self) -> int | None:
         """The domain id, or None if it is not one Fast DDS can use."""
-        text = (self.domain_text or "0").strip()
-        if not text.isdigit() or int(text) > MAX_DOMAIN_ID:
-            return None
-        return int(text)
+        value = domain_id({"ROS_DOMAIN_ID": self.domain_text or ""})
+        return None if value is None or value > MAX_DOMAIN_ID else value
 
     def domain_problem(self) -> str | None:
         if self.domain_id is not None:
             return None
         text = self.domain_text
-        if text.strip().isdigit():
+        if domain_id({"ROS_DOMAIN_ID": text or ""}) is not None:
             what = f"is above {MAX_DOMAIN_ID}, the largest domain id Fast DDS can use"
         else:
-            what = "is not a whole number"
+            what = "is not a whole number in ASCII digits"
         return f"ROS_DOMAIN_ID={text!r} {what}: use one from 0 to {PORTABLE_DOMAIN_IDS}"
 
     @property
