@@ -13,6 +13,10 @@ underlay a learner builds their own packages on.
   build` of an ament_cmake package needs here that a ROS 2 installation would not;
 - COLCON_DEFAULTS_FILE, unless set: ros_tutorials_common/config/colcon_defaults.yaml, where
   a package whose build fails is one line (ros_tutorials_common/colcon_events.py);
+- PYTHONWARNINGS, unless set: pkg_resources' DeprecationWarning ignored. flake8-import-order
+  0.18.2 (Ubuntu 24.04's, which ament_flake8 loads in every `colcon test` of a learner's
+  package) imports pkg_resources, and setuptools 68 (Jazzy's) warns on that: `colcon test`
+  would report stderr output for every package;
 - in an interactive bash or zsh, TAB completion of `ros2` and the ROS 1 tools: argcomplete's
   shell code for them (ros_tutorials_common/completion.py), written once into
   share/ros-tutorials/ros2-argcomplete.bash (nothing, quietly, without argcomplete), as a ROS
@@ -48,6 +52,7 @@ BEGIN = "# >>> ros-tutorials: the ROS 2 environment (tools/ros_environment.py) >
 END = "# <<< ros-tutorials <<<"
 SETUP_FILES = ("local_setup.sh", "local_setup.bash", "local_setup.zsh")
 SETUP_FILES += tuple(name.removeprefix("local_") for name in SETUP_FILES)
+PKG_RESOURCES_WARNING = "ignore:pkg_resources is deprecated as an API:DeprecationWarning"
 COMPLETION = Path("share", "ros-tutorials", "ros2-argcomplete.bash")  # under the prefix
 
 
@@ -57,6 +62,7 @@ def defaults() -> dict[str, str]:
         **DDS_DEFAULTS,
         "CMAKE_TOOLCHAIN_FILE": str(TOOLCHAIN),
         "COLCON_DEFAULTS_FILE": str(COLCON_DEFAULTS),
+        "PYTHONWARNINGS": PKG_RESOURCES_WARNING,
     }
 
 
