@@ -101,9 +101,7 @@ def find_launch_file(names: list[str]) -> Path:
         package, name = names
         found = packages.launch_packages(package)  # a seed's name too: my_package
         if not found:
-            known = ", ".join(packages.package_dirs())
-            hint = packages.not_sourced_hint(package)
-            raise LaunchError(hint or f"unknown package {package!r}; known packages: {known}")
+            raise LaunchError(packages.unknown_package_line(package))
         # Anywhere in share/PKG, as `ros2 launch PKG NAME` finds it; once, or say where.
         paths = [path for pkg in found for path in packages.share_files(pkg, name)]
         if len(paths) == 1:

@@ -191,6 +191,9 @@ def test_an_unknown_package_lists_what_ros2_pkg_list_shows_nearest_first():
     with pytest.raises(packages.UnknownPackage) as raised:
         packages.share_directory("turtlesm")  # $(find-pkg-share turtlesm) in a launch file
     assert str(raised.value) == line
+    # `ros2 launch PKG FILE` and roslaunch give the same line.
+    assert fails("ros2", "launch", "turtlesm", "x.launch.py") == f"error: {line}"
+    assert fails("roslaunch", "turtlesm", "x.launch") == f"error: {line}"
 
 
 @pytest.mark.parametrize(
