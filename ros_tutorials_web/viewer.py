@@ -71,7 +71,8 @@ from ros_tutorials_web import guard, server
 from ros_tutorials_web.frames import AUTO, MAX_NAME
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
-from ros_tutorials_web.rqt import Ros, Tools
+from ros_tutorials_web.ros_calls import Ros
+from ros_tutorials_web.rqt import Tools
 from ros_tutorials_web.watch import Feed, LogFeed, Watcher
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -310,7 +311,7 @@ def serve(
         hub.ros = watcher.request
         hub.start = functools.partial(start, watcher)
         hub.stop = functools.partial(stop, watcher)
-        tools = Tools(Ros(watcher, watcher.request), hub, lambda: streams.topic_types)
+        tools = Tools(Ros(watcher, watcher.request), hub)
         app = make_app(hub, streams, tools, door, watcher.get_logger().warning)
         if on_listen is not None:
             address, port = sock.getsockname()[:2]

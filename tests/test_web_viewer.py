@@ -496,7 +496,8 @@ class TestInBrowser:
             browser.get(viewer)
             before = until(lambda: trail(browser), "a canvas frame drawn")
             drive()
-            until(lambda: trail(browser) > before + 100, "the trail drawn after a pub")
+            # Any new trail will do: a loaded machine runs fewer of turtlesim's steps in a second.
+            until(lambda: trail(browser) > before + 20, "the trail drawn after a pub")
             assert "live" in browser.find_element("id", "status").text
             browser.save_screenshot(str(tmp_path / "web_viewer.png"))
 
