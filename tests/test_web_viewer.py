@@ -441,7 +441,8 @@ def test_every_address_says_so() -> None:
     assert lines == [
         f"Open {here} in a browser (Ctrl-C to stop); from other machines {there}",
         "Listening on 0.0.0.0, not only on this machine: anyone on the network who has the "
-        "link can watch the graph, /rosout and every topic (the viewer publishes nothing)",
+        "link can watch the graph, /rosout and every topic, and call services, publish and set "
+        "parameters with the rqt tools",
     ]
     assert guard.hosts is None  # any name: other machines use theirs for this one
 
