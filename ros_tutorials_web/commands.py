@@ -104,7 +104,8 @@ _graph_view = _browser("rqt_graph", "The running graph", "graph")
 
 def _only_server_options(argv: Sequence[str]) -> bool:
     """Whether the command line asks for nothing but where to serve (or is empty)."""
-    server_options = _parser("", "")
+    server_options = argparse.ArgumentParser(add_help=False)  # -h: the terminal form's help
+    guard.add_arguments(server_options)
     server_options.error = lambda message: None  # type: ignore[method-assign]
     try:
         _, rest = server_options.parse_known_args(list(argv))

@@ -63,7 +63,6 @@ DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8080  # when free; else any free port (a port given with --port must be free)
 WILDCARDS = ("0.0.0.0", "::")  # every address of the machine
 LOOPBACK_NAMES = ("localhost", "127.0.0.1", "::1")
-EXPOSED_VIEWER = "watch the graph, /rosout and every topic (the viewer publishes nothing)"
 EXPOSED_TOOLS = (
     "watch the graph, /rosout and every topic, and call services, publish and set parameters "
     "with the rqt tools"
@@ -276,7 +275,7 @@ class Guard:
 def greeting(
     sock: socket.socket,
     guard: Guard,
-    exposed: str = EXPOSED_VIEWER,
+    exposed: str = EXPOSED_TOOLS,
     path: str = "/",
 ) -> list[str]:
     """What a server says when it listens: the link to ``path``, and a warning when other

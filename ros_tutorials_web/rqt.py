@@ -26,7 +26,8 @@ typed in each field; a string field takes it as typed, any other field reads it 
 (``2``, ``true``, ``[1, 2]``) before ros2cmd.messages fills the message and checks it.
 
 Service clients and parameter clients are made for one call and destroyed after it;
-publishers and plot subscriptions belong to the tab that asked and go with it.
+publishers and plot subscriptions belong to the tab that asked and go with it. forms.py
+reads the forms, ros_calls.py does the node's part.
 """
 
 from __future__ import annotations
@@ -37,277 +38,35 @@ import math
 import os
 import time
 import weakref
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from aiohttp import web
 
 from ros2cmd.console import LEVELS, logger_name
-from ros2cmd.errors import ToolError
 from ros2cmd.graph import is_hidden
-from ros2cmd.messages import fill_message, message_to_ordered, message_to_yaml, parse_yaml
-from ros2cmd.param.api import described_type
-from ros2cmd.typenames import full_type_name, load_type
+from ros2cmd.messages import message_to_ordered, message_to_yaml
+from ros_tutorials_web.forms import (
+    Refused,
+    filled,
+    form,
+    is_number,
+    parameter_entry,
+    parameter_value,
+    plain_data,
+    type_class,
+)
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
+from ros_tutorials_web.ros_calls import Ros
 from rosbag2.errors import BagError
 from rosbag2.reader import BagReader
 
 STATIC = Path(__file__).resolve().parent / "static"
-CALL_TIMEOUT = 10.0  # s: a service that does not answer within it is said so
 MAX_RATE = 100.0  # Hz: the fastest a page may publish
-MAX_DEPTH = 8  # nested messages shown in a form
 TIMELINE_POINTS = 2000  # per topic: a bag's time line is decimated to this many stamps
 BAG_MESSAGE_TEXT = 20000  # characters of one bag message shown
 PLOT_TOPICS = 10  # topics one tab may plot at once
-# The tools' names, as the commands and the page's tabs spell them.
-TOOLS = (
-    "service_caller",
-    "publisher",
-    "reconfigure",
-    "logger_level",
-    "plot",
-    "bag",
-    "graph",
-    "console",
-)
-
-
-class Refused(Exception):
-    """A request the page made that cannot be done: one line for the page."""
-
-
-# --- the ROS thread, from the event loop ----------------------------------------------------
-
-
-class Ros:
-    """The node's work, asked for from the event loop: ``run(fn)`` runs fn on the ROS thread
-    (``request``, e.g. Watcher.request) and gives its result; ``future(f)`` awaits an rclpy
-    future."""
-
-    def __init__(self, node: Any, request: Callable[[Callable[[], None]], None]) -> None:
-        self.node = node
-        self.request = request
-
-    async def run(self, work: Callable[[], Any]) -> Any:
-        loop = asyncio.get_running_loop()
-        done: asyncio.Future = loop.create_future()
-
-        def on_ros() -> None:
-            try:
-                result = work()
-            except Exception as error:
-                loop.call_soon_threadsafe(_settle, done, None, error)
-            else:
-                loop.call_soon_threadsafe(_settle, done, result, None)
-
-        self.request(on_ros)
-        return await done
-
-    async def future(self, rclpy_future: Any, timeout: float, what: str) -> Any:
-        loop = asyncio.get_running_loop()
-        done: asyncio.Future = loop.create_future()
-        rclpy_future.add_done_callback(
-            lambda f: loop.call_soon_threadsafe(_settle, done, f.result(), f.exception())
-        )
-        try:
-            return await asyncio.wait_for(done, timeout)
-        except asyncio.TimeoutError:
-            raise Refused(f"{what}: no answer within {timeout:.0f} s") from None
-
-    async def call(self, service: str, service_class: type, request: Any, what: str) -> Any:
-        """One call of ``service``: a client made for it, the answer, the client destroyed."""
-        client = await self.run(lambda: self.node.create_client(service_class, service))
-        try:
-            deadline = time.monotonic() + CALL_TIMEOUT
-            while not client.service_is_ready():
-                if time.monotonic() > deadline:
-                    raise Refused(f"{what}: service '{service}' not available")
-                await asyncio.sleep(0.05)
-            rclpy_future = await self.run(lambda: client.call_async(request))
-            return await self.future(rclpy_future, CALL_TIMEOUT, what)
-        finally:
-            await self.run(lambda: self.node.destroy_client(client))
-
-
-def _settle(done: asyncio.Future, result: Any, error: BaseException | None) -> None:
-    if done.done():
-        return
-    if error is not None:
-        done.set_exception(error)
-    else:
-        done.set_result(result)
-
-
-# --- forms: a message's fields, and the values typed in them ----------------------------------
-
-
-def form(cls: type, depth: int = 0) -> list[dict[str, Any]]:
-    """A message class's fields for a form: name, type, kind (bool, number, string, message,
-    array) and the default value as text (a nested message: its fields)."""
-    from rosidl_parser.definition import AbstractNestedType, BasicType, NamespacedType
-
-    msg = cls()
-    fields = []
-    for (name, type_text), slot in zip(
-        cls.get_fields_and_field_types().items(), cls.SLOT_TYPES, strict=True
-    ):
-        entry: dict[str, Any] = {"name": name, "type": type_text}
-        value = getattr(msg, name)
-        if isinstance(slot, NamespacedType) and depth < MAX_DEPTH:
-            entry["kind"] = "message"
-            entry["fields"] = form(type(value), depth + 1)
-        elif isinstance(slot, (AbstractNestedType, NamespacedType)):
-            entry["kind"] = "array"
-            entry["default"] = json.dumps(message_to_ordered(msg)[name])
-        elif isinstance(slot, BasicType) and slot.typename == "boolean":
-            entry["kind"] = "bool"
-            entry["default"] = "true" if value else "false"
-        elif isinstance(slot, BasicType) and slot.typename not in ("char", "wchar"):
-            entry["kind"] = "number"
-            entry["default"] = repr(value) if isinstance(value, float) else str(value)
-        else:  # strings (and char, as text)
-            entry["kind"] = "string"
-            entry["default"] = str(value)
-        fields.append(entry)
-    return fields
-
-
-def typed_values(cls: type, typed: Any, path: str = "") -> dict[str, Any]:
-    """The values typed in a form (a dict of texts, nested for nested messages) as the data
-    fill_message takes: a string field's text as typed, any other read as YAML."""
-    from rosidl_parser.definition import AbstractString, NamespacedType
-
-    if not isinstance(typed, dict):
-        raise Refused(f"{path or 'the message'}: expected the form's fields")
-    fields = dict(zip(cls.get_fields_and_field_types(), cls.SLOT_TYPES, strict=True))
-    values: dict[str, Any] = {}
-    for name, text in typed.items():
-        where = f"{path}.{name}" if path else name
-        slot = fields.get(name)
-        if slot is None:
-            raise Refused(f"'{where}' is not a field of {full_type_name(cls)}")
-        if isinstance(slot, NamespacedType) and isinstance(text, dict):
-            values[name] = typed_values(type(getattr(cls(), name)), text, where)
-        elif not isinstance(text, str):
-            raise Refused(f"{where}: expected the text typed in its field")
-        elif isinstance(slot, AbstractString):
-            values[name] = text
-        else:
-            try:
-                values[name] = parse_yaml(text) if text.strip() else None
-            except ToolError as error:
-                raise Refused(f"{where}: {error}") from None
-            if values[name] is None:
-                raise Refused(f"{where}: no value typed")
-    return values
-
-
-def filled(cls: type, typed: Any) -> Any:
-    """A message of ``cls`` filled from a form's values, or Refused with the one line."""
-    try:
-        return fill_message(cls(), typed_values(cls, typed))
-    except ToolError as error:
-        raise Refused(str(error)) from None
-
-
-def type_class(name: Any, kinds: tuple[str, ...]) -> type:
-    if not isinstance(name, str) or not name:
-        raise Refused("no type chosen")
-    try:
-        return load_type(name, kinds)
-    except ToolError as error:
-        raise Refused(str(error)) from None
-    except Exception as error:  # a broken package's module: its words, one line
-        raise Refused(f"cannot load {name}: {error}") from None
-
-
-# --- parameters ------------------------------------------------------------------------------
-
-
-def parameter_entry(name: str, value: Any, descriptor: Any) -> dict[str, Any]:
-    """One parameter for the page: as rqt_reconfigure shows it."""
-    from rclpy.parameter import parameter_value_to_python
-
-    entry: dict[str, Any] = {
-        "name": name,
-        "type": described_type(value.type),
-        "value": _plain(parameter_value_to_python(value)),
-        "description": descriptor.description,
-        "read_only": descriptor.read_only,
-    }
-    kinds = (("integer", descriptor.integer_range), ("double", descriptor.floating_point_range))
-    for kind, ranges in kinds:
-        if ranges:
-            r = ranges[0]
-            entry["range"] = {"from": r.from_value, "to": r.to_value, "step": r.step, "kind": kind}
-    return entry
-
-
-def _plain(value: Any) -> Any:
-    if isinstance(value, float) and not math.isfinite(value):
-        return str(value)
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
-    if isinstance(value, (bytes, bytearray)):
-        return list(value)
-    return value
-
-
-def parameter_value(text: Any, kind: str) -> Any:
-    """The ParameterValue for the text typed, read as the parameter's type (a parameter
-    keeps its type: 5 for a double is 5.0, as rqt_reconfigure's spin box gives it)."""
-    from rcl_interfaces.msg import ParameterType, ParameterValue
-
-    if not isinstance(text, str):
-        raise Refused("expected the value as text")
-    value = ParameterValue()
-    try:
-        data = parse_yaml(text) if kind != "string" else text
-    except ToolError as error:
-        raise Refused(str(error)) from None
-    checks: dict[str, tuple[int, str, Callable[[Any], bool], Callable[[Any], Any]]] = {
-        "boolean": (ParameterType.PARAMETER_BOOL, "bool_value", _is_bool, bool),
-        "integer": (ParameterType.PARAMETER_INTEGER, "integer_value", _is_int, int),
-        "double": (ParameterType.PARAMETER_DOUBLE, "double_value", _is_number, float),
-        "string": (ParameterType.PARAMETER_STRING, "string_value", _is_str, str),
-        "boolean array": (ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value", _all(_is_bool), list),  # noqa: E501
-        "integer array": (ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value", _all(_is_int), list),  # noqa: E501
-        "double array": (ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value", _all(_is_number), lambda v: [float(x) for x in v]),  # noqa: E501
-        "string array": (ParameterType.PARAMETER_STRING_ARRAY, "string_array_value", _all(_is_str), list),  # noqa: E501
-    }  # fmt: skip
-    if kind not in checks:
-        raise Refused(f"a parameter of type {kind} cannot be set here")
-    code, field, fits, convert = checks[kind]
-    if not fits(data):
-        raise Refused(f"{text!r} is not a {kind}")
-    value.type = code
-    try:
-        setattr(value, field, convert(data))
-    except (AssertionError, ValueError, TypeError, OverflowError) as error:
-        raise Refused(f"{text!r} does not fit a {kind}: {error}") from None
-    return value
-
-
-def _is_bool(v: Any) -> bool:
-    return isinstance(v, bool)
-
-
-def _is_int(v: Any) -> bool:
-    return isinstance(v, int) and not isinstance(v, bool) and -(2**63) <= v < 2**63
-
-
-def _is_number(v: Any) -> bool:
-    return isinstance(v, (int, float)) and not isinstance(v, bool)
-
-
-def _is_str(v: Any) -> bool:
-    return isinstance(v, str)
-
-
-def _all(fits: Callable[[Any], bool]) -> Callable[[Any], bool]:
-    return lambda v: isinstance(v, list) and all(fits(x) for x in v)
 
 
 # --- the tools ---------------------------------------------------------------------------------
@@ -316,10 +75,9 @@ def _all(fits: Callable[[Any], bool]) -> Callable[[Any], bool]:
 class Tools:
     """The rqt tools' routes and WebSocket messages, on one node (the viewer's)."""
 
-    def __init__(self, ros: Ros, hub: Hub, topic_types: Callable[[], dict[str, list[str]]]):
+    def __init__(self, ros: Ros, hub: Hub) -> None:
         self.ros = ros
         self.hub = hub
-        self.topic_types = topic_types
         # Per tab: its publishers and its bag player, by the page's id (tasks of the tab's:
         # cancelled, with what they made, when the tab goes).
         self.publishing: weakref.WeakKeyDictionary[Tab, dict[Any, asyncio.Task]] = (
@@ -390,7 +148,7 @@ class Tools:
         return web.json_response(
             {
                 "yaml": message_to_yaml(response) if response.get_fields_and_field_types() else "",
-                "data": _plain_data(message_to_ordered(response)),
+                "data": plain_data(message_to_ordered(response)),
                 "seconds": round(time.monotonic() - started, 3),
             }
         )
@@ -654,7 +412,7 @@ class Tools:
             cls = type_class(asked.get("type"), ("msg",))
             message = filled(cls, asked.get("message", {}))
             rate = asked.get("rate", 1.0)
-            if not _is_number(rate) or not 0 <= rate <= MAX_RATE:
+            if not is_number(rate) or not 0 <= rate <= MAX_RATE:
                 raise Refused(f"the rate must be 0 (once) to {MAX_RATE:.0f} Hz")
         except Refused as error:
             self.answer(tab, {**reply, "error": str(error), "on": False})
@@ -691,7 +449,7 @@ class Tools:
             if not isinstance(asked, dict):
                 raise Refused("expected {id, path, start, end, topics}")
             start, end = asked.get("start", 0), asked.get("end", math.inf)
-            if not _is_number(start) or not _is_number(end) or end < start:
+            if not is_number(start) or not is_number(end) or end < start:
                 raise Refused("the range must be two times in seconds, start before end")
             reader = self.open_bag(asked.get("path"))
         except Refused as error:
@@ -744,10 +502,3 @@ class Tools:
             self.publishing.get(tab, {}).pop(key, None)
             for publisher in publishers.values():
                 self.ros.request(lambda p=publisher: self.ros.node.destroy_publisher(p))
-
-
-def _plain_data(value: Any) -> Any:
-    """Ordered message data as JSON can carry it (bytes as numbers, NaN as text)."""
-    if isinstance(value, dict):
-        return {k: _plain_data(v) for k, v in value.items()}
-    return _plain(value)

@@ -71,13 +71,15 @@ from ros_tutorials_web import guard, server
 from ros_tutorials_web.frames import AUTO, MAX_NAME
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
-from ros_tutorials_web.rqt import Ros, Tools
+from ros_tutorials_web.ros_calls import Ros
+from ros_tutorials_web.rqt import Tools
 from ros_tutorials_web.watch import Feed, LogFeed, Watcher
 
 STATIC = Path(__file__).resolve().parent / "static"
 STREAM_HZ = 30  # the most messages a second passed on per topic or picture stream
 TRUNCATE = 64  # strings and arrays in a topic's message, as `ros2 topic echo` shortens them
 YAML_LIMIT = 20000  # characters of one message's text
+PLOT_SAMPLES = 1000  # messages of one topic in one plot payload (the newest)
 MIME = {"png": "image/png", "jpeg": "image/jpeg", "jpg": "image/jpeg"}
 # What a tab wants from the moment it opens (hub keys); "topic:NAME" and "tf:FRAME" on demand.
 GRAPH, LOG, PICTURES = "graph", "log", "pictures"
@@ -151,6 +153,7 @@ class Streams:
             self.hub.loop.call_later(wait, self._feed, feed)
             return
         data = feed.take()
+        history = feed.take_history()
         if data is None:
             return
         self._sent_at[key] = self.hub.loop.time()
@@ -161,7 +164,7 @@ class Streams:
         if picture:
             self._picture(feed, msg)
         else:
-            self._topic(feed, msg)
+            self._topic(feed, msg, history)
 
     def _picture(self, feed: Feed, msg: Any) -> None:
         kind = next((MIME[w] for w in msg.format.replace(";", " ").split() if w in MIME), None)
@@ -175,7 +178,7 @@ class Streams:
         }
         self.hub.offer(PICTURES, picture_frame(header, bytes(msg.data)), "picture:" + feed.topic)
 
-    def _topic(self, feed: Feed, msg: Any) -> None:
+    def _topic(self, feed: Feed, msg: Any, history: list[tuple[float, bytes]]) -> None:
         yaml_text = message_to_yaml(msg, truncate_length=TRUNCATE)
         payload = {
             "type": "topic",
@@ -187,8 +190,24 @@ class Streams:
         }
         text = json.dumps(payload)
         self.hub.offer("topic:" + feed.topic, text, "topic")
-        payload["time"] = time.time()  # when it came: a plot's time axis
+        if not self.hub.wanted("plot:" + feed.topic):
+            return
+        # A plot gets every message since the last payload (a 100 Hz topic is not sampled).
+        payload["time"] = time.time()
+        payload["samples"] = self._samples(feed, history[-PLOT_SAMPLES:])
         self.hub.offer("plot:" + feed.topic, json.dumps(payload), "plot:" + feed.topic)
+
+    @staticmethod
+    def _samples(feed: Feed, history: list[tuple[float, bytes]]) -> list[list[Any]]:
+        """[time it came, its numbers] of each message."""
+        samples = []
+        for came, data in history:
+            try:
+                msg = deserialize_message(data, feed.message_class)
+            except Exception:  # not what its type says: skipped
+                continue
+            samples.append([came, numbers(message_to_ordered(msg, truncate_length=TRUNCATE))])
+        return samples
 
 
 def start(watcher: Watcher, key: str) -> None:
@@ -310,7 +329,7 @@ def serve(
         hub.ros = watcher.request
         hub.start = functools.partial(start, watcher)
         hub.stop = functools.partial(stop, watcher)
-        tools = Tools(Ros(watcher, watcher.request), hub, lambda: streams.topic_types)
+        tools = Tools(Ros(watcher, watcher.request), hub)
         app = make_app(hub, streams, tools, door, watcher.get_logger().warning)
         if on_listen is not None:
             address, port = sock.getsockname()[:2]

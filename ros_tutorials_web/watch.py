@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import queue
 import threading
+import time
 from collections import deque
 from collections.abc import Callable
 from typing import Any
@@ -38,8 +39,14 @@ LOG_KEEP = 1000  # /rosout entries kept for a browser that opens the page later
 TEXT_LIMIT = 4000  # characters of one log message passed on
 
 
+TOPIC_DEPTH = 10  # messages of a watched topic its subscription holds for the executor
+HISTORY_BYTES = 4 * 1024 * 1024  # a topic's messages kept between two takes, for a plot
+
+
 class Feed:
-    """The newest message of one subscription, serialized: a newer one replaces it."""
+    """The newest message of one subscription, serialized: a newer one replaces it. Beside
+    it, every message since the last take with the time it came (``take_history``: a plot
+    draws them all), at most HISTORY_BYTES of them: the oldest go first."""
 
     def __init__(self, topic: str, type_name: str, wake: Callable[[Feed], None]) -> None:
         self.topic = topic
@@ -51,15 +58,30 @@ class Feed:
         self._wake = wake
         self._lock = threading.Lock()
         self._data: bytes | None = None
+        self._history: deque[tuple[float, bytes]] = deque()
+        self._history_bytes = 0
 
     def put(self, data: bytes) -> None:
         """The subscription's callback (ROS thread)."""
+        came = time.time()
         with self._lock:
             waiting = self._data is not None  # the event loop has been woken already
             self._data = data
             self.count += 1
+            self._history.append((came, data))
+            self._history_bytes += len(data)
+            while self._history_bytes > HISTORY_BYTES and len(self._history) > 1:
+                self._history_bytes -= len(self._history.popleft()[1])
         if not waiting:
             self._wake(self)
+
+    def take_history(self) -> list[tuple[float, bytes]]:
+        """Every message since the last take_history, with the time it came (event loop)."""
+        with self._lock:
+            history = list(self._history)
+            self._history.clear()
+            self._history_bytes = 0
+        return history
 
     def take(self) -> bytes | None:
         """The newest message since the last take, or None (event loop)."""
@@ -194,7 +216,8 @@ class Watcher(Node):
                 continue
             feed.publisher_kinds = self._publisher_kinds(name)
             qos: QoSProfile = qos_for(feed.publisher_kinds)
-            qos.depth = 1  # the newest only
+            # Pictures: the newest only; a topic: a few, so a plot misses none of a fast one.
+            qos.depth = 1 if feed.type_name == IMAGE_TYPE else TOPIC_DEPTH
             feed.subscription = self.create_subscription(
                 feed.message_class, name, feed.put, qos, raw=True
             )

@@ -10,9 +10,11 @@ import json
 
 import aiohttp
 from aiohttp import web
+from rclpy.serialization import deserialize_message, serialize_message
 
 from ros_tutorials_web import guard
 from ros_tutorials_web.hub import Hub, Tab
+from ros_tutorials_web.watch import Feed
 
 
 class FakeSocket:
@@ -106,3 +108,27 @@ def test_writing_routes_need_a_post_of_json_from_the_own_page() -> None:
             sock.close()
 
     asyncio.run(check())
+
+
+def test_a_feed_keeps_every_message_for_a_plot_within_its_bytes() -> None:
+    """A plot draws every message of a topic, not only the newest the viewer passes on at
+    its stream rate; what is kept between two takes is bounded in bytes (oldest dropped)."""
+    from std_msgs.msg import Float64
+
+    from ros_tutorials_web import watch
+
+    woken: list[Feed] = []
+    feed = Feed("/fast", "std_msgs/msg/Float64", woken.append)
+    for value in range(5):
+        feed.put(serialize_message(Float64(data=float(value))))
+    assert len(woken) == 1  # the event loop is woken once until it takes
+    assert feed.take() == serialize_message(Float64(data=4.0))  # the newest
+    history = feed.take_history()
+    values = [deserialize_message(data, Float64).data for _, data in history]
+    assert values == [0.0, 1.0, 2.0, 3.0, 4.0]
+    assert [came for came, _ in history] == sorted(came for came, _ in history)
+    assert feed.take_history() == []
+    big = b"\0" * (watch.HISTORY_BYTES // 3)
+    for _ in range(5):
+        feed.put(big)
+    assert len(feed.take_history()) == 3  # the oldest went first

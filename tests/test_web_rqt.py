@@ -6,7 +6,12 @@ Screenshots go to the test's tmp_path (docs/images has the ones the docs show).
 
 from __future__ import annotations
 
+import os
+import pty
 import re
+import select
+import signal
+import subprocess
 import time
 from pathlib import Path
 from typing import Any
@@ -14,7 +19,7 @@ from typing import Any
 import pytest
 from browser import chromium, text_of, until
 from geometry_msgs.msg import Twist
-from helpers import BIN, ok
+from helpers import BIN, TIMEOUT, ok
 from rclpy.serialization import serialize_message
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
@@ -210,12 +215,12 @@ class TestRqtInTheBrowser:
             browser.get(rqt + "#bag:" + str(bag))
             until(lambda: "2 topic(s)" in text_of(browser, "#bag-info"), "the bag opened")
             assert "20 message(s)" in text_of(browser, "#bag-info")
-            # A click on /chatter's row (the first, sorted), half way: the message then.
+            # A click on /chatter's row (the second, sorted), half way: the message then.
             canvas = browser.find_element(By.ID, "bag-timeline")
             width = canvas.size["width"]
             left = 220 * width / 900
             x = left + (width - left - 10 * width / 900) * 0.5 - width / 2
-            y = 8 + 10 - canvas.size["height"] / 2
+            y = (8 + 22 + 10) * width / 900 - canvas.size["height"] / 2
             from selenium.webdriver import ActionChains
 
             ActionChains(browser).move_to_element_with_offset(
@@ -223,24 +228,27 @@ class TestRqtInTheBrowser:
             ).click().perform()
             until(lambda: "data: word" in text_of(browser, "#bag-message"), "the message shown")
             assert "/chatter" in text_of(browser, "#bag-cursor")
-            start = pose()
+            # The bag drives a turtle of its own, spawned where nothing is in its way.
+            spawn = "{x: 2.0, y: 5.5, theta: 0.0, name: 'bagturtle'}"
+            ok("ros2", "service", "call", "/spawn", "turtlesim/srv/Spawn", spawn)
+            start = pose("bagturtle")
             browser.find_element(By.ID, "bag-play").click()
             until(lambda: "played 20 message(s)" in text_of(browser, "#bag-play-info"), "played")
-            until(lambda: pose()["x"] > start["x"] + 0.5, "the turtle driven by the bag")
+            until(lambda: pose("bagturtle")["x"] > start["x"] + 0.5, "the turtle driven by the bag")
             browser.save_screenshot(str(tmp_path / "rqt_bag.png"))
             type_into(browser.find_element(By.ID, "bag-path"), str(tmp_path / "nothing") + "\n")
             until(lambda: "does not exist" in text_of(browser, "#bag-error"), "one line")
 
 
 def write_bag(path: Path) -> Path:
-    """A bag of 1 s: /turtle1/cmd_vel forward at 10 Hz, and /chatter's words."""
+    """A bag of 1 s: /bagturtle/cmd_vel forward at 10 Hz, and /chatter's words."""
     writer = rosbag2_py.SequentialWriter()
     writer.open(
         rosbag2_py.StorageOptions(uri=str(path), storage_id="mcap"),
         rosbag2_py.ConverterOptions("", ""),
     )
     for name, kind in (
-        ("/turtle1/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("/bagturtle/cmd_vel", "geometry_msgs/msg/Twist"),
         ("/chatter", "std_msgs/msg/String"),
     ):
         writer.create_topic(
@@ -250,7 +258,7 @@ def write_bag(path: Path) -> Path:
     for i in range(10):
         twist = Twist()
         twist.linear.x = 2.0
-        writer.write("/turtle1/cmd_vel", serialize_message(twist), begin + i * 100_000_000)
+        writer.write("/bagturtle/cmd_vel", serialize_message(twist), begin + i * 100_000_000)
         writer.write(
             "/chatter", serialize_message(String(data=f"word {i}")), begin + i * 100_000_000 + 1
         )
@@ -283,3 +291,38 @@ class TestRqtCommands:
             until(lambda: "Spawning turtle" in text_of(browser, "#log"), "turtlesim's log lines")
             browser.get(rqt + "#graph")
             until(lambda: "/turtlesim" in text_of(browser, "#graph"), "the viewer's graph")
+
+    def test_ctrl_c_and_sigterm_end_it_at_once(self, own_domain, node_process) -> None:
+        for stop in ("interrupt", "terminate"):
+            tool = node_process(str(BIN / "rqt_publisher"), "--port", "0", env=HEADLESS)
+            tool.wait_for_text("in a browser")
+            if stop == "interrupt":
+                assert tool.interrupt() == 0, tool.output
+            else:
+                tool.process.send_signal(signal.SIGTERM)
+                assert tool.wait() == 0, tool.output
+            assert "Traceback" not in tool.output
+
+    def test_rqt_graph_in_a_terminal_without_display_opens_the_view(self, own_domain) -> None:
+        """Typed in a terminal with no display: the browser view's graph (down a pipe it
+        prints DOT, as test_graph_view.py checks)."""
+        main, child = pty.openpty()
+        tool = subprocess.Popen(
+            [str(BIN / "rqt_graph"), "--port", "0"],
+            stdin=child, stdout=child, stderr=child,
+            env={**os.environ, **HEADLESS}, start_new_session=True,
+        )  # fmt: skip
+        os.close(child)
+        seen = b""
+        try:
+            deadline = time.monotonic() + TIMEOUT
+            while b"in a browser" not in seen:
+                assert time.monotonic() < deadline, f"no link printed: {seen!r}"
+                ready, _, _ = select.select([main], [], [], 0.5)
+                if ready:
+                    seen += os.read(main, 4096)
+            assert re.search(rb"/rqt\?token=[\w-]{32}#graph in a browser", seen), seen
+        finally:
+            tool.send_signal(signal.SIGINT)
+            assert tool.wait(TIMEOUT) == 0
+            os.close(main)

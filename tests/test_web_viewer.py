@@ -172,7 +172,8 @@ class TestViewer:
 
             def more_trail(item: Any) -> Any:
                 frame = canvas_frame(item)
-                return frame if frame and trail_pixels(frame[1]) > before + 100 else None
+                # Any new trail: a loaded machine runs fewer of turtlesim's steps a second.
+                return frame if frame and trail_pixels(frame[1]) > before + 20 else None
 
             later, _ = await tab.until(more_trail, "a frame with the new trail")
             assert later["count"] > header["count"]
@@ -441,7 +442,8 @@ def test_every_address_says_so() -> None:
     assert lines == [
         f"Open {here} in a browser (Ctrl-C to stop); from other machines {there}",
         "Listening on 0.0.0.0, not only on this machine: anyone on the network who has the "
-        "link can watch the graph, /rosout and every topic (the viewer publishes nothing)",
+        "link can watch the graph, /rosout and every topic, and call services, publish and set "
+        "parameters with the rqt tools",
     ]
     assert guard.hosts is None  # any name: other machines use theirs for this one
 
@@ -496,7 +498,8 @@ class TestInBrowser:
             browser.get(viewer)
             before = until(lambda: trail(browser), "a canvas frame drawn")
             drive()
-            until(lambda: trail(browser) > before + 100, "the trail drawn after a pub")
+            # Any new trail will do: a loaded machine runs fewer of turtlesim's steps in a second.
+            until(lambda: trail(browser) > before + 20, "the trail drawn after a pub")
             assert "live" in browser.find_element("id", "status").text
             browser.save_screenshot(str(tmp_path / "web_viewer.png"))
 

@@ -465,16 +465,20 @@ function sendPlot() {
   send({ plot: [...new Set(state.series.map((s) => s.topic))] });
 }
 
+// Every message of the topic since the last payload: [time it came, its numbers] each.
 function addPoints(message) {
   if ($("plot-pause").checked) return;
+  const samples = message.samples || [[message.time, message.numbers]];
   for (const series of state.series) {
     if (series.topic !== message.topic) continue;
-    const value = message.numbers[series.field];
     const known = series.field in message.numbers;
     series.missing = !known;
     series.item.querySelector(".label").textContent = known ? series.name : `${series.name} (no such number)`;
-    if (!known || value === null) continue;
-    series.points.push([message.time, value]);
+    if (!known) continue;
+    for (const [time, numbers] of samples) {
+      const value = numbers[series.field];
+      if (value !== null && value !== undefined) series.points.push([time, value]);
+    }
     if (series.points.length > PLOT_KEEP) series.points.splice(0, series.points.length - PLOT_KEEP);
   }
 }
