@@ -602,7 +602,7 @@ class TestTurtleRviz:
             assert where["frame turtle1"][:2] == pytest.approx([5.544445, 5.544445], abs=0.01)
             kinds = browser.execute_script("return window.rvizState.displays().map((d) => d.kind)")
             assert kinds == ["Grid", "TF"]
-            # The learner drives turtle1: its frame moves in the view, turtle2's follows.
+            # The learner drives turtle1: its frame moves in the view.
             run(
                 "ros2", "topic", "pub", "--once", "/turtle1/cmd_vel", "geometry_msgs/msg/Twist",
                 "{linear: {x: 2.5}, angular: {z: 1.2}}",
@@ -611,10 +611,9 @@ class TestTurtleRviz:
                 browser,
                 """const at = Object.fromEntries(window.rvizState.objects()
                      .filter((o) => o.kind === "TF").map((o) => [o.what, o.position]));
-                   const t1 = at["frame turtle1"], t2 = at["frame turtle2"];
-                   return Math.hypot(t1[0] - 5.544445, t1[1] - 5.544445) > 1
-                     && Math.hypot(t1[0] - t2[0], t1[1] - t2[1]) > 0.5;""",
-                "turtle1's frame moved away, turtle2's behind it",
+                   const t1 = at["frame turtle1"];
+                   return Math.hypot(t1[0] - 5.544445, t1[1] - 5.544445) > 1;""",
+                "turtle1's frame moved in the view",
             )
             browser.save_screenshot(str(tmp_path / "rviz_turtles.png"))
         finally:

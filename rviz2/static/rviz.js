@@ -654,7 +654,7 @@ function send(message) { if (socket && socket.readyState === 1) socket.send(JSON
 function onConfig(c) {
   state.config = c;
   state.dirty = true;
-  if (state.fixed !== c.fixed) { state.fixed = c.fixed; }
+  // state.fixed follows the tf stream: its poses are in the fixed frame it names
   if (document.activeElement !== fixedInput) fixedInput.value = c.fixed;
   if (!state.viewSet && c.view) { setView(c.view); state.viewSet = true; }
   for (const info of c.displays) {
@@ -774,6 +774,9 @@ window.rvizState = {
   },
   // Every drawn thing with its place in the fixed frame: what a person sees in the view.
   meshes() { return Object.fromEntries(state.meshes); }, // URI -> loading, loaded, failed
-  objects() { return [...state.displays.values()].flatMap((d) => d.describe()); },
+  objects() {
+    for (const d of state.displays.values()) d.update(); // where the newest tf puts them
+    return [...state.displays.values()].flatMap((d) => d.describe());
+  },
   setView,
 };
