@@ -248,3 +248,27 @@ def test_robot_state_publisher_reads_a_file_argument_with_upstreams_warning(node
     watcher.until(lambda: watcher.description is not None, "/robot_description")
     assert watcher.description == first.read_text()
     assert rsp.interrupt() in (0, 130)
+
+
+def test_ignore_timestamp_takes_joint_states_without_a_stamp(node_process, executor, tmp_path):
+    """A JointState with no stamp is older than any publish interval: robot_state_publisher
+    ignores it, as ROS 2's does, unless ignore_timestamp is true."""
+    watcher = Watcher(executor)
+    path = params_file(tmp_path, "robot_state_publisher", robot_description=FLEXIBLE.read_text())
+    with open(path, "a") as params:
+        params.write("    ignore_timestamp: true\n")
+    ros2_run(
+        node_process,
+        "robot_state_publisher",
+        "robot_state_publisher",
+        "--ros-args",
+        "--params-file",
+        path,
+    ).wait_for_text("Robot initialized")
+    unstamped = JointState(name=["head_swivel"], position=[1.0])
+    spin_until(
+        executor,
+        lambda: watcher.joints.publish(unstamped) or "head" in watcher.moving,
+        what="the head's frame from an unstamped JointState",
+    )
+    assert watcher.moving["head"].header.stamp.sec == 0
