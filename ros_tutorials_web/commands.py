@@ -104,11 +104,13 @@ _graph_view = _browser("rqt_graph", "The running graph", "graph")
 
 def _only_server_options(argv: Sequence[str]) -> bool:
     """Whether the command line asks for nothing but where to serve (or is empty)."""
+    server_options = _parser("", "")
+    server_options.error = lambda message: None  # type: ignore[method-assign]
     try:
-        _parser("", "").parse_args(list(argv))
-    except SystemExit:
+        _, rest = server_options.parse_known_args(list(argv))
+    except (SystemExit, TypeError, ValueError):
         return False
-    return True
+    return not rest
 
 
 def _given(argv: Sequence[str] | None) -> list[str]:

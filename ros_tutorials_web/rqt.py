@@ -389,7 +389,7 @@ class Tools:
             return self.refused(error)
         return web.json_response(
             {
-                "yaml": message_to_yaml(response),
+                "yaml": message_to_yaml(response) if response.get_fields_and_field_types() else "",
                 "data": _plain_data(message_to_ordered(response)),
                 "seconds": round(time.monotonic() - started, 3),
             }

@@ -5,7 +5,9 @@ A ``.rviz`` file is YAML that rviz2 writes: ``Visualization Manager`` holds ``Gl
 (``Fixed Frame``) and ``Displays``, a list of mappings each with a ``Class``
 (``rviz_default_plugins/TF``), a ``Name``, ``Enabled`` and, for a display that subscribes, a
 ``Topic`` (or ``Description Topic`` for RobotModel) whose ``Value`` is the topic name.
-``rviz_common/Group`` holds more displays under its own ``Displays``.
+``rviz_common/Group`` holds more displays under its own ``Displays``. ROS 1's rviz writes the
+same layout with classes ``rviz/TF``, ``rviz/Group`` ...: read as their ROS 2 namesakes (its
+RobotModel's ``Robot Description`` names a parameter; here the topic of that name).
 
 What the 3D view draws is in ``KINDS``; a display of any other class is kept out and named in
 one line each (``lacking``). A file that is not such YAML is one line (``ConfigError``).
@@ -47,6 +49,7 @@ KINDS: dict[str, tuple[str, str | None, str | None]] = {
 # A display kind by the message type it shows (rviz's "By topic" list).
 BY_TYPE = {type_name: kind for kind, type_name, _ in KINDS.values() if type_name}
 GROUP = "rviz_common/Group"
+ROS1_PREFIX = "rviz/"  # ROS 1's rviz: rviz/TF is rviz_default_plugins/TF
 DEFAULT_FIXED_FRAME = "map"  # rviz2's own default
 MAX_DISPLAYS = 200
 MAX_FILE = 1 << 20  # bytes of a .rviz file read
@@ -157,6 +160,9 @@ def _displays(items: Any, config: Config, where: str) -> None:
         if not isinstance(item, dict):
             raise ConfigError(f"{where}: not a .rviz file: a display is not a mapping")
         class_name = str(item.get("Class", ""))
+        if class_name.startswith(ROS1_PREFIX):
+            rest = class_name[len(ROS1_PREFIX) :]
+            class_name = GROUP if rest == "Group" else "rviz_default_plugins/" + rest
         name = str(item.get("Name") or class_name.rpartition("/")[2] or "display")
         enabled = item.get("Enabled", True) is not False
         if class_name == GROUP:
@@ -173,6 +179,8 @@ def _displays(items: Any, config: Config, where: str) -> None:
             continue
         kind, type_name, default_topic = KINDS[class_name]
         topic_field = item.get("Description Topic" if kind == "RobotModel" else "Topic")
+        if kind == "RobotModel" and topic_field is None and item.get("Robot Description"):
+            topic_field = item["Robot Description"]  # ROS 1: a parameter's name
         topic = topic_field.get("Value") if isinstance(topic_field, dict) else topic_field
         topic = str(topic).strip() if topic else default_topic
         if type_name and topic and not topic.startswith("/"):

@@ -91,10 +91,5 @@ def main(argv: Sequence[str] | None = None, prog: str = "rviz2") -> int:
     return server.run(argv, sock, door, make, exposed=EXPOSED)
 
 
-def rviz(argv: Sequence[str] | None = None) -> int:
-    """ROS 1's ``rviz``: the same view (``-d`` and ``-f`` as rviz has them)."""
-    return main(argv, prog="rviz")
-
-
 if __name__ == "__main__":
     sys.exit(main())

@@ -4,9 +4,10 @@ tf2's frames, and hands the 3D view's page what it draws (encode.py, robot_model
 It only subscribes: it publishes nothing and changes nothing in the graph. Each display keeps
 only its newest message (a newer one replaces it before it is drawn), except Marker and
 MarkerArray, which keep the markers they have been told to add (at most ``encode.MAX_MARKERS``,
-each until deleted or its lifetime ends). A timer (``RATE`` a second) turns what changed into
-payloads and hands them over with ``handoff(stream, payload)``, which must only hand over (the
-web server queues nothing either: a tab gets the newest payload of each stream).
+each until deleted or its lifetime ends). A timer (``RATE`` a second, while a page is open)
+turns what changed into payloads and hands them over with ``handoff(stream, payload)``, which
+must only hand over (the web server queues nothing either: a tab gets the newest payload of
+each stream).
 
 Streams: ``config`` (the fixed frame, the displays with each one's status, the topics a
 display could be added for), ``tf`` (every frame's parent and pose in the fixed frame),
@@ -94,8 +95,9 @@ class Scene(Node):
         handoff: Handoff,
         package_share: Callable[[str], Any],
         by_topic: bool = False,
+        context: Any = None,
     ) -> None:
-        super().__init__("rviz2")
+        super().__init__("rviz2", context=context)
         from tf2_ros import Buffer, TransformListener
 
         self.handoff = handoff
@@ -113,6 +115,7 @@ class Scene(Node):
         self._wake = self.create_guard_condition(self._run_requests)
         self._config_changed = True
         self._last_tf = ""
+        self.viewers = 0  # pages open (set_viewers)
         for item in config.displays:
             self.add(item)
         self.create_timer(1 / RATE, self.tick)
@@ -234,7 +237,18 @@ class Scene(Node):
                 self.add_for_topic(name)
 
     # --- the timer: what changed, as payloads
+    def set_viewers(self, count: int) -> None:
+        """How many pages are open: with none, the timer encodes nothing (what changed
+        meanwhile is sent, newest first, when a page opens)."""
+        self.viewers = count
+
     def tick(self) -> None:
+        if not self.viewers:  # only the robot model, read at once: a bad URDF is said now
+            for state in self.displays:
+                if state.display.kind == "RobotModel" and state.changed and state.display.enabled:
+                    state.changed = False
+                    self.send_display(state)
+            return
         parents = self.parents()
         self.choose_fixed(parents)
         if self._config_changed:  # before the displays: the page makes a display from it
@@ -329,8 +343,8 @@ class Scene(Node):
                 payload = binary_frame(head, blob) if blob else json.dumps(head)
             else:
                 return
-        except (ValueError, robot_model.UrdfError) as error:
-            status = f"error: {error}"
+        except Exception as error:  # a message its type allows but the view cannot draw
+            status = "error: " + ((str(error).splitlines() or [type(error).__name__])[0][:300])
             payload = json.dumps({"type": "display", "id": state.number, "clear": True})
         state.newest = None if kind != "RobotModel" else state.newest
         if status != state.status:

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import functools
 import json
 from pathlib import Path
 from typing import Any
@@ -122,6 +123,7 @@ def make_app(hub: Hub, scene: Scene, door: Guard) -> web.Application:
         await ws.prepare(request)
         tab = FlowTab(ws)
         hub.add(tab, list(hub.always))
+        scene.request(functools.partial(scene.set_viewers, len(hub.tabs)))
         sender = asyncio.create_task(tab.send())
 
         def sent(task: asyncio.Task) -> None:  # a tab whose sending failed is closed
@@ -143,6 +145,7 @@ def make_app(hub: Hub, scene: Scene, door: Guard) -> web.Application:
         finally:
             sender.cancel()
             hub.remove(tab)
+            scene.request(functools.partial(scene.set_viewers, len(hub.tabs)))
             with contextlib.suppress(asyncio.CancelledError, ConnectionError):
                 await sender
         return ws

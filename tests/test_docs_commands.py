@@ -43,6 +43,7 @@ FENCE_CLOSE = re.compile(r"^ *```\s*$")
 NO_CHECKED_STEP = {
     "docs/dev/testing.md": "its commands run the test suite itself",
     "docs/ros1-to-ros2.md": "its one block sets variables for two machines",
+    "docs/rqt-in-the-browser.md": "its steps are clicks in a browser (tests/test_web_rqt.py)",
 }
 # Where a line's output ends in the one bash that runs a block: a line of its own.
 END = "\x1eend of line, exit status "

@@ -92,6 +92,31 @@ class TestRvizFiles:
         with pytest.raises(ConfigError, match=r"^cannot read .*nothing\.rviz: No such file"):
             load(tmp_path / "nothing.rviz")
 
+    def test_a_ros1_rviz_file(self) -> None:
+        """ROS 1's rviz writes rviz/TF, rviz/Group, a plain Topic and the robot description's
+        parameter name: read as their ROS 2 namesakes."""
+        config = parse(
+            "Visualization Manager:\n"
+            "  Displays:\n"
+            "    - {Class: rviz/Grid, Name: Grid}\n"
+            "    - Class: rviz/Group\n"
+            "      Displays:\n"
+            "        - {Class: rviz/RobotModel, Robot Description: robot_description}\n"
+            "        - {Class: rviz/LaserScan, Name: Scan, Topic: /base_scan}\n"
+            "    - {Class: rviz/Camera, Name: Cam}\n"
+            "  Global Options: {Fixed Frame: odom_combined}\n",
+            "seed.rviz",
+        )
+        assert config.fixed_frame == "odom_combined"
+        assert [(d.kind, d.topic) for d in config.displays] == [
+            ("Grid", None),
+            ("RobotModel", "/robot_description"),
+            ("LaserScan", "/base_scan"),
+        ]
+        assert config.lacking[0].startswith(
+            "seed.rviz: display 'Cam' (rviz_default_plugins/Camera) is not drawn"
+        )
+
     def test_no_file_shows_grid_tf_and_robot(self) -> None:
         config = default_config()
         assert [d.kind for d in config.displays] == ["Grid", "TF", "RobotModel"]

@@ -11,6 +11,7 @@ import asyncio
 import json
 import math
 import re
+import signal
 import struct
 import threading
 import time
@@ -44,6 +45,29 @@ endloop
 endfacet
 endsolid finger
 """
+# A COLLADA tetrahedron (z up, metres): the robot's other mesh.
+DAE = """<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="tip" name="tip"><mesh>
+      <source id="tip-xyz">
+        <float_array id="tip-xyz-array" count="12">0 0 0 0.2 0 0 0 0.2 0 0 0 0.2</float_array>
+        <technique_common><accessor source="#tip-xyz-array" count="4" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/>
+          <param name="Z" type="float"/></accessor></technique_common>
+      </source>
+      <vertices id="tip-vertices"><input semantic="POSITION" source="#tip-xyz"/></vertices>
+      <triangles count="4"><input semantic="VERTEX" source="#tip-vertices" offset="0"/>
+        <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes><visual_scene id="scene">
+    <node id="tip-node"><instance_geometry url="#tip"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+"""
 URDF = """<?xml version="1.0"?>
 <robot name="test_bot">
   <material name="blue"><color rgba="0 0 0.8 1"/></material>
@@ -56,6 +80,8 @@ URDF = """<?xml version="1.0"?>
   </link>
   <link name="gripper">
     <visual><geometry><mesh filename="file://{mesh}"/></geometry></visual>
+    <visual><origin xyz="0.1 0 0"/><geometry><mesh filename="file://{dae}"/></geometry>
+    </visual>
   </link>
   <joint name="neck" type="fixed"><parent link="base_link"/><child link="head"/>
     <origin xyz="0 0 0.5"/></joint>
@@ -141,7 +167,8 @@ class Publishers:
         self.dynamic = TransformBroadcaster(self.node)
         latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         self.description = self.node.create_publisher(String, "/robot_description", latched)
-        self.description.publish(String(data=URDF.format(mesh=mesh)))
+        dae = mesh.with_name("tip.dae")
+        self.description.publish(String(data=URDF.format(mesh=mesh, dae=dae)))
         self.marker = self.node.create_publisher(Marker, "/visualization_marker", 10)
         self.markers = self.node.create_publisher(MarkerArray, "/visualization_marker_array", 10)
         self.cloud = self.node.create_publisher(PointCloud2, "/cloud", 10)
@@ -237,6 +264,7 @@ def robot(tmp_path_factory: pytest.TempPathFactory, ros_domain: int) -> Iterator
     """The publishers, and the folder holding the test's .rviz file and mesh."""
     folder = tmp_path_factory.mktemp("robot")
     (folder / "finger.stl").write_text(STL)
+    (folder / "tip.dae").write_text(DAE)
     (folder / "robot.rviz").write_text(CONFIG)
     context = Context()
     rclpy.init(context=context)
@@ -524,6 +552,14 @@ class TestInBrowser:
             assert [d["kind"] for d in statuses] == [
                 "Grid", "TF", "RobotModel", "Marker", "MarkerArray", "PointCloud2"
             ]  # fmt: skip
+            meshes = page_until(
+                browser,
+                """const m = window.rvizState.meshes();
+                   return Object.keys(m).length === 2
+                     && Object.values(m).every((s) => s !== "loading") ? m : null;""",
+                "the robot's STL and COLLADA meshes loaded",
+            )
+            assert set(meshes.values()) == {"loaded"}, meshes
             lacking = browser.find_element("id", "lacking").text
             assert "'Front camera' (rviz_default_plugins/Camera) is not drawn" in lacking
             assert browser.execute_script("return window.rvizState.renders") > 0
@@ -826,5 +862,130 @@ def test_every_display_by_topic(sensors: Sensors, node_process, tmp_path: Path) 
             "window.rvizState.setView({distance: 11, pitch: 0.75, yaw: -2.2, focal: [5, 5, 0]})"
         )
         browser.save_screenshot(str(tmp_path / "rviz_sensors.png"))
+        # The learner types another fixed frame: everything is drawn from base_link now,
+        # the map's corner 3 m behind and 2 m to the side of the robot, turned by -45 degrees.
+        from selenium.webdriver.common.keys import Keys
+
+        field = browser.find_element("id", "fixed")
+        field.click()  # selects the frame's name: what is typed replaces it
+        field.send_keys("base_link", Keys.ENTER)
+        corner = page_until(
+            browser,
+            """const s = window.rvizState;
+               const map = s.objects().find((o) => o.what === "map 200x200 cells");
+               return s.fixed === "base_link" && map && map.visible ? map.position : null;""",
+            "the map placed in base_link",
+        )
+        c, s = math.cos(-math.pi / 4), math.sin(-math.pi / 4)
+        assert corner[:2] == pytest.approx([c * -3 - s * -2, s * -3 + c * -2], abs=1e-3)
     finally:
         browser.quit()
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_ctrl_c_and_sigterm_end_the_view_with_a_page_open(node_process, signum) -> None:
+    """Ctrl-C or SIGTERM while a page holds the WebSocket: rviz2 closes it and ends, status 0,
+    no traceback."""
+    process = node_process(str(BIN / "rviz2"), "--port", "0", env=HEADLESS)
+    link = started(process)
+
+    async def hold() -> None:
+        async with aiohttp.ClientSession() as client, client.ws_connect(at(link, "ws")) as ws:
+            await Tab(ws).until(lambda item: kind_of(item), "a first payload")
+            process.process.send_signal(signum)
+            ending = (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED)
+            while (await ws.receive(timeout=TIMEOUT)).type not in ending:
+                pass  # what was on its way before the signal
+
+    asyncio.run(hold())
+    assert process.wait() == 0
+    assert "Traceback" not in "\n".join(process.lines)
+
+
+def test_a_cloud_the_view_cannot_draw_is_one_status_line(node_process, context) -> None:
+    """A PointCloud2 without x, y and z (its type allows it): the display's status says so in
+    one line, once in rviz2's log; the view goes on."""
+    node = rclpy.create_node("rviz_bad_cloud", context=context)
+    bad = PointCloud2(height=1, width=2, point_step=4, row_step=8, data=bytes(8))
+    bad.fields = [PointField(name="intensity", offset=0, datatype=PointField.FLOAT32, count=1)]
+    bad.header.frame_id = "map"
+    publisher = node.create_publisher(PointCloud2, "/bad_cloud", 10)
+    timer = node.create_timer(0.2, lambda: publisher.publish(bad))
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    try:
+        process = node_process(str(BIN / "rviz2"), "--port", "0", env=HEADLESS)
+        link = started(process)
+
+        def status(item: Any) -> Any:
+            if not (isinstance(item, dict) and item.get("type") == "config"):
+                return None
+            shown = [d for d in item["displays"] if d["topic"] == "/bad_cloud"]
+            return shown and shown[0]["status"].startswith("error") and shown[0]["status"]
+
+        async def check(tab: Tab) -> str:
+            return await tab.until(status, "the bad cloud's status")
+
+        stop = threading.Event()
+
+        def spin() -> None:
+            while not stop.is_set():
+                executor.spin_once(timeout_sec=0.05)
+
+        spinner = threading.Thread(target=spin)
+        spinner.start()
+        try:
+            line = with_tab(link, check)
+        finally:
+            stop.set()
+            spinner.join()
+        assert line == "error: a PointCloud2 without x, y and z fields"
+        warnings = [entry for entry in process.lines if "without x, y and z" in entry]
+        assert len(warnings) == 1, warnings
+        assert "Traceback" not in "\n".join(process.lines)
+    finally:
+        node.destroy_timer(timer)
+        executor.remove_node(node)
+        executor.shutdown()
+        node.destroy_node()
+
+
+def test_rviz2_is_a_package_with_its_executable() -> None:
+    """As a ROS 2 installation has it: `ros2 pkg executables rviz2`, and its share folder."""
+    assert run("ros2", "pkg", "executables", "rviz2").stdout == "rviz2 rviz2\n"
+    share = run("ros2", "pkg", "prefix", "--share", "rviz2").stdout.strip()
+    assert (Path(share) / "package.xml").is_file()
+
+
+def test_with_no_page_open_nothing_is_encoded(context) -> None:
+    """The scene's timer encodes the tf frames and the displays only while a page is open
+    (the robot model excepted: a bad URDF is said at once); once one opens, the newest is
+    sent."""
+    from rviz2.config import default_config
+    from rviz2.scene import Scene
+    from tf2_ros import StaticTransformBroadcaster
+
+    sent: list[str] = []
+    scene = Scene(
+        default_config(), lambda stream, _payload: sent.append(stream), Path, context=context
+    )
+    node = rclpy.create_node("rviz_test_tf", context=context)
+    broadcaster = StaticTransformBroadcaster(node)
+    broadcaster.sendTransform(transform("world", "base_link", (1.0, 0.0, 0.0)))
+    executor = SingleThreadedExecutor(context=context)
+    for each in (scene, node):
+        executor.add_node(each)
+    try:
+        deadline = time.monotonic() + 3.0  # three seconds: ninety ticks of the scene's timer
+        while time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.05)
+        assert "tf" not in sent and sent.count("config") <= 1
+        scene.set_viewers(1)
+        deadline = time.monotonic() + TIMEOUT
+        while "tf" not in sent:
+            assert time.monotonic() < deadline, "no tf payload once a page was open"
+            executor.spin_once(timeout_sec=0.05)
+    finally:
+        executor.shutdown()
+        scene.destroy_node()
+        node.destroy_node()

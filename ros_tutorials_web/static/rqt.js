@@ -375,6 +375,7 @@ function parameterRow(node, parameter) {
   const set = async () => {
     const value = input.type === "checkbox" ? String(input.checked) : input.value;
     problem.textContent = "";
+    if (value.trim() === "") return; // nothing typed yet
     try {
       await post("api/rqt/param", { node, name: parameter.name, type: parameter.type, value });
       parameter.value = value;
@@ -625,7 +626,8 @@ async function showBagMessage(topic, at) {
 function play() {
   if (!state.bag) return;
   const start = Number($("bag-start").value);
-  const end = Number($("bag-end").value);
+  let end = Number($("bag-end").value);
+  if (end >= state.bag.duration - 0.0005) end = state.bag.duration + 1; // to the end (shown rounded)
   $("bag-play-info").textContent = "playing\u2026";
   $("bag-stop").disabled = false;
   send({ play: { id: Date.now(), path: state.bag.path, start, end } });

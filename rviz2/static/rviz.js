@@ -68,6 +68,7 @@ const state = {
   fixed: "", frames: new Map(), // name -> {parent, p, q} or {error}
   config: null, displays: new Map(), // id -> Display
   early: new Map(), // id -> the newest [header, data] that came before its display
+  meshes: new Map(), // a robot model's mesh URI -> "loading", "loaded" or "failed"
   viewSet: false, connected: false,
   dirty: true, tfVersion: 0, renders: 0, fps: 0, latencies: [], arrivals: [], drawMs: [], pendingStamps: [], unacked: 0,
 };
@@ -213,7 +214,7 @@ class TF extends Display {
     this.root.visible = true;
     const showNames = this.options["Show Names"] !== false;
     const showArrows = this.options["Show Arrows"] !== false;
-    const names = new Set([state.fixed, ...state.frames.keys()]);
+    const names = new Set(state.frames.keys()); // the fixed frame too, when tf knows it
     for (const [name, item] of this.items) {
       if (!names.has(name)) { this.root.remove(item); disposeTree(item); this.items.delete(name); }
     }
@@ -272,6 +273,9 @@ class RobotModel extends Display {
     }
   }
   visual(v, link) {
+    // The display's Alpha scales every visual's own.
+    const alpha = Number(this.options.Alpha ?? 1);
+    v = { ...v, color: [v.color[0], v.color[1], v.color[2], v.color[3] * alpha] };
     const holder = new THREE.Group();
     holder.position.set(...v.xyz);
     holder.rotation.copy(new THREE.Euler(v.rpy[0], v.rpy[1], v.rpy[2], "ZYX"));
@@ -284,17 +288,19 @@ class RobotModel extends Display {
     } else if (v.type === "mesh") {
       holder.scale.set(...v.scale);
       const url = `mesh/${this.info.id}/${v.mesh}`;
+      state.meshes.set(v.uri, "loading");
+      const loaded = () => { state.meshes.set(v.uri, "loaded"); state.dirty = true; };
       if (v.format === "stl") {
         stlLoader.load(url, (geometry) => {
           geometry.computeVertexNormals();
           holder.add(new THREE.Mesh(geometry, material(v.color)));
-          state.dirty = true;
+          loaded();
         }, undefined, () => this.meshFailed(v.uri));
       } else {
         colladaLoader.load(url, (collada) => {
           collada.scene.quaternion.identity(); // URDF meshes are in the link's frame, z up
           holder.add(collada.scene);
-          state.dirty = true;
+          loaded();
         }, undefined, () => this.meshFailed(v.uri));
       }
     }
@@ -302,7 +308,11 @@ class RobotModel extends Display {
     holder.userData.what = `${v.type} of ${link}`;
     return holder;
   }
-  meshFailed(uri) { this.meshError = `cannot load mesh ${uri}`; renderPanel(); }
+  meshFailed(uri) {
+    state.meshes.set(uri, "failed");
+    this.meshError = `cannot load mesh ${uri}`;
+    renderPanel();
+  }
   update() {
     this.root.visible = this.info.enabled;
     const missing = [];
@@ -635,6 +645,7 @@ function renderFrames() {
 
 const fixedInput = $("fixed");
 fixedInput.addEventListener("change", () => send({ fixed: fixedInput.value.trim() }));
+fixedInput.addEventListener("focus", () => fixedInput.select()); // typing replaces the frame
 
 // --- the connection
 let socket = null;
@@ -762,6 +773,7 @@ window.rvizState = {
       name: d.info.name, topic: d.info.topic, enabled: d.info.enabled, status: statusOf(d)[1] }));
   },
   // Every drawn thing with its place in the fixed frame: what a person sees in the view.
+  meshes() { return Object.fromEntries(state.meshes); }, // URI -> loading, loaded, failed
   objects() { return [...state.displays.values()].flatMap((d) => d.describe()); },
   setView,
 };
