@@ -289,24 +289,24 @@ def test_source_list_and_mimic_joints(node_process, executor, tmp_path):
     """joint_state_publisher takes a joint's value from a source_list topic and publishes the
     joint that mimics it (multiplier, offset); robot_state_publisher turns both into /tf."""
     watcher = Watcher(executor)
-    urdf_file = tmp_path / "pincer.urdf"
-    urdf_file.write_text(MIMIC)
-    ros2_run(
-        node_process,
-        "joint_state_publisher",
-        "joint_state_publisher",
-        str(urdf_file),
-        "--ros-args",
-        "-p",
-        "source_list:=['/hand']",
-    )
-    ros2_run(
+    # robot_state_publisher first: joint_state_publisher, given no file, takes its robot from
+    # /robot_description once (a robot published later would start its joints over at zero).
+    rsp = ros2_run(
         node_process,
         "robot_state_publisher",
         "robot_state_publisher",
         "--ros-args",
         "--params-file",
         params_file(tmp_path, "robot_state_publisher", robot_description=MIMIC),
+    )
+    rsp.wait_for_text("Robot initialized")
+    ros2_run(
+        node_process,
+        "joint_state_publisher",
+        "joint_state_publisher",
+        "--ros-args",
+        "-p",
+        "source_list:=['/hand']",
     )
     hand = watcher.node.create_publisher(JointState, "/hand", 10)
 
