@@ -22,6 +22,7 @@ import contextlib
 import math
 import sys
 from collections.abc import Callable, Sequence
+from typing import Any
 
 import rclpy
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType
@@ -55,8 +56,12 @@ class StartError(Exception):
 
 
 class JointStatePublisher(Node):
-    def __init__(self, description_file: str | None = None, node_name: str = NAME) -> None:
-        super().__init__(node_name, automatically_declare_parameters_from_overrides=True)
+    def __init__(
+        self, description_file: str | None = None, node_name: str = NAME, **node_options: Any
+    ) -> None:
+        super().__init__(
+            node_name, automatically_declare_parameters_from_overrides=True, **node_options
+        )
         for name, (default, kind) in PARAMETERS.items():
             # given on the command line: declared already, from the override
             with contextlib.suppress(ParameterAlreadyDeclaredException):

@@ -47,6 +47,8 @@ class Sliders:
         self.jsp = jsp
         self.loop = loop
         self.tabs: set[web.WebSocketResponse] = set()
+        self.outbox: dict[web.WebSocketResponse, dict[str, str]] = {}  # kind -> newest text
+        self.sending: set[web.WebSocketResponse] = set()
         jsp.set_robot_description_update_cb(lambda: self.from_ros(self.joints))
         jsp.set_source_update_cb(lambda: self.from_ros(self.positions))
 
@@ -76,11 +78,31 @@ class Sliders:
         free = self.jsp.free_joints
         return {"positions": {n: j.get("position", j["zero"]) for n, j in free.items()}}
 
-    def send_all(self, message: dict[str, Any], but: web.WebSocketResponse | None = None) -> None:
+    def send_all(self, message: dict[str, Any]) -> None:
+        """Offer every tab the message; a tab that reads slowly gets the newest of each kind
+        (a robot, positions), never a backlog: one waiting message per kind and tab."""
+        kind = "joints" if "joints" in message else "positions"
         text = json.dumps(message)
         for tab in list(self.tabs):
-            if tab is not but and not tab.closed:
-                self.loop.create_task(tab.send_str(text))
+            box = self.outbox.setdefault(tab, {})
+            if kind == "joints":
+                box.clear()  # a new robot: older positions are of the old one
+            box[kind] = text
+            if tab not in self.sending:
+                self.sending.add(tab)
+                self.loop.create_task(self._drain(tab, box))
+
+    async def _drain(self, tab: web.WebSocketResponse, box: dict[str, str]) -> None:
+        try:
+            while box and not tab.closed:
+                for kind in ("joints", "positions"):
+                    text = box.pop(kind, None)
+                    if text is not None:
+                        await tab.send_str(text)
+        except (ConnectionError, RuntimeError):
+            pass  # the tab went away: its handler forgets it
+        finally:
+            self.sending.discard(tab)
 
     def change(self, request: Any) -> tuple[dict[str, Any] | None, str | None]:
         """Apply one request of a page: (what every tab must hear, or an error line)."""
@@ -134,6 +156,7 @@ class Sliders:
                     self.send_all(changed)
         finally:
             self.tabs.discard(ws)
+            self.outbox.pop(ws, None)
         return ws
 
     async def close(self, _app: web.Application) -> None:

@@ -167,3 +167,46 @@ def test_a_window_opens_where_there_is_a_display(node_process, tmp_path):
     until(lambda: opened.exists() and opened.read_text(), "a browser asked to open the sliders")
     assert opened.read_text() == f"{link}\n"
     assert process.interrupt() in (0, 130)
+
+
+def test_a_slow_tab_gets_the_newest_positions_not_a_backlog(context):
+    """While a tab does not read, the positions offered to it wait as one message, the
+    newest: a thousand changes leave two sends (the one under way, then the newest)."""
+    import asyncio
+
+    from joint_state_publisher.joint_state_publisher import JointStatePublisher
+    from joint_state_publisher_gui.joint_state_publisher_gui import Sliders
+
+    class StuckTab:
+        """A WebSocket whose reader is slow: each send waits until released."""
+
+        closed = False
+
+        def __init__(self) -> None:
+            self.sent: list[str] = []
+            self.release = asyncio.Event()
+
+        async def send_str(self, text: str) -> None:
+            await self.release.wait()
+            self.sent.append(text)
+
+    async def offer() -> list[str]:
+        jsp = JointStatePublisher(str(FLEXIBLE), context=context)
+        try:
+            sliders = Sliders(jsp, asyncio.get_running_loop())
+            tab = StuckTab()
+            sliders.tabs.add(tab)
+            for step in range(1000):
+                sliders.change({"set": {"head_swivel": step / 1000}})
+                sliders.send_all(sliders.positions())
+                await asyncio.sleep(0)
+            tab.release.set()
+            while tab in sliders.sending:
+                await asyncio.sleep(0.01)
+            return tab.sent
+        finally:
+            jsp.destroy_node()
+
+    sent = asyncio.run(offer())
+    assert len(sent) == 2
+    assert json.loads(sent[-1])["positions"]["head_swivel"] == 0.999

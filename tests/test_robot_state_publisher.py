@@ -248,3 +248,88 @@ def test_robot_state_publisher_reads_a_file_argument_with_upstreams_warning(node
     watcher.until(lambda: watcher.description is not None, "/robot_description")
     assert watcher.description == first.read_text()
     assert rsp.interrupt() in (0, 130)
+
+
+def test_ignore_timestamp_takes_joint_states_without_a_stamp(node_process, executor, tmp_path):
+    """A JointState with no stamp is older than any publish interval: robot_state_publisher
+    ignores it, as ROS 2's does, unless ignore_timestamp is true."""
+    watcher = Watcher(executor)
+    path = params_file(tmp_path, "robot_state_publisher", robot_description=FLEXIBLE.read_text())
+    with open(path, "a") as params:
+        params.write("    ignore_timestamp: true\n")
+    ros2_run(
+        node_process,
+        "robot_state_publisher",
+        "robot_state_publisher",
+        "--ros-args",
+        "--params-file",
+        path,
+    ).wait_for_text("Robot initialized")
+    unstamped = JointState(name=["head_swivel"], position=[1.0])
+    spin_until(
+        executor,
+        lambda: watcher.joints.publish(unstamped) or "head" in watcher.moving,
+        what="the head's frame from an unstamped JointState",
+    )
+    assert watcher.moving["head"].header.stamp.sec == 0
+
+
+MIMIC = """<robot name="pincer">
+  <link name="base"/><link name="left"/><link name="right"/>
+  <joint name="left_finger" type="revolute"><parent link="base"/><child link="left"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <joint name="right_finger" type="revolute"><parent link="base"/><child link="right"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>
+    <mimic joint="left_finger" multiplier="-1" offset="0.1"/></joint>
+</robot>
+"""
+
+
+def test_source_list_and_mimic_joints(node_process, executor, tmp_path):
+    """joint_state_publisher takes a joint's value from a source_list topic and publishes the
+    joint that mimics it (multiplier, offset); robot_state_publisher turns both into /tf."""
+    watcher = Watcher(executor)
+    # robot_state_publisher first: joint_state_publisher, given no file, takes its robot from
+    # /robot_description once (a robot published later would start its joints over at zero).
+    rsp = ros2_run(
+        node_process,
+        "robot_state_publisher",
+        "robot_state_publisher",
+        "--ros-args",
+        "--params-file",
+        params_file(tmp_path, "robot_state_publisher", robot_description=MIMIC),
+    )
+    rsp.wait_for_text("Robot initialized")
+    ros2_run(
+        node_process,
+        "joint_state_publisher",
+        "joint_state_publisher",
+        "--ros-args",
+        "-p",
+        "source_list:=['/hand']",
+    )
+    hand = watcher.node.create_publisher(JointState, "/hand", 10)
+
+    def follows() -> bool:
+        hand.publish(JointState(name=["left_finger"], position=[0.5]))
+        if not watcher.joint_states:
+            return False
+        state = watcher.joint_states[-1]
+        return dict(zip(state.name, state.position, strict=True)).get("left_finger") == 0.5
+
+    spin_until(executor, follows, what="left_finger at 0.5 from /hand on /joint_states")
+    state = watcher.joint_states[-1]
+    assert list(state.name) == ["left_finger", "right_finger"]
+    assert state.position[1] == pytest.approx(-0.5 + 0.1)  # the mimic: -1 * 0.5 + 0.1
+
+    def turned(frame: str, angle: float) -> bool:
+        t = watcher.moving.get(frame)
+        return t is not None and close(
+            quaternion(t), (0, 0, math.sin(angle / 2), math.cos(angle / 2))
+        )
+
+    spin_until(
+        executor,
+        lambda: turned("left", 0.5) and turned("right", -0.4),
+        what="both fingers' frames on /tf",
+    )
