@@ -1,7 +1,7 @@
 """rviz2's 3D view (`rviz2`, `ros2 run rviz2 rviz2 -d FILE.rviz`, `rviz`): the real command
 against real nodes (tf broadcasters, a marker publisher, a URDF on /robot_description, a point
 cloud) in this test's process, read through the view's own WebSocket as its page reads it, and
-the page itself in headless Chromium (tests/test_rviz_browser.py); the guard (token, Host,
+the page itself in headless Chromium (TestInBrowser, below); the guard (token, Host,
 Origin) on every page, socket and mesh file; bad input in one line.
 """
 
