@@ -1,4 +1,4 @@
-"""Command-line figures (issue 39; ros2cmd/cli.py, ros2cmd/daemon.py): how fast `ros2` answers
+"""Command-line figures (issue 39; ros2cmd/cli.py, ros2cmd/daemon/): how fast `ros2` answers
 help, the daemon's answers and `ros2 run`, beside a bare Python and a bare `import rclpy` in the
 same run; and `ros2 node list` with and without the daemon at union.launch + 20 nodes (24
 nodes), beside the time discovery itself needs (a bare rclpy node waiting until it sees all

@@ -24,18 +24,15 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import rclpy
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType
-from rclpy.exceptions import NotInitializedException, ParameterAlreadyDeclaredException
-from rclpy.executors import ExternalShutdownException
+from rclpy.exceptions import ParameterAlreadyDeclaredException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile
 from sensor_msgs.msg import JointState
 from std_msgs.msg import String
 
 from ros_tutorials_common import bounded, urdf
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import init, user_args
+from ros_tutorials_common.ros.node_main import run_node, user_args
 
 NAME = "joint_state_publisher"
 PARAMETERS = {  # name: (default, type), as upstream declares them
@@ -290,23 +287,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-    init(argv)
-    node = None
     try:
-        node = JointStatePublisher(args[0] if args else None)
-        rclpy.spin(node)
+        return run_node(lambda: JointStatePublisher(args[0] if args else None), argv)
     except StartError:
         return 1
-    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
-        pass
-    except RuntimeError as error:
-        if not is_shutdown_race(error):
-            raise
-    finally:
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
 
 
 if __name__ == "__main__":

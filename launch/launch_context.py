@@ -24,8 +24,8 @@ _DETACHED_ANON_NAMES: dict[str, str] = {}  # a name's anonymous name outside a l
 
 @dataclass
 class _DetachedScope:
-    """The values of a LaunchContext made outside a launch (the fields of resolve.Scope that
-    LaunchContext reads)."""
+    """The values of a LaunchContext made outside a launch (the fields of launcher/scope.py's
+    Scope that LaunchContext reads)."""
 
     args: dict[str, str] = field(default_factory=dict)
     env: dict[str, str | None] = field(default_factory=dict)
@@ -152,7 +152,7 @@ class LaunchContext:
     configurations, the environment, launch_ros's namespace, remaps and parameters for the
     nodes that follow, and in an event handler the event (``locals``). Executing an entity
     hands its result to ``sink`` (launch_foundation.declarations.PlanSink), the one interface to the
-    launcher. ``scope`` holds the values (the front-ends' scope, launcher/resolve.py): only
+    launcher. ``scope`` holds the values (the front-ends' scope, launcher/scope.py): only
     this class reads it, through the properties below."""
 
     def __init__(

@@ -10,7 +10,7 @@ front-ends (``launch_xml``, ``launch_yaml``) and the launcher on top all stand o
 - ``substitutions``: the rules of ``$(...)`` text the layers share (``to_bool``, the expansion
   caps, ``run_command`` for ``$(command)`` and ``Command``).
 
-It imports nothing of the packages above it (``tests/test_import_graph.py`` checks that no
+It imports nothing of the packages above it (``tests/test_import_rules.py`` checks that no
 import runs up a floor), only ``ros_tutorials_common``'s plain modules and the standard library.
 """
 

@@ -19,11 +19,8 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
-import rclpy
 from geometry_msgs.msg import TransformStamped
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
-from rclpy.exceptions import NotInitializedException
-from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, qos_profile_sensor_data
@@ -32,8 +29,7 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import String
 
 from ros_tutorials_common import bounded, urdf
-from ros_tutorials_common.lesson_scripts import is_shutdown_race
-from ros_tutorials_common.ros.node_main import init, user_args
+from ros_tutorials_common.ros.node_main import run_node, user_args
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
 from tf2_ros.transform_broadcaster import TransformBroadcaster
 
@@ -196,23 +192,10 @@ class RobotStatePublisher(Node):
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)
-    init(argv)
-    node = None
     try:
-        node = RobotStatePublisher(args[0] if args else None)
-        rclpy.spin(node)
+        return run_node(lambda: RobotStatePublisher(args[0] if args else None), argv)
     except StartError:
         return 1
-    except (KeyboardInterrupt, ExternalShutdownException, NotInitializedException):
-        pass
-    except RuntimeError as error:
-        if not is_shutdown_race(error):
-            raise
-    finally:
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
 
 
 if __name__ == "__main__":

@@ -21,6 +21,14 @@ import math
 import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 
+from ros_tutorials_common.quaternion import (
+    Quaternion,
+    Vector,
+    multiply,
+    quaternion_from_rpy,
+    rotate,
+)
+
 MAX_URDF_BYTES = 8 * 1024 * 1024  # a robot description (real robots' are well under 1 MiB)
 MAX_ELEMENTS = 200_000
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
@@ -29,10 +37,6 @@ MOVING = ("revolute", "continuous", "prismatic")  # one position each, as KDL mo
 
 class UrdfError(ValueError):
     """A robot description refused: the text is one line saying why."""
-
-
-Vector = tuple[float, float, float]
-Quaternion = tuple[float, float, float, float]  # x, y, z, w
 
 
 @dataclass(frozen=True)
@@ -95,41 +99,6 @@ class Robot:
 
     def moving_joints(self) -> list[Joint]:
         return [joint for joint in self.joints.values() if joint.type in MOVING]
-
-
-def quaternion_from_rpy(roll: float, pitch: float, yaw: float) -> Quaternion:
-    """URDF's rpy: roll about x, then pitch about y, then yaw about z, all fixed axes."""
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (
-        sr * cp * cy - cr * sp * sy,
-        cr * sp * cy + sr * cp * sy,
-        cr * cp * sy - sr * sp * cy,
-        cr * cp * cy + sr * sp * sy,
-    )
-
-
-def multiply(a: Quaternion, b: Quaternion) -> Quaternion:
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    return (
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-        aw * bw - ax * bx - ay * by - az * bz,
-    )
-
-
-def rotate(q: Quaternion, v: Vector) -> Vector:
-    x, y, z, w = q
-    # v + 2w(u x v) + 2u x (u x v), u the vector part
-    cx, cy, cz = y * v[2] - z * v[1], z * v[0] - x * v[2], x * v[1] - y * v[0]
-    return (
-        v[0] + 2 * (w * cx + y * cz - z * cy),
-        v[1] + 2 * (w * cy + z * cx - x * cz),
-        v[2] + 2 * (w * cz + x * cy - y * cx),
-    )
 
 
 def _numbers(text: str | None, count: int, what: str, default: tuple[float, ...]) -> tuple:

@@ -1,5 +1,8 @@
 """rqt in the browser: the server side of rqt's plugins, at ``/rqt`` beside the viewer's page
 (static/rqt.html and rqt.js draw them; the viewer's panels are rqt_graph and rqt_console).
+(About 750 lines: six plugins of a few routes each, on the one node (``Ros``), the hub's tabs
+and the guard they share, with the form-to-message and parameter conversions they all read;
+the conversions, which need no node, are the part that could stand in a module of their own.)
 
     Service Caller   GET  /api/rqt/services             services and their types
                      GET  /api/rqt/interface?type=T     a message's (a request's) fields, a form

@@ -13,7 +13,6 @@ with ``Watcher.request()``, which a guard condition hands to the executor.
 
 from __future__ import annotations
 
-import queue
 import threading
 import time
 from collections import deque
@@ -31,6 +30,7 @@ from ros2cmd.qos import qos_for
 from ros2cmd.typenames import load_type
 from ros_tutorials_common.drawing.layout import layout, monospace_measure
 from ros_tutorials_common.drawing.render import to_svg
+from ros_tutorials_common.ros import ThreadRequests
 from ros_tutorials_web.frames import FrameWatch
 
 IMAGE_TYPE = "sensor_msgs/msg/CompressedImage"
@@ -143,8 +143,8 @@ class Watcher(Node):
         self._on_feed = on_feed
         self._graph = NodeGraph(self)
         self._shown: tuple | None = None  # the graph last drawn
-        self._requests: queue.SimpleQueue[Callable[[], None]] = queue.SimpleQueue()
-        self._wake = self.create_guard_condition(self._run_requests)
+        # request(change): change() run on the ROS thread (from any thread), then the graph
+        self.request = ThreadRequests(self, after=lambda: self.look(graph=False))
         self.viewers = 0  # browsers connected: picture topics are subscribed only then
         self.wanted: dict[str, int] = {}  # topic -> how many browsers watch it
         self.images: dict[str, Feed] = {}
@@ -155,20 +155,6 @@ class Watcher(Node):
         self.create_timer(GRAPH_PERIOD, self.look)
 
     # --- asked for by the event loop -------------------------------------------------------
-
-    def request(self, change: Callable[[], None]) -> None:
-        """Run change() on the ROS thread (from any thread)."""
-        self._requests.put(change)
-        self._wake.trigger()
-
-    def _run_requests(self) -> None:
-        while True:
-            try:
-                change = self._requests.get_nowait()
-            except queue.Empty:
-                break
-            change()
-        self.look(graph=False)
 
     def set_viewers(self, count: int) -> None:
         self.viewers = count

@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import json
 import math
-import queue
 import struct
 import time
 from collections.abc import Callable
@@ -35,6 +34,7 @@ from rclpy.qos import (
 )
 from rclpy.time import Time
 
+from ros_tutorials_common.ros import ThreadRequests
 from rviz2 import encode, robot_model
 from rviz2.config import BY_TYPE, Config, Display, display
 
@@ -111,8 +111,7 @@ class Scene(Node):
         self.topics: dict[str, str] = {}  # drawable topics in the graph -> type
         self.buffer = Buffer()
         self.listener = TransformListener(self.buffer, self, spin_thread=False)
-        self._requests: queue.SimpleQueue[Callable[[], None]] = queue.SimpleQueue()
-        self._wake = self.create_guard_condition(self._run_requests)
+        self.request = ThreadRequests(self)  # from the web server's thread
         self._config_changed = True
         self._last_tf = ""
         self.viewers = 0  # pages open (set_viewers)
@@ -121,19 +120,6 @@ class Scene(Node):
         self.create_timer(1 / RATE, self.tick)
         self.create_timer(GRAPH_PERIOD, self.look_at_graph)
         self.look_at_graph()
-
-    # --- from the web server's thread
-    def request(self, change: Callable[[], None]) -> None:
-        self._requests.put(change)
-        self._wake.trigger()
-
-    def _run_requests(self) -> None:
-        while True:
-            try:
-                change = self._requests.get_nowait()
-            except queue.Empty:
-                return
-            change()
 
     # --- the displays
     def add(self, item: Display) -> DisplayState:

@@ -40,19 +40,26 @@ def browser_paths() -> tuple[str, str]:
     return chromium, driver
 
 
-@contextlib.contextmanager
-def chromium(width: int = 1400, height: int = 1000) -> Iterator[Any]:
-    """A headless Chromium window of this size, closed afterwards."""
+def open_chromium(width: int = 1400, height: int = 1000, *flags: str) -> Any:
+    """A headless Chromium window of this size (FLAGS and these ``flags``); the caller quits
+    it."""
     path, driver = browser_paths()
     webdriver = pytest.importorskip("selenium.webdriver")
     from selenium.webdriver.chrome.service import Service
 
     options = webdriver.ChromeOptions()
     options.binary_location = path
-    for flag in (*FLAGS, f"--window-size={width},{height}"):
+    for flag in (*FLAGS, f"--window-size={width},{height}", *flags):
         options.add_argument(flag)
     browser = webdriver.Chrome(options=options, service=Service(driver))
     browser.set_script_timeout(TIMEOUT)
+    return browser
+
+
+@contextlib.contextmanager
+def chromium(width: int = 1400, height: int = 1000) -> Iterator[Any]:
+    """A headless Chromium window of this size, closed afterwards."""
+    browser = open_chromium(width, height)
     try:
         yield browser
     finally:

@@ -1,4 +1,4 @@
-"""A listing knows who runs on this machine (rostool/local_participants.py).
+"""A listing knows who runs on this machine (ros2cmd/local_participants.py).
 
 The two facts it rests on, checked on the real Fast DDS: each participant holds a discovery
 port of the domain's (found through /proc with its process), and its GUID prefix carries its

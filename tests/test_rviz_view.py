@@ -1,7 +1,7 @@
 """rviz2's 3D view (`rviz2`, `ros2 run rviz2 rviz2 -d FILE.rviz`, `rviz`): the real command
 against real nodes (tf broadcasters, a marker publisher, a URDF on /robot_description, a point
 cloud) in this test's process, read through the view's own WebSocket as its page reads it, and
-the page itself in headless Chromium (tests/test_rviz_browser.py); the guard (token, Host,
+the page itself in headless Chromium (TestInBrowser, below); the guard (token, Host,
 Origin) on every page, socket and mesh file; bad input in one line.
 """
 
@@ -481,37 +481,22 @@ class TestBadInput:
 def browser_for(tmp_path: Path) -> Any:
     """Headless Chromium (tests/browser.py's, skipped with its reason where there is none)
     with WebGL drawn in software: there is no GPU here."""
-    from browser import FLAGS, browser_paths
+    from browser import open_chromium
 
-    chromium, driver = browser_paths()
-    webdriver = pytest.importorskip("selenium.webdriver")
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = chromium
-    for argument in (
-        *FLAGS,
+    return open_chromium(
+        1400,
+        900,
         "--use-angle=swiftshader",
         "--enable-unsafe-swiftshader",
-        "--window-size=1400,900",
         f"--user-data-dir={tmp_path / 'chromium'}",
-    ):
-        options.add_argument(argument)
-    browser = webdriver.Chrome(options=options, service=Service(driver))
-    browser.set_script_timeout(TIMEOUT)
-    return browser
+    )
 
 
 def page_until(browser: Any, script: str, what: str, timeout: float = TIMEOUT) -> Any:
     """Run SCRIPT in the page until it returns something truthy; return that."""
-    deadline = time.monotonic() + timeout
-    while True:
-        result = browser.execute_script(script)
-        if result:
-            return result
-        if time.monotonic() > deadline:
-            pytest.fail(f"{what}: not shown by the page within {timeout:.0f} s (last: {result!r})")
-        time.sleep(0.2)
+    from browser import until
+
+    return until(lambda: browser.execute_script(script), what, timeout)
 
 
 class TestInBrowser:

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from ros_tutorials_common import urdf
+from ros_tutorials_common import quaternion, urdf
 
 MODELS = Path(__file__).resolve().parents[1] / "urdf_tutorial" / "urdf"
 XACRO = str(Path(sys.executable).parent / "xacro")
@@ -71,13 +71,17 @@ def test_joint_poses_are_the_origin_then_the_motion():
 
 
 def test_rpy_is_fixed_axes_roll_pitch_yaw():
-    q = urdf.quaternion_from_rpy(0.1, 0.2, 0.3)
-    expected = urdf.multiply(
-        urdf.multiply(urdf.quaternion_from_rpy(0, 0, 0.3), urdf.quaternion_from_rpy(0, 0.2, 0)),
-        urdf.quaternion_from_rpy(0.1, 0, 0),
+    q = quaternion.quaternion_from_rpy(0.1, 0.2, 0.3)
+    expected = quaternion.multiply(
+        quaternion.multiply(
+            quaternion.quaternion_from_rpy(0, 0, 0.3), quaternion.quaternion_from_rpy(0, 0.2, 0)
+        ),
+        quaternion.quaternion_from_rpy(0.1, 0, 0),
     )
     assert close(q, expected)
-    assert close(urdf.rotate(urdf.quaternion_from_rpy(0, 0, math.pi / 2), (1, 0, 0)), (0, 1, 0))
+    assert close(
+        quaternion.rotate(quaternion.quaternion_from_rpy(0, 0, math.pi / 2), (1, 0, 0)), (0, 1, 0)
+    )
 
 
 LINK = '<link name="{}"/>'

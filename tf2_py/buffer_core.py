@@ -30,6 +30,7 @@ from builtin_interfaces.msg import Time as TimeMessage
 from geometry_msgs.msg import TransformStamped
 from rclpy.time import Time
 
+from ros_tutorials_common.quaternion import multiply, rotate
 from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER
 from tf2_py.exceptions import (
     ConnectivityException,
@@ -49,8 +50,6 @@ from tf2_py.time_cache import (
     Vector,
     display_time,
     inverse,
-    multiply,
-    rotate,
 )
 
 # A transform as _parsed gives it: parent, child, stamp (ns), translation, rotation.

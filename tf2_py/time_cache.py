@@ -7,8 +7,8 @@ interpolated linearly and rotation by slerp; past the newest or before the oldes
 fails with tf2's extrapolation messages. A StaticCache holds one transform, valid at any time.
 
 Times are integer nanoseconds; 0 means "the latest". Rotations are unit quaternions as tuples
-(x, y, z, w); the quaternion arithmetic here is plain Python floats, which for 3- and 4-vectors
-is faster than numpy's per-call overhead.
+(x, y, z, w), in plain Python floats (ros_tutorials_common/quaternion.py has their product and
+rotation).
 """
 
 from __future__ import annotations
@@ -16,10 +16,9 @@ from __future__ import annotations
 import math
 from bisect import bisect_right
 
+from ros_tutorials_common.quaternion import Quaternion, Vector
 from tf2_py.exceptions import ExtrapolationException, TransformException
 
-Vector = tuple[float, float, float]
-Quaternion = tuple[float, float, float, float]
 # (parent frame number, translation, rotation): one transform of a frame to its parent.
 Entry = tuple[int, Vector, Quaternion]
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
@@ -31,31 +30,6 @@ def display_time(nanoseconds: int) -> str:
     """A time as tf2 prints one in its messages: seconds with 6 decimals."""
     seconds, rest = divmod(nanoseconds, NANOSECONDS)
     return f"{seconds + rest * 1e-9:.6f}"
-
-
-def multiply(a: Quaternion, b: Quaternion) -> Quaternion:
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    return (
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-        aw * bw - ax * bx - ay * by - az * bz,
-    )
-
-
-def rotate(q: Quaternion, v: Vector) -> Vector:
-    """v rotated by the unit quaternion q (v + 2w(u x v) + 2u x (u x v), u = q's vector)."""
-    x, y, z, w = q
-    vx, vy, vz = v
-    cx = 2.0 * (y * vz - z * vy)
-    cy = 2.0 * (z * vx - x * vz)
-    cz = 2.0 * (x * vy - y * vx)
-    return (
-        vx + w * cx + (y * cz - z * cy),
-        vy + w * cy + (z * cx - x * cz),
-        vz + w * cz + (x * cy - y * cx),
-    )
 
 
 def inverse(q: Quaternion) -> Quaternion:

@@ -13,7 +13,6 @@ parameters (translation.x ..., rotation.w, frame_id, child_frame_id) are read-on
 
 from __future__ import annotations
 
-import math
 import random
 import re
 import string
@@ -25,6 +24,7 @@ from geometry_msgs.msg import TransformStamped
 from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 
+from ros_tutorials_common.quaternion import quaternion_from_rpy
 from ros_tutorials_common.ros import init, node_stopped, user_args
 from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
@@ -82,19 +82,6 @@ def _number(option: str, text: str) -> float:
         raise ArgumentError(f"Failed to parse {option} argument as float")
     found = match.group().strip()
     return float(int(found, 16)) if "x" in found.lower() and "n" not in found else float(found)
-
-
-def quaternion_from_rpy(roll: float, pitch: float, yaw: float) -> tuple[float, ...]:
-    """(x, y, z, w) of a rotation by roll about x, then pitch about y, then yaw about z."""
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (
-        sr * cp * cy - cr * sp * sy,
-        cr * sp * cy + sr * cp * sy,
-        cr * cp * sy - sr * sp * cy,
-        cr * cp * cy + sr * sp * sy,
-    )
 
 
 def parse(args: Sequence[str]) -> tuple[bool, TransformStamped]:

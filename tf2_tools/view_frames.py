@@ -2,9 +2,9 @@
 tree as frames_YYYY-MM-DD_HH.MM.SS.gv (graphviz's DOT, as tf2_tools writes it) and a picture.
 
 ROS 2's view_frames has graphviz's `dot` program draw the PDF. No `dot` is assumed here: the
-picture is an SVG (frames_....svg), laid out by rqt_graph's own layout (ros2cmd/graph_view),
-each frame an ellipse, each transform a box between parent and child saying who broadcasts it
-and how often. The log lines are view_frames' own.
+picture is an SVG (frames_....svg), laid out by rqt_graph's own layout
+(ros_tutorials_common/drawing), each frame an ellipse, each transform a box between parent
+and child saying who broadcasts it and how often. The log lines are view_frames' own.
 
     ros2 run tf2_tools view_frames [-t WAIT_TIME] [-o NAME]    NAME.gv and NAME.svg
 """

@@ -2,7 +2,7 @@
 
 It wrote a .pth file that blocked SIGINT at every start of Python, and rewrote this project's
 console scripts to start through `env -S --block-signal=INT`. Both are gone (Ctrl-C is handled
-by the tools themselves: ros_tutorials_common/ctrl_c.py); this removes the file and gives the
+by the tools themselves: ros_tutorials_common/shutdown.py); this removes the file and gives the
 scripts back pip's plain "#!/path/to/python" line. Run as `python -S` (the old .pth file,
 which now fails, is not read): python -S tools/remove_ctrl_c_hold.py VENV
 """

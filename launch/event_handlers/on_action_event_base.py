@@ -104,7 +104,7 @@ def run_handler_function(
     results = result if isinstance(result, (list, tuple)) else [result] if result else []
     for action in results:
         step = action.step_when_returned(when, context) if isinstance(action, Action) else None
-        if step is not None:  # LogInfo, EmitEvent (launch/actions.py)
+        if step is not None:  # LogInfo, EmitEvent (launch/actions/)
             steps.append(step)
         else:
             steps.append(Step(when, "log", f"{handler.where}: an event handler's function "

@@ -1,18 +1,7 @@
-"""What `ros2 interface`'s sub-verbs and ROS 1's rosmsg/rossrv share (ROS 2's ros2interface).
-
-    ros2 interface list [-m|-s|-a]          Messages: / Services: / Actions:, types indented
-    ros2 interface show geometry_msgs/msg/Twist [--all-comments | --no-comments]
-    ros2 interface package turtlesim        ros2 interface packages [-m|-s|-a]
-    ros2 interface proto geometry_msgs/msg/Twist     the YAML a `topic pub` takes, quoted
-
-These commands need no running graph: they read the ament resource index and the
-definition files each interface package installs under share/<package>/.
-`show` prints the file as it is, and after each field of a message type that type's
-definition, indented by a tab, without its comments (unless --all-comments): what a
-learner can set. Which lines count as comments is decided as rosidl's parser does it,
-so the output is ros2interface's line for line (quirks included: a lone `#` or an indented
-comment is not a comment to it, and stays).
-"""
+"""What `ros2 interface`'s sub-verbs (verb/) and ROS 1's rosmsg/rossrv (ros1/rosmsg.py) share
+(ROS 2's ros2interface): the types the ament index lists and their definition files, and the
+lines `show` prints after each field, with comments as rosidl's parser decides them (the
+package's docstring, ros2cmd/interface/__init__.py, says what each sub-verb prints)."""
 
 from __future__ import annotations
 

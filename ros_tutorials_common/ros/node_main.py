@@ -19,11 +19,13 @@ already called", and the node ends killed by SIGINT (status 130) instead of exit
 
 How a node of the toolkit stops is ros_tutorials_common/shutdown.py's design; its rclpy half is
 here: ``NODE_STOPPED`` and ``node_stopped`` (what ends a node's spin normally), ``run_node``,
-and ``SpinThread`` (a node spun in a thread of its own, stopped before its executor).
+``SpinThread`` (a node spun in a thread of its own, stopped before its executor), and
+``ThreadRequests`` (work handed from another thread to the thread that spins a node).
 """
 
 from __future__ import annotations
 
+import queue
 import signal
 import sys
 import threading
@@ -207,3 +209,28 @@ def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -
             node.destroy_node()
         rclpy.try_shutdown()
     return 0
+
+
+class ThreadRequests:
+    """Functions handed from any thread (a web server's event loop) to the thread that spins
+    NODE, run there in the order given: ``requests(change)`` queues one and triggers a guard
+    condition of NODE's, whose callback runs all that are queued, then ``after()``."""
+
+    def __init__(self, node: Node, after: Callable[[], None] | None = None) -> None:
+        self._queue: queue.SimpleQueue[Callable[[], None]] = queue.SimpleQueue()
+        self._after = after
+        self._wake = node.create_guard_condition(self._run)
+
+    def __call__(self, change: Callable[[], None]) -> None:
+        self._queue.put(change)
+        self._wake.trigger()
+
+    def _run(self) -> None:
+        while True:
+            try:
+                change = self._queue.get_nowait()
+            except queue.Empty:
+                break
+            change()
+        if self._after is not None:
+            self._after()
