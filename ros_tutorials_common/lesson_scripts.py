@@ -24,6 +24,7 @@ import importlib
 import runpy
 import signal
 import sys
+import threading
 from collections.abc import Callable
 from typing import Any
 
@@ -92,7 +93,8 @@ def start(main: Callable[[], Any]) -> Any:
         return 0
     finally:
         sys.unraisablehook = previous
-        if shutdown.counts_presses():  # for a caller that goes on (a test)
+        main_thread = threading.current_thread() is threading.main_thread()
+        if main_thread and shutdown.counts_presses():  # for a caller that goes on (a test)
             signal.signal(signal.SIGINT, previous_handler)
 
 

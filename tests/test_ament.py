@@ -87,7 +87,7 @@ def test_launch_file_substitutions_answer_from_the_index(tmp_path):
     include.write_text(include.read_text().replace(" $(find-pkg-share my_package/x)", ""))
     *turtles, talker = make_plan(resolve(include, {}, Options()))
     assert {spec.label for spec in turtles} >= {"turtlesim1/sim", "turtlesim2/sim"}
-    assert talker.command[3:5] == [sys.prefix, str(VENV_SHARE / "turtlesim")]
+    assert talker.command[4:6] == [sys.prefix, str(VENV_SHARE / "turtlesim")]
     assert (share / "launch" / "multisim.launch.xml").is_file()
 
     ros1 = tmp_path / "top.launch"
@@ -97,7 +97,7 @@ def test_launch_file_substitutions_answer_from_the_index(tmp_path):
     )
     (talker,) = make_plan(resolve(ros1, {}, Options()))
     expected = [str(ROOT / "ros_tutorials_parameter"), str(ROOT / "ros_tutorials_topic")]
-    assert talker.command[3:6] == [*expected, str(VENV_SHARE / "std_msgs")]
+    assert talker.command[4:7] == [*expected, str(VENV_SHARE / "std_msgs")]
 
 
 def make_overlay(prefix: Path) -> None:

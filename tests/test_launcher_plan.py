@@ -111,7 +111,7 @@ def test_node_name_namespace_remaps_and_params_become_ros_arguments(tmp_path):
     body = '<remap from="ros_tutorial_msg" to="other"/><param name="rate" value="5"/>'
     spec = plan(tmp_path, ros1(f'<group ns="robot">{node1(body=body)}</group>'))[0]
     assert spec.label == "robot/pub" and spec.node == "/robot/pub"
-    assert spec.command[3:] == [
+    assert spec.command[4:] == [
         "--ros-args", "-r", "__node:=pub", "-r", "__ns:=/robot",
         "-r", "ros_tutorial_msg:=other", "-p", "rate:=5",
     ]  # fmt: skip
@@ -281,8 +281,8 @@ def test_substitutions_find_env_optenv_anon_dirname(tmp_path, monkeypatch):
     )  # fmt: skip
     first, second, third, fourth = plan(tmp_path, xml)
     assert first.label == "from_env" and second.label == "fallback"
-    assert first.command[3:5] == [str(TOPIC_LAUNCH.parent), str(tmp_path)]
-    assert third.label.startswith("pub_") and fourth.command[3] == third.label  # same anon name
+    assert first.command[4:6] == [str(TOPIC_LAUNCH.parent), str(tmp_path)]
+    assert third.label.startswith("pub_") and fourth.command[4] == third.label  # same anon name
     unset = ros1(node1("$(env LAUNCH_TEST_UNSET)"))
     assert "environment variable LAUNCH_TEST_UNSET is not set" in error(tmp_path, unset)
     unknown = ros1(node1("$(nope x)"))
@@ -476,7 +476,7 @@ def test_ros2_logic_and_env_substitutions(tmp_path, monkeypatch):
     )
     n1, fallback, n3 = plan(tmp_path, xml, "t.launch.xml")
     assert (n1.label, fallback.label) == ("n1", "fallback")
-    assert n3.command[3:5] == [sys.prefix, "two words"]  # the install prefix, as ament's
+    assert n3.command[4:6] == [sys.prefix, "two words"]  # the install prefix, as ament's
 
 
 def test_ros2_command_substitution_is_opt_in(tmp_path):
