@@ -169,3 +169,20 @@ def test_output_as_a_dict_of_streams_and_the_arguments_import_place(tmp_path):
     )
     specs = make_plan(resolve(path, {}, Options()))
     assert [(spec.label, spec.output) for spec in specs] == [("a", "screen"), ("b", "both")]
+
+
+def test_executable_description_performs_its_parts(monkeypatch):
+    from launch import LaunchContext
+    from launch.descriptions import Executable
+    from launch.substitutions import EnvironmentVariable, LaunchConfiguration
+
+    monkeypatch.setenv("LAUNCH_API_DIR", "/tmp")
+    context = LaunchContext()
+    context.launch_configurations["who"] = "me"
+    exe = Executable(
+        cmd=["echo", LaunchConfiguration("who")], prefix="nice -n 5",
+        cwd=EnvironmentVariable("LAUNCH_API_DIR"), additional_env={"X": "1"},
+    )  # fmt: skip
+    exe.prepare(context, None)
+    assert exe.final_cmd == ["nice", "-n", "5", "echo", "me"]
+    assert (exe.final_name, exe.final_cwd, exe.final_env["X"]) == ("echo", "/tmp", "1")
