@@ -5,6 +5,7 @@ imports it; see launcher/python_files.py."""
 from launch import (
     actions,
     conditions,
+    descriptions,
     event_handlers,
     events,
     frontend,
@@ -35,8 +36,8 @@ __all__ = [
     "LaunchDescription", "LaunchDescriptionEntity", "LaunchDescriptionSource", "LaunchService",
     "SomeEntitiesType", "SomeEntitiesType_types_tuple", "SomeSubstitutionsType",
     "SomeSubstitutionsType_types_tuple", "Substitution", "actions", "conditions",
-    "event_handlers", "events", "frontend", "launch_description_sources", "logging",
-    "substitutions",
+    "descriptions", "event_handlers", "events", "frontend", "launch_description_sources",
+    "logging", "substitutions",
 ]  # fmt: skip
 
 __getattr__ = module_getattr("launch", lambda: __all__)

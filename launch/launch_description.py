@@ -6,6 +6,7 @@ from collections.abc import Iterable
 from typing import Any
 
 from launch._base import LaunchDescriptionEntity
+from launch.actions import DeclareLaunchArgument  # also importable from here, as upstream
 from launch.launch_context import LaunchContext
 
 
@@ -47,8 +48,6 @@ class LaunchDescription(LaunchDescriptionEntity):
 
     def get_launch_arguments(self) -> list[Any]:
         """The DeclareLaunchArgument actions, also in groups and timers (not in includes)."""
-        from launch.actions import DeclareLaunchArgument
-
         found, stack = [], list(reversed(self.entities))
         while stack:
             entity = stack.pop()

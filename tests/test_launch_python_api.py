@@ -149,3 +149,40 @@ def test_launch_service_says_a_bad_description_in_one_line(tmp_path, capsys):
     assert error.startswith("error: ") and "launch configuration 'x' is not set" in error
     with pytest.raises(Exception, match="takes a LaunchDescription"):
         service.include_launch_description("not a description")
+
+
+def test_output_as_a_dict_of_streams_and_the_arguments_import_place(tmp_path):
+    # ros2_control's test nodes: output={"stdout": "screen", "stderr": "screen"}
+    from launcher.plan import make_plan
+
+    path = tmp_path / "t_launch.py"
+    path.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.launch_description import DeclareLaunchArgument\n"
+        "from launch.actions import ExecuteProcess\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([DeclareLaunchArgument('x', default_value='1'),\n"
+        "        ExecuteProcess(cmd=['true'], name='a', output={'stdout': 'screen',"
+        " 'stderr': 'screen'}),\n"
+        "        ExecuteProcess(cmd=['true'], name='b', output={'stdout': 'log',"
+        " 'stderr': 'screen'})])\n"
+    )
+    specs = make_plan(resolve(path, {}, Options()))
+    assert [(spec.label, spec.output) for spec in specs] == [("a", "screen"), ("b", "both")]
+
+
+def test_executable_description_performs_its_parts(monkeypatch):
+    from launch import LaunchContext
+    from launch.descriptions import Executable
+    from launch.substitutions import EnvironmentVariable, LaunchConfiguration
+
+    monkeypatch.setenv("LAUNCH_API_DIR", "/tmp")
+    context = LaunchContext()
+    context.launch_configurations["who"] = "me"
+    exe = Executable(
+        cmd=["echo", LaunchConfiguration("who")], prefix="nice -n 5",
+        cwd=EnvironmentVariable("LAUNCH_API_DIR"), additional_env={"X": "1"},
+    )  # fmt: skip
+    exe.prepare(context, None)
+    assert exe.final_cmd == ["nice", "-n", "5", "echo", "me"]
+    assert (exe.final_name, exe.final_cwd, exe.final_env["X"]) == ("echo", "/tmp", "1")

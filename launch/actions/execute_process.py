@@ -163,7 +163,7 @@ class ExecuteProcess(Action):
                 continue  # a front-end's <env if=...>
             env[perform(key, context)] = perform(value, context)
         decl.env = env
-        decl.output = perform(self.output, context) or "log"
+        decl.output = output_mode(self.output, context)
         if decl.output not in ("screen", "log", "both"):
             raise self.error(f"output={decl.output!r}; use one of screen, log, both")
         decl.respawn = flag(self.respawn, context)
@@ -209,3 +209,14 @@ class ExecuteProcess(Action):
         others = [a for a in normalize_actions(self.on_exit) if not isinstance(a, EmitEvent)]
         if others:  # on_exit=[...] besides Shutdown: an OnProcessExit handler of its own
             OnProcessExit(target_action=self, on_exit=others).register(context)
+
+
+def output_mode(output: Any, context: LaunchContext) -> str:
+    """ExecuteProcess's output: screen, log or both; as a dict of streams (``{"stdout":
+    "screen", "stderr": "log"}``, as ros2 launch takes it) what its values add up to."""
+    if not isinstance(output, dict):
+        return perform(output, context) or "log"
+    words = {perform(value, context) for value in output.values()}
+    screen = bool(words & {"screen", "both"})
+    log = bool(words & {"log", "both", "own_log"})
+    return "both" if screen and log else "screen" if screen else "log"
