@@ -7,10 +7,12 @@ where there is none; each serves until Ctrl-C, as rqt's window stays until close
     rqt_service_caller             Service Caller
     rqt_publisher                  Message Publisher
     rqt_reconfigure                Parameters (dynamic reconfigure)
-    rqt_logger_level               Logger levels; with NODE [LEVEL], the terminal form
+    rqt_logger_level               Logger levels; with NODE [LEVEL], or down a pipe, the
+                                   terminal form
     rqt_plot [TOPIC/FIELD ...]     Plot, of these fields
     rqt_bag [BAG]                  Bag, this bag opened
-    rqt_console                    the viewer's log panel; with filters, the terminal form
+    rqt_console                    the viewer's log panel; with filters, or down a pipe, the
+                                   terminal form
     rqt_graph                      a window where there is a display (its own); else the
                                    viewer's graph, or DOT when stdout is not a terminal;
                                    -o FILE writes a picture (ros2cmd.ros1.rqt)
@@ -28,6 +30,7 @@ import webbrowser
 from collections.abc import Callable, Sequence
 
 from ros2cmd.ros1 import rqt as terminal
+from ros_tutorials_common import completion
 from ros_tutorials_common.ros import user_args
 from ros_tutorials_web import guard, viewer
 
@@ -62,6 +65,7 @@ def _browser(
         parser = _parser(prog, description)
         if more is not None:
             more(parser)
+        completion.answer(parser)  # the shell asking for TAB's completions: answered, ends here
         args = parser.parse_args(user_args(full))
         path = "/rqt#" + fragment + (extra(args) if extra is not None else "")
         return viewer.serve(full, args, path, f"rqt_gui_py_node_{os.getpid()}", open_window)
@@ -118,17 +122,24 @@ def _given(argv: Sequence[str] | None) -> list[str]:
     return user_args(sys.argv if argv is None else ["", *argv])
 
 
-def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
+def _terminal_form(argv: Sequence[str] | None) -> bool:
+    """The terminal form: arguments beyond where to serve, a TAB completion, or a bare
+    command whose output goes down a pipe or into a file (`rqt_console | grep wall`)."""
     given = _given(argv)
-    if given and not _only_server_options(given):
-        return terminal.rqt_logger_level(argv)  # NODE [LEVEL]: the terminal form
+    if given:
+        return not _only_server_options(given)
+    return completion.requested() or not sys.stdout.isatty()
+
+
+def rqt_logger_level(argv: Sequence[str] | None = None) -> int:
+    if _terminal_form(argv):
+        return terminal.rqt_logger_level(argv)  # every node's level, or NODE [LEVEL]
     return _logger_levels(argv)
 
 
 def rqt_console(argv: Sequence[str] | None = None) -> int:
-    given = _given(argv)
-    if given and not _only_server_options(given):
-        return terminal.rqt_console(argv)  # filters: the lines in the terminal
+    if _terminal_form(argv):
+        return terminal.rqt_console(argv)  # the lines in the terminal, filtered if asked
     return _console_view(argv)
 
 

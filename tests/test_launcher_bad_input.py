@@ -151,22 +151,39 @@ def test_a_program_that_is_not_executable_is_named_so(tmp_path):
     assert run_launcher(str(path), "--print").returncode == 0
 
 
+def _params_file_launch(tmp_path: Path, content: str) -> Path:
+    (tmp_path / "p.yaml").write_text(content)
+    path = tmp_path / "test.launch.xml"
+    node = '<node pkg="ros_tutorials_topic" exec="topic_publisher"><param from="p.yaml"/></node>'
+    path.write_text(f"<launch>\n{node}\n</launch>\n")
+    return path
+
+
+def test_a_params_file_that_is_no_params_file_is_refused_before_anything_starts(tmp_path):
+    path = _params_file_launch(tmp_path, "7:\n  ros__parameters:\n    a: 1\n")
+    line = refused(path)
+    assert f"{path}:2:" in line and "is not a string" in line
+
+
 @pytest.mark.parametrize(
     ("content", "expected"),
     [
         ("/**:\n  ros__parameters:\n    1: 2\n", "is not a string"),
         ("/**:\n  ros__parameters:\n    big: 99999999999999999999\n", "does not fit"),
         ("/**:\n  ros__parameters:\n    when: 2024-01-01\n", "is a YAML date"),
-        ("7:\n  ros__parameters:\n    a: 1\n", "is not a string"),
     ],
 )
-def test_ros2_params_files_are_checked_before_anything_starts(tmp_path, content, expected):
-    (tmp_path / "p.yaml").write_text(content)
-    path = tmp_path / "test.launch.xml"
-    node = '<node pkg="ros_tutorials_topic" exec="topic_publisher"><param from="p.yaml"/></node>'
-    path.write_text(f"<launch>\n{node}\n</launch>\n")
-    line = refused(path)
-    assert f"{path}:2:" in line and expected in line
+def test_a_value_rcl_will_refuse_in_a_params_file_is_warned_before_anything_starts(
+    tmp_path, content, expected
+):
+    """ros2 launch passes a parameters file to the node as its path, and rcl refuses what it
+    cannot read when the node starts; the launcher says so once, before anything starts."""
+    path = _params_file_launch(tmp_path, content)
+    done = run_launcher(str(path), "--print")
+    assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
+    warned = [line for line in done.stderr.splitlines() if f"{path}:2:" in line]
+    assert len(warned) == 1 and expected in warned[0], done.stderr
+    assert "where rcl will refuse it" in warned[0]
 
 
 def test_integers_beyond_int64_in_params_are_refused(tmp_path):

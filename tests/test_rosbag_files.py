@@ -735,7 +735,7 @@ def test_a_bag_declaring_100000_channels_is_refused_in_one_line(ros_domain, tmp_
 
 
 def test_a_channel_id_declared_twice_as_two_topics_is_damage(tmp_path, monkeypatch):
-    from ros2cmd.bag import mcap_file
+    from rosbag2 import mcap_file
 
     monkeypatch.setattr(mcap_file, "MAX_CHANNELS", 70_000)
     path = tmp_path / "twice.mcap"

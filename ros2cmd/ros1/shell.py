@@ -22,7 +22,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from ros_tutorials_common import ament, completion, packages
+from ros_tutorials_common import ament, completion, lesson_scripts, packages
 from ros_tutorials_common.shutdown import program_main
 
 
@@ -130,7 +130,9 @@ def _executable_source(package: str, executable: str) -> Path | None:
         return None
     if line[1:2] != ["-m"]:
         return None
-    package_name, _, module = line[2].rpartition(".")
+    # A lesson starts as `python -m ros_tutorials_common.lesson_scripts PKG.MODULE ...`.
+    started = line[3] if line[2] == lesson_scripts.THIS and len(line) > 3 else line[2]
+    package_name, _, module = started.rpartition(".")
     folder = packages.package_dirs().get(package_name)
     source = folder / f"{module}.py" if folder else None
     return source if source is not None and source.is_file() else None
