@@ -47,7 +47,9 @@ def test_what_answered_is_printed_and_the_silent_node_named(stuck_and_talker, co
     ], result.stderr
 
 
-def test_rqt_logger_level_says_when_no_node_serves_logger_levels(own_domain):
+def test_rqt_logger_level_says_when_no_node_runs(own_domain):
+    """Nodes that serve no logger levels are listed with why (tests/test_console.py); with
+    no node at all, one line."""
     result = run("rqt_logger_level")
     assert result.returncode == 1 and not result.stdout
-    assert result.stderr.startswith("error: no running node serves get_logger_levels")
+    assert result.stderr == "error: no running node (rqt_logger_level lists the running nodes)\n"
