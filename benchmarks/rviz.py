@@ -14,17 +14,13 @@ Chromium draws WebGL in software (SwiftShader): there is no GPU here.
 
 from __future__ import annotations
 
-import asyncio
-import json
 import re
 import shutil
-import struct
 import tempfile
 import threading
 import time
 from pathlib import Path
 
-import aiohttp
 import rclpy
 from geometry_msgs.msg import TransformStamped
 from rclpy.qos import DurabilityPolicy, QoSProfile
@@ -33,6 +29,7 @@ from std_msgs.msg import String
 
 from benchmarks.common import Row, fmt_ms, p50, p99, python, start, stop, wait_for_lines
 from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
+from benchmarks.websocket import FrameReader
 
 POINTS = 10_000
 CLOUD_HZ = 10.0
@@ -112,35 +109,12 @@ def robot_publishers(bench: Bench) -> None:
     )
 
 
-class Socket(threading.Thread):
+class Socket(FrameReader):
     """A bare WebSocket client (no drawing): each cloud frame's latency at arrival."""
 
-    def __init__(self, url: str) -> None:
-        super().__init__(daemon=True)
-        self.url = url
-        self.latencies: list[float] = []
-        self.stop = threading.Event()
-        self.error: BaseException | None = None
-
-    def run(self) -> None:
-        try:
-            asyncio.run(self._read())
-        except BaseException as error:
-            self.error = error
-
-    async def _read(self) -> None:
-        async with aiohttp.ClientSession() as client, client.ws_connect(self.url) as ws:
-            while not self.stop.is_set():
-                try:
-                    message = await ws.receive(timeout=0.2)
-                except asyncio.TimeoutError:
-                    continue
-                if message.type != aiohttp.WSMsgType.BINARY:
-                    continue
-                (length,) = struct.unpack("!I", message.data[:4])
-                header = json.loads(message.data[4 : 4 + length])
-                if header.get("kind") == "PointCloud2":
-                    self.latencies.append(time.time() - header["stamp"])
+    def on_frame(self, header: dict, now: float) -> None:
+        if header.get("kind") == "PointCloud2":
+            self.latencies.append(now - header["stamp"])
 
 
 def _browser(folder: str):

@@ -21,7 +21,6 @@ import json
 import os
 import re
 import socket
-import struct
 import threading
 import time
 
@@ -31,6 +30,7 @@ from turtlesim.msg import Pose
 
 from benchmarks.common import Row, fmt_ms, p50, p99, python, smoke, start, stop, wait_for_lines
 from benchmarks.turtlesim import HEADLESS, Bench, _cpu_seconds
+from benchmarks.websocket import FrameReader
 
 CANVAS = "/turtlesim/_canvas/compressed"
 LINK = r"http://\S+"  # the viewer prints where it listens, with its token
@@ -105,38 +105,17 @@ class Tabs(threading.Thread):
                     self.topic[i] += 1
 
 
-class Tab(threading.Thread):
+class Tab(FrameReader):
     """A browser tab's WebSocket in a thread of its own: the latency of every canvas frame."""
 
     def __init__(self, url: str) -> None:
-        super().__init__(daemon=True)
-        self.url = url
-        self.latencies: list[float] = []
+        super().__init__(url)
         self.arrivals: list[float] = []
-        self.stop = threading.Event()
-        self.error: BaseException | None = None
 
-    def run(self) -> None:
-        try:
-            asyncio.run(self._read())
-        except BaseException as error:
-            self.error = error
-
-    async def _read(self) -> None:
-        async with aiohttp.ClientSession() as client, client.ws_connect(self.url) as ws:
-            while not self.stop.is_set():
-                try:
-                    message = await ws.receive(timeout=0.2)
-                except asyncio.TimeoutError:
-                    continue
-                if message.type != aiohttp.WSMsgType.BINARY:
-                    continue
-                now = time.time()
-                (length,) = struct.unpack("!I", message.data[:4])
-                header = json.loads(message.data[4 : 4 + length])
-                if header["topic"] == CANVAS:
-                    self.latencies.append(now - header["stamp"])
-                    self.arrivals.append(time.monotonic())
+    def on_frame(self, header: dict, now: float) -> None:
+        if header["topic"] == CANVAS:
+            self.latencies.append(now - header["stamp"])
+            self.arrivals.append(time.monotonic())
 
 
 def _measure(bench: Bench, pids: list[int], seconds: float) -> list[float]:
