@@ -155,6 +155,7 @@ def heard(message):
         seen.append(1)
         print('listening', flush=True)
 node.create_subscription(TFMessage, '/tf', heard, QoSProfile(depth=100))
+node.create_timer(0.5, lambda: None)  # the listener's check timer, so both wake alike
 rclpy.spin(node)
 """
 

@@ -377,3 +377,27 @@ def test_cache_does_not_interpolate_across_a_new_parent():
     for offset in range(100):
         _, (parent, translation, _) = cache.get_data(555 + offset)
         assert (parent, translation[0]) == (4, 1.5)
+
+
+def test_a_transformstamped_reads_as_any_object_with_its_fields():
+    """rosidl's TransformStamped is read from its fields' slots, anything else through its
+    attributes: the two give the same transform, and the slots are where rosidl keeps them."""
+    from types import SimpleNamespace as Fields
+
+    from tf2_py import buffer_core
+
+    assert buffer_core._SLOTTED  # else every listener's callback takes the slower path
+    message = stamped("/world", "/arm", 1.5, xyz=(1.0, -2.0, 3.0), xyzw=(0.0, 0.0, 0.6, 0.8))
+    t, r = message.transform.translation, message.transform.rotation
+    duck = Fields(
+        header=Fields(stamp=Fields(sec=1, nanosec=500_000_000), frame_id="/world"),
+        child_frame_id="/arm",
+        transform=Fields(
+            translation=Fields(x=t.x, y=t.y, z=t.z), rotation=Fields(x=r.x, y=r.y, z=r.z, w=r.w)
+        ),
+    )
+    core = BufferCore()
+    assert core._parsed(message, "a") == core._parsed(duck, "a")
+    assert core._parsed(message, "a") == (
+        "world", "arm", 1_500_000_000, (1.0, -2.0, 3.0), (0.0, 0.0, 0.6, 0.8)
+    )  # fmt: skip

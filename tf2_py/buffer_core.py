@@ -59,6 +59,8 @@ MAX_GRAPH_DEPTH = 1000  # a walk longer than this is a loop
 QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 WARNING_INTERVAL = 2.5  # seconds between two lines of one warning for one frame
 NO_PARENT = "NO_PARENT"
+# rosidl_generator_py keeps each field of a message in a slot named after it with a "_" before.
+_SLOTTED = "_header" in getattr(TransformStamped, "__slots__", ())
 
 
 def to_nanoseconds(value: Any, what: str = "time") -> int:
@@ -124,24 +126,28 @@ class BufferCore:
     def _parsed(self, message: Any, authority: str) -> _Parsed | None:
         """(parent, child, stamp, translation, normalised rotation) of a TransformStamped;
         None, with tf2's line, for data tf2 refuses."""
-        try:
-            header = message.header
-            stamp = header.stamp
-            transform = message.transform
-            t, r = transform.translation, transform.rotation
-            if type(message) is TransformStamped:  # rosidl's setters made every field's type
-                stamp = stamp.sec * NANOSECONDS + stamp.nanosec
-                tx, ty, tz, rx, ry, rz, rw = t.x, t.y, t.z, r.x, r.y, r.z, r.w
-            else:
-                stamp = to_nanoseconds(stamp)
+        if type(message) is TransformStamped and _SLOTTED:
+            # rosidl's own class: its setters made every field's type, so its fields are read
+            # from their slots (a property per field costs half the listener's callback).
+            header, transform = message._header, message._transform
+            stamp, t, r = header._stamp, transform._translation, transform._rotation
+            stamp = stamp._sec * NANOSECONDS + stamp._nanosec
+            tx, ty, tz, rx, ry, rz, rw = t._x, t._y, t._z, r._x, r._y, r._z, r._w
+            parent, child = header._frame_id, message._child_frame_id
+        else:
+            try:
+                header = message.header
+                transform = message.transform
+                t, r = transform.translation, transform.rotation
+                stamp = to_nanoseconds(header.stamp)
                 tx, ty, tz = float(t.x), float(t.y), float(t.z)
                 rx, ry, rz, rw = float(r.x), float(r.y), float(r.z), float(r.w)
-            parent = header.frame_id
-            child = message.child_frame_id
-        except AttributeError:
-            raise TypeError(
-                "transform must be a TransformStamped (header, child_frame_id, transform)"
-            ) from None
+                parent = header.frame_id
+                child = message.child_frame_id
+            except AttributeError:
+                raise TypeError(
+                    "transform must be a TransformStamped (header, child_frame_id, transform)"
+                ) from None
         if parent[:1] == "/":
             parent = parent[1:]
         if child[:1] == "/":
