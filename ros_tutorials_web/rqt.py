@@ -75,6 +75,29 @@ PLOT_TOPICS = 10  # topics one tab may plot at once
 # --- the tools ---------------------------------------------------------------------------------
 
 
+class Timeline:
+    """A topic's message times as its time line shows them: at most TIMELINE_POINTS stamps,
+    spread evenly over the messages, kept in memory that does not grow with the bag (every
+    ``stride``-th message is kept; when twice the points are kept, every other one goes and the
+    stride doubles)."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.stride = 1
+        self.kept: list[int] = []
+
+    def add(self, stamp: int) -> None:
+        if self.count % self.stride == 0:
+            self.kept.append(stamp)
+            if len(self.kept) == 2 * TIMELINE_POINTS:
+                del self.kept[1::2]
+                self.stride *= 2
+        self.count += 1
+
+    def stamps(self) -> list[int]:
+        return self.kept[:: max(1, math.ceil(len(self.kept) / TIMELINE_POINTS))]
+
+
 class Tools:
     """The rqt tools' routes and WebSocket messages, on one node (the viewer's)."""
 
@@ -294,22 +317,21 @@ class Tools:
         """The bag's topics with the times of their messages (decimated), read once."""
         with self.open_bag(given) as reader:
             bag = reader.bag
-            times: dict[str, list[int]] = {name: [] for name in bag.topics}
+            lines = {name: Timeline() for name in bag.topics}
             try:
                 for message in reader.messages():
-                    times.setdefault(message.topic, []).append(message.log_time)
+                    lines.setdefault(message.topic, Timeline()).add(message.log_time)
             except BagError as error:
                 raise Refused(str(error)) from None
         topics = []
         for name, info in sorted(bag.topics.items()):
-            stamps = times.get(name, [])
-            step = max(1, math.ceil(len(stamps) / TIMELINE_POINTS))
+            line = lines.get(name, Timeline())
             topics.append(
                 {
                     "name": name,
                     "type": info.type,
-                    "count": len(stamps),
-                    "times": [(t - bag.start) / 1e9 for t in stamps[::step]],
+                    "count": line.count,
+                    "times": [(t - bag.start) / 1e9 for t in line.stamps()],
                 }
             )
         return {

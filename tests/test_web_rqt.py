@@ -326,3 +326,28 @@ class TestRqtCommands:
             tool.send_signal(signal.SIGINT)
             assert tool.wait(TIMEOUT) == 0
             os.close(main)
+
+
+def test_a_bag_time_line_keeps_a_bounded_even_sample_of_its_messages() -> None:
+    """rqt_bag's time line of a topic: every message counted, at most TIMELINE_POINTS stamps
+    shown, evenly spread from the first message to near the last, and never more than twice
+    that held while the bag is read."""
+    import itertools
+
+    from ros_tutorials_web.rqt import TIMELINE_POINTS, Timeline
+
+    line, held = Timeline(), 0
+    for stamp in range(1_000_003):
+        line.add(stamp)
+        held = max(held, len(line.kept))
+    shown = line.stamps()
+    assert line.count == 1_000_003
+    assert held < 2 * TIMELINE_POINTS
+    assert TIMELINE_POINTS // 2 <= len(shown) <= TIMELINE_POINTS
+    assert shown[0] == 0 and shown[-1] > 1_000_003 - 2 * 1_000_003 // len(shown)
+    gaps = {b - a for a, b in itertools.pairwise(shown)}
+    assert len(gaps) == 1  # even
+    few = Timeline()
+    for stamp in (5, 7, 9):
+        few.add(stamp)
+    assert few.stamps() == [5, 7, 9]
