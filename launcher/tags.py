@@ -19,7 +19,8 @@ if TYPE_CHECKING:
 
 CONDITIONS = {"if", "unless"}
 PROCESS_ATTRS = {"args", "output", "respawn", "respawn_delay", "respawn_max_retries",
-                 "sigterm_timeout", "sigkill_timeout", "launch_prefix", "on_exit"}  # fmt: skip
+                 "sigterm_timeout", "sigkill_timeout", "launch_prefix", "on_exit", "shell",
+                 "emulate_tty"}  # fmt: skip
 SYNTAX = {"ros1": "ROS 1 (roslaunch)", "ros2": "ROS 2"}
 # Attributes kept with _ inside (parse.py) that both formats document with - (both accepted).
 SPELLING = {"launch_prefix": "launch-prefix"}

@@ -506,3 +506,24 @@ launch:
 """)  # fmt: skip
     out = ok("ros2", "launch", str(path), "perception/enable:=false", "--print")
     assert "command: echo false" in out
+
+
+@pytest.mark.parametrize(
+    ("name", "text"),
+    [
+        ("t.launch.xml", '<launch><executable cmd="echo $HOME | tr a-z A-Z" shell="true" '
+                         'emulate_tty="true"/></launch>'),
+        ("t.launch.yaml", "launch:\n- executable:\n    cmd: echo $HOME | tr a-z A-Z\n"
+                          "    shell: 'true'\n    emulate_tty: 'true'\n"),
+    ],
+)  # fmt: skip
+def test_executable_takes_shell_and_emulate_tty_as_launch_xml_does(tmp_path, monkeypatch, name,
+                                                                   text):  # fmt: skip
+    """launch's ExecuteProcess.parse reads <executable shell emulate_tty> (launch_xml's own
+    test_include uses both): the command is one shell line, and the process gets rcutils'
+    colours."""
+    monkeypatch.delenv("RCUTILS_COLORIZED_OUTPUT", raising=False)
+    (spec,) = planned(write(tmp_path, name, text))[1]
+    assert spec.command[-1] == "echo $HOME | tr a-z A-Z"
+    assert spec.command[:-1] == ["/bin/sh", "-c"]
+    assert spec.env.get("RCUTILS_COLORIZED_OUTPUT") == "1"
