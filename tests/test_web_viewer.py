@@ -30,6 +30,7 @@ from ros_tutorials_web.guard import Guard, greeting
 HEADLESS = {"DISPLAY": "", "WAYLAND_DISPLAY": ""}
 CANVAS = "/turtlesim/_canvas/compressed"
 LINK = r"Open (http://127\.0\.0\.1:\d+/\?token=[\w-]{32}) in a browser"
+RELOADS = 25  # of the page, one after the other
 DRIVE = ("{linear: {x: 2.0}, angular: {z: 1.8}}", "{linear: {x: 2.0}, angular: {z: -1.8}}")
 
 
@@ -502,6 +503,19 @@ class TestInBrowser:
             until(lambda: trail(browser) > before + 20, "the trail drawn after a pub")
             assert "live" in browser.find_element("id", "status").text
             browser.save_screenshot(str(tmp_path / "web_viewer.png"))
+
+    def test_the_idle_canvas_after_every_reload(self, viewer: str) -> None:
+        """A reload ends the page's WebSocket (the viewer's last tab: it unsubscribes from
+        the canvas) and opens another (it subscribes again) within a moment, so turtlesim
+        may never see a reader leave and join, and sends no frame for a join: it sends its
+        canvas every second while subscribed, and the idle turtle is drawn after each of
+        RELOADS reloads (about one in ten missed its frame without that)."""
+        with chromium() as browser:
+            browser.get(viewer)
+            for reload in range(RELOADS):
+                until(lambda: trail(browser), f"turtlesim's canvas drawn after {reload} reloads")
+                browser.refresh()
+            until(lambda: trail(browser), f"turtlesim's canvas drawn after {RELOADS} reloads")
 
 
 # The pen's pixels in the canvas the page drew (read back from the page), or 0 before the
