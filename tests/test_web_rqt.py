@@ -326,3 +326,17 @@ class TestRqtCommands:
             tool.send_signal(signal.SIGINT)
             assert tool.wait(TIMEOUT) == 0
             os.close(main)
+
+
+@pytest.mark.parametrize(
+    "text", ["2", "-2.5", "true", "[1, 2]", "[1.5, 2.5]", "[a, b]", "[]", "hi"]
+)
+def test_the_page_sends_what_ros2_param_set_sends(text: str) -> None:
+    """A text typed into the page for a parameter of the type `ros2 param set` reads it as
+    is sent as the same ParameterValue: one table of types (ros2cmd.param.api)."""
+    from ros2cmd.param.api import described_type
+    from ros2cmd.param.verb.set import typed_value
+    from ros_tutorials_web.forms import parameter_value
+
+    sent = typed_value("p", text)
+    assert parameter_value(text, described_type(sent.type)) == sent
