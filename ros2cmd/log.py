@@ -45,25 +45,50 @@ def _service(graph: Graph, node: str, which: str) -> str:
     return name
 
 
-def get_level(graph: Graph, node: str) -> str:
-    """The node's logger level: DEBUG, INFO, ..., or UNSET (then its default, INFO, applies)."""
-    client = graph.node.create_client(GetLoggerLevels, _service(graph, node, GET))
-    request = GetLoggerLevels.Request(names=[logger_name(node)])
-    response = graph.call(client, request, f"cannot get the logger level of '{node}'")
+# What is asked of a node's logger services and what its answers say, for the command
+# below and for rqt's page (ros_tutorials_web/rqt.py), which calls the services its own way.
+
+
+def get_request(node: str) -> GetLoggerLevels.Request:
+    return GetLoggerLevels.Request(names=[logger_name(node)])
+
+
+def level_in(response: GetLoggerLevels.Response) -> str:
+    """The level a get_logger_levels answer gives: DEBUG, INFO, ..., or UNSET."""
     level = response.levels[0].level if response.levels else LoggerLevel.LOG_LEVEL_UNKNOWN
     return LEVEL_NAMES.get(level, str(level))
 
 
-def set_level(graph: Graph, node: str, level: str) -> None:
-    client = graph.node.create_client(SetLoggerLevels, _service(graph, node, SET))
-    request = SetLoggerLevels.Request(
+def set_request(node: str, level: str) -> SetLoggerLevels.Request:
+    """Set the node's logger to ``level`` (a key of LEVELS: debug, info, ...)."""
+    return SetLoggerLevels.Request(
         levels=[LoggerLevel(name=logger_name(node), level=LEVELS[level])]
     )
-    response = graph.call(client, request, f"cannot set the logger level of '{node}'")
+
+
+def refusal(node: str, level: str, response: SetLoggerLevels.Response) -> str | None:
+    """Why a set_logger_levels answer did not set ``level`` (None: it did)."""
     result = response.results[0] if response.results else None
-    if result is None or not result.successful:
-        reason = result.reason if result is not None else "no answer for the logger"
-        raise ToolError(f"'{node}' refused logger level {level.upper()}: {reason}")
+    if result is not None and result.successful:
+        return None
+    reason = result.reason if result is not None else "no answer for the logger"
+    return f"'{node}' refused logger level {level.upper()}: {reason}"
+
+
+def get_level(graph: Graph, node: str) -> str:
+    """The node's logger level: DEBUG, INFO, ..., or UNSET (then its default, INFO, applies)."""
+    client = graph.node.create_client(GetLoggerLevels, _service(graph, node, GET))
+    response = graph.call(client, get_request(node), f"cannot get the logger level of '{node}'")
+    return level_in(response)
+
+
+def set_level(graph: Graph, node: str, level: str) -> None:
+    client = graph.node.create_client(SetLoggerLevels, _service(graph, node, SET))
+    request = set_request(node, level)
+    response = graph.call(client, request, f"cannot set the logger level of '{node}'")
+    refused = refusal(node, level, response)
+    if refused is not None:
+        raise ToolError(refused)
 
 
 def level_command(graph: Graph, node: str | None, level: str | None) -> None:

@@ -1,14 +1,19 @@
-"""A robot's kinematic tree read from URDF: links, joints, their origins, axes and limits.
+"""A robot read from URDF: links, joints, their origins, axes and limits, and each link's
+visuals (origin, geometry, material colour).
 
-What robot_state_publisher and joint_state_publisher read of a robot description, checked as
-urdfdom checks it (ROS 2's C++ URDF parser): a ``<robot>`` with a name, links and joints with
-unique names, known joint types, a parent and a child link that exist, limits on revolute and
-prismatic joints, one root link and no link with two parents. A description that breaks one of
-those rules is refused with a ``UrdfError`` whose text is one line.
+The one URDF reader of the project: robot_state_publisher and joint_state_publisher read the
+joints, rviz2's RobotModel display the visuals. A description is checked as urdfdom (ROS 2's
+C++ URDF parser, which all three use upstream) checks it: a ``<robot>`` with a name, links
+and joints with unique names, known joint types, a parent and a child link that exist, limits
+on revolute and prismatic joints, one root link and no link with two parents; a visual with
+one known geometry and its required sizes, a named material, robot-level materials with a
+colour and unique names. A description that breaks one of those rules is refused with a
+``UrdfError`` whose text is one line.
 
 Bounded: at most MAX_URDF_BYTES of text and MAX_ELEMENTS elements, and no DTD (an entity
-declaration is how a few hundred bytes of XML expand into gigabytes). Geometry (visual,
-collision) is the 3D view's business and is not read here. No rclpy: a pure model.
+declaration is how a few hundred bytes of XML expand into gigabytes). Collision geometry and
+inertia are read by no tool here and are not read. Where a mesh file is is the reader's
+business (rviz2 finds ``package://`` files). No rclpy: a pure model.
 
 Why not a URDF parser from PyPI: urdf-parser-py's last release is from 2021 and does not check
 the tree; yourdfpy and urchin load trimesh (and meshes) to read a file. What the two nodes need
@@ -19,6 +24,7 @@ from __future__ import annotations
 
 import math
 import xml.etree.ElementTree as ElementTree
+from collections.abc import Container
 from dataclasses import dataclass, field
 
 from ros_tutorials_common.quaternion import (
@@ -33,6 +39,8 @@ MAX_URDF_BYTES = 8 * 1024 * 1024  # a robot description (real robots' are well u
 MAX_ELEMENTS = 200_000
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 MOVING = ("revolute", "continuous", "prismatic")  # one position each, as KDL moves them
+GEOMETRIES = ("box", "cylinder", "sphere", "mesh")
+Color = tuple[float, float, float, float]  # red, green, blue, alpha: 0 to 1
 
 
 class UrdfError(ValueError):
@@ -90,12 +98,40 @@ class Joint:
         return self.origin
 
 
+@dataclass(frozen=True)
+class Geometry:
+    """A visual's shape: a box's size, a cylinder's radius and length, a sphere's radius, or
+    a mesh file's name (as the URDF gives it: ``package://``, ``file://``) and scale."""
+
+    type: str  # one of GEOMETRIES
+    size: Vector = (0.0, 0.0, 0.0)
+    radius: float = 0.0
+    length: float = 0.0
+    filename: str = ""
+    scale: Vector = (1.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True)
+class Visual:
+    """One ``<visual>`` of a link: its origin in the link's frame (xyz, rpy as written), its
+    geometry, and its material's name and colour (the visual's own, or the robot's material
+    of that name; none: '' and None)."""
+
+    geometry: Geometry
+    xyz: Vector = (0.0, 0.0, 0.0)
+    rpy: Vector = (0.0, 0.0, 0.0)
+    material: str = ""
+    color: Color | None = None
+
+
 @dataclass
 class Robot:
     name: str
     links: list[str] = field(default_factory=list)
     joints: dict[str, Joint] = field(default_factory=dict)  # in the file's order
     root: str = ""
+    visuals: dict[str, list[Visual]] = field(default_factory=dict)  # link -> its visuals
+    materials: dict[str, Color] = field(default_factory=dict)  # the robot-level ones
 
     def moving_joints(self) -> list[Joint]:
         return [joint for joint in self.joints.values() if joint.type in MOVING]
@@ -120,12 +156,100 @@ def _number(element: ElementTree.Element, attribute: str, what: str, default: fl
     return _numbers(element.get(attribute), 1, what, (default,))[0]
 
 
-def _origin(element: ElementTree.Element | None, what: str) -> Pose:
+def _xyz_rpy(element: ElementTree.Element | None, what: str) -> tuple[Vector, Vector]:
+    """An ``<origin>``'s xyz and rpy as written (zeros where absent)."""
     if element is None:
-        return Pose()
+        return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
     xyz = _numbers(element.get("xyz"), 3, f"{what}: origin xyz", (0.0, 0.0, 0.0))
     rpy = _numbers(element.get("rpy"), 3, f"{what}: origin rpy", (0.0, 0.0, 0.0))
+    return xyz, rpy
+
+
+def _origin(element: ElementTree.Element | None, what: str) -> Pose:
+    xyz, rpy = _xyz_rpy(element, what)
     return Pose(xyz, quaternion_from_rpy(*rpy))
+
+
+def _color(material: ElementTree.Element, what: str) -> Color | None:
+    color = material.find("color")
+    if color is None:
+        return None
+    rgba = _numbers(color.get("rgba"), 4, f"{what}: color rgba", (0.0, 0.0, 0.0, 1.0))
+    if not all(0.0 <= value <= 1.0 for value in rgba):
+        raise UrdfError(f"{what}: color rgba must be 4 numbers from 0 to 1, not {rgba}")
+    return rgba  # type: ignore[return-value]
+
+
+def _new_name(element: ElementTree.Element, kind: str, seen: Container[str]) -> str:
+    """An element's name: given, and not an earlier one's of its kind (urdfdom's rule)."""
+    name = element.get("name")
+    if not name:
+        raise UrdfError(f"a {kind} has no name")
+    if name in seen:
+        raise UrdfError(f"{kind} '{name}' is not unique.")
+    return name
+
+
+def _materials(root: ElementTree.Element) -> dict[str, Color]:
+    """The robot-level materials: each named, unique and with a colour (a texture alone is
+    drawn by no tool here: grey)."""
+    materials: dict[str, Color] = {}
+    for material in root.findall("material"):
+        name = _new_name(material, "material", materials)
+        color = _color(material, f"material [{name}]")
+        if color is None and material.find("texture") is None:
+            raise UrdfError(f"material [{name}] has neither a texture nor a color defined")
+        materials[name] = color or (0.8, 0.8, 0.8, 1.0)
+    return materials
+
+
+def _geometry(element: ElementTree.Element | None, what: str) -> Geometry:
+    shapes = [child for child in element] if element is not None else []
+    if not shapes:
+        raise UrdfError(f"{what}: no geometry")
+    shape = shapes[0]
+    kind = shape.tag
+    if kind not in GEOMETRIES:
+        raise UrdfError(f"{what}: unknown geometry type '{kind}'")
+
+    def required(attribute: str, count: int) -> tuple[float, ...]:
+        text = shape.get(attribute)
+        if text is None:
+            raise UrdfError(f"{what}: {kind} has no {attribute} attribute")
+        return _numbers(text, count, f"{what}: {kind} {attribute}", ())
+
+    if kind == "box":
+        return Geometry(kind, size=required("size", 3))  # type: ignore[arg-type]
+    if kind == "cylinder":
+        return Geometry(kind, radius=required("radius", 1)[0], length=required("length", 1)[0])
+    if kind == "sphere":
+        return Geometry(kind, radius=required("radius", 1)[0])
+    filename = shape.get("filename")
+    if not filename:
+        raise UrdfError(f"{what}: mesh has no filename")
+    scale = _numbers(shape.get("scale"), 3, f"{what}: mesh scale", (1.0, 1.0, 1.0))
+    return Geometry(kind, filename=filename, scale=scale)  # type: ignore[arg-type]
+
+
+def _visual(element: ElementTree.Element, materials: dict[str, Color], link: str) -> Visual:
+    """A link's ``<visual>``. Its material is named; a colour given there also defines the
+    name for the visuals after it (as urdfdom adds it to the robot's materials)."""
+    what = f"link [{link}]: visual"
+    xyz, rpy = _xyz_rpy(element.find("origin"), what)
+    geometry = _geometry(element.find("geometry"), what)
+    material = element.find("material")
+    if material is None:
+        return Visual(geometry, xyz, rpy)
+    name = material.get("name")
+    if not name:
+        raise UrdfError(f"{what}: its material has no name")
+    color = _color(material, f"{what}: material [{name}]")
+    if color is None:
+        if name not in materials:
+            raise UrdfError(f"link '{link}' material '{name}' undefined.")
+        color = materials[name]
+    materials.setdefault(name, color)
+    return Visual(geometry, xyz, rpy, name, color)
 
 
 def _joint(element: ElementTree.Element, links: set[str]) -> Joint:
@@ -218,16 +342,15 @@ def parse(text: str | bytes) -> Robot:
     name = root.get("name")
     if not name:
         raise UrdfError("No name given for the robot.")
-    robot = Robot(name)
+    robot = Robot(name, materials=_materials(root))
     seen: set[str] = set()
     for link in root.findall("link"):
-        link_name = link.get("name")
-        if not link_name:
-            raise UrdfError("a link has no name")
-        if link_name in seen:
-            raise UrdfError(f"link '{link_name}' is not unique.")
+        link_name = _new_name(link, "link", seen)
         seen.add(link_name)
         robot.links.append(link_name)
+        robot.visuals[link_name] = [
+            _visual(visual, robot.materials, link_name) for visual in link.findall("visual")
+        ]
     if not robot.links:
         raise UrdfError("No link elements found in urdf file")
     parents: dict[str, str] = {}

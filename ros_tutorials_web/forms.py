@@ -13,6 +13,7 @@ from typing import Any
 from ros2cmd.errors import ToolError
 from ros2cmd.messages import fill_message, message_to_ordered, parse_yaml
 from ros2cmd.param.api import described_type
+from ros2cmd.param.api import parameter_value as typed_parameter
 from ros2cmd.typenames import full_type_name, load_type
 
 MAX_DEPTH = 8  # nested messages shown in a form
@@ -137,36 +138,31 @@ def plain(value: Any) -> Any:
 def parameter_value(text: Any, kind: str) -> Any:
     """The ParameterValue for the text typed, read as the parameter's type (a parameter
     keeps its type: 5 for a double is 5.0, as rqt_reconfigure's spin box gives it)."""
-    from rcl_interfaces.msg import ParameterType, ParameterValue
-
     if not isinstance(text, str):
         raise Refused("expected the value as text")
-    value = ParameterValue()
     try:
         data = parse_yaml(text) if kind != "string" else text
     except ToolError as error:
         raise Refused(str(error)) from None
-    checks: dict[str, tuple[int, str, Callable[[Any], bool], Callable[[Any], Any]]] = {
-        "boolean": (ParameterType.PARAMETER_BOOL, "bool_value", _is_bool, bool),
-        "integer": (ParameterType.PARAMETER_INTEGER, "integer_value", _is_int, int),
-        "double": (ParameterType.PARAMETER_DOUBLE, "double_value", is_number, float),
-        "string": (ParameterType.PARAMETER_STRING, "string_value", _is_str, str),
-        "boolean array": (ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value", _all(_is_bool), list),  # noqa: E501
-        "integer array": (ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value", _all(_is_int), list),  # noqa: E501
-        "double array": (ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value", _all(is_number), lambda v: [float(x) for x in v]),  # noqa: E501
-        "string array": (ParameterType.PARAMETER_STRING_ARRAY, "string_array_value", _all(_is_str), list),  # noqa: E501
-    }  # fmt: skip
+    checks: dict[str, tuple[Callable[[Any], bool], Callable[[Any], Any]]] = {
+        "boolean": (_is_bool, bool),
+        "integer": (_is_int, int),
+        "double": (is_number, float),
+        "string": (_is_str, str),
+        "boolean array": (_all(_is_bool), list),
+        "integer array": (_all(_is_int), list),
+        "double array": (_all(is_number), lambda v: [float(x) for x in v]),
+        "string array": (_all(_is_str), list),
+    }
     if kind not in checks:
         raise Refused(f"a parameter of type {kind} cannot be set here")
-    code, field, fits, convert = checks[kind]
+    fits, convert = checks[kind]
     if not fits(data):
         raise Refused(f"{text!r} is not a {kind}")
-    value.type = code
     try:
-        setattr(value, field, convert(data))
+        return typed_parameter(kind, convert(data))
     except (AssertionError, ValueError, TypeError, OverflowError) as error:
         raise Refused(f"{text!r} does not fit a {kind}: {error}") from None
-    return value
 
 
 def _is_bool(v: Any) -> bool:

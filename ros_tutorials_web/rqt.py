@@ -1,8 +1,9 @@
 """rqt in the browser: the server side of rqt's plugins, at ``/rqt`` beside the viewer's page
 (static/rqt.html and rqt.js draw them; the viewer's panels are rqt_graph and rqt_console).
-(About 750 lines: six plugins of a few routes each, on the one node (``Ros``), the hub's tabs
-and the guard they share, with the form-to-message and parameter conversions they all read;
-the conversions, which need no node, are the part that could stand in a module of their own.)
+(Six plugins of a few routes each, on the one node (``Ros``), the hub's tabs and the guard
+they share. What the routes convert lives below them: forms.py reads the forms and the typed
+parameter values, on ros2cmd's message filling and parameter types; ros2cmd.log asks and
+reads the logger services; ros2cmd.graph lists the nodes and services.)
 
     Service Caller   GET  /api/rqt/services             services and their types
                      GET  /api/rqt/interface?type=T     a message's (a request's) fields, a form
@@ -46,8 +47,7 @@ from typing import Any
 
 from aiohttp import web
 
-from ros2cmd.console import LEVELS, logger_name
-from ros2cmd.graph import is_hidden
+from ros2cmd.console import LEVELS
 from ros2cmd.messages import message_to_ordered, message_to_yaml
 from ros_tutorials_web.forms import (
     Refused,
@@ -62,6 +62,7 @@ from ros_tutorials_web.forms import (
 from ros_tutorials_web.guard import Guard
 from ros_tutorials_web.hub import Hub, Tab
 from ros_tutorials_web.ros_calls import Ros
+from ros_tutorials_web.watch import NodeGraph
 from rosbag2.errors import BagError
 from rosbag2.reader import BagReader
 
@@ -144,8 +145,8 @@ class Tools:
     # --- Service Caller ------------------------------------------------------------------------
 
     async def services(self, _request: web.Request) -> web.Response:
-        found = await self.ros.run(self.ros.node.get_service_names_and_types)
-        return web.json_response({n: t for n, t in sorted(found) if not is_hidden(n)})
+        found = await self.ros.run(NodeGraph(self.ros.node).service_types)
+        return web.json_response(dict(sorted(found.items())))
 
     async def interface(self, request: web.Request) -> web.Response:
         name = request.query.get("type", "")
@@ -183,13 +184,8 @@ class Tools:
 
     async def nodes(self, _request: web.Request) -> web.Response:
         own = self.ros.node.get_fully_qualified_name()
-
-        def names() -> list[str]:
-            found = self.ros.node.get_node_names_and_namespaces()
-            full = (("" if ns == "/" else ns) + "/" + name for name, ns in found)
-            return sorted({n for n in full if n != own and not n.split("/")[-1].startswith("_")})
-
-        return web.json_response(await self.ros.run(names))
+        names = await self.ros.run(NodeGraph(self.ros.node).node_names)
+        return web.json_response(sorted({name for name in names if name != own}))
 
     def node_name(self, given: Any) -> str:
         if not isinstance(given, str) or not given.strip("/"):
@@ -251,26 +247,24 @@ class Tools:
     # --- Logger levels ----------------------------------------------------------------------------
 
     async def logger(self, request: web.Request) -> web.Response:
-        from rcl_interfaces.msg import LoggerLevel
         from rcl_interfaces.srv import GetLoggerLevels
 
-        from ros2cmd.log import LEVEL_NAMES
+        from ros2cmd.log import GET, get_request, level_in
 
         try:
             node = self.node_name(request.query.get("node"))
             answer = await self.ros.call(
-                f"{node}/get_logger_levels", GetLoggerLevels,
-                GetLoggerLevels.Request(names=[logger_name(node)]),
+                f"{node}/{GET}", GetLoggerLevels, get_request(node),
                 f"getting the logger level of '{node}'",
             )  # fmt: skip
         except Refused as error:
             return self.refused(error)
-        level = answer.levels[0].level if answer.levels else LoggerLevel.LOG_LEVEL_UNKNOWN
-        return web.json_response({"node": node, "level": LEVEL_NAMES.get(level, str(level))})
+        return web.json_response({"node": node, "level": level_in(answer)})
 
     async def set_logger(self, request: web.Request) -> web.Response:
-        from rcl_interfaces.msg import LoggerLevel
         from rcl_interfaces.srv import SetLoggerLevels
+
+        from ros2cmd.log import SET, refusal, set_request
 
         try:
             data = await self.body(request)
@@ -279,18 +273,14 @@ class Tools:
             if level not in LEVELS:
                 raise Refused(f"{data.get('level')!r} is not a level ({', '.join(LEVELS)})")
             answer = await self.ros.call(
-                f"{node}/set_logger_levels", SetLoggerLevels,
-                SetLoggerLevels.Request(
-                    levels=[LoggerLevel(name=logger_name(node), level=LEVELS[level])]
-                ),
+                f"{node}/{SET}", SetLoggerLevels, set_request(node, level),
                 f"setting the logger level of '{node}'",
             )  # fmt: skip
         except Refused as error:
             return self.refused(error)
-        result = answer.results[0] if answer.results else None
-        if result is None or not result.successful:
-            reason = result.reason if result is not None else "no answer for the logger"
-            return self.refused(Refused(f"'{node}' refused level {level.upper()}: {reason}"))
+        refused = refusal(node, level, answer)
+        if refused is not None:
+            return self.refused(Refused(refused))
         return web.json_response({"ok": True, "level": level.upper()})
 
     # --- Bag -----------------------------------------------------------------------------------

@@ -1,36 +1,39 @@
 """rviz2's RobotModel display, its model: a URDF (the text on ``/robot_description``) as the
 3D view draws it. No ROS here.
 
-Each link's ``<visual>``s: the origin in the link's frame (xyz, rpy), the geometry (box size,
-cylinder radius and length, sphere radius, or a mesh file with its scale) and the colour of
-its material (given in the visual or by name at the robot's top level). Where the links are
-is tf's business (robot_state_publisher broadcasts each link's frame); the view places each
-link at its frame.
+The URDF is read by the project's one reader (``ros_tutorials_common/urdf.py``, the reader
+robot_state_publisher uses): bounded, no DTD, and checked as urdfdom checks it, so a
+description robot_state_publisher refuses is refused here with the same one line
+(``UrdfError``), as rviz2's display fails to load a model urdfdom refuses. This module turns
+each link's visuals into what the page draws: the origin in the link's frame (xyz, rpy), the
+geometry (box size, cylinder radius and length, sphere radius, or a mesh file with its
+scale) and the colour of its material. Where the links are is tf's business
+(robot_state_publisher broadcasts each link's frame); the view places each link at its frame.
 
-Meshes are named by ``package://PKG/path`` (found through the ament index) or
-``file:///path``; the view serves a mesh file only when the current model names it
-(``meshes``, each served as ``/mesh/DISPLAY/INDEX/NAME``), and only STL and COLLADA (.dae)
-files. A text that is not a URDF is one line (``UrdfError``);
-a visual the view cannot draw is skipped with one line in ``problems``.
+Meshes are named by ``package://PKG/path`` (found through the ament index, and only inside
+that package's share folder) or ``file:///path``; the view serves a mesh file only when the
+current model names it (``meshes``, each served as ``/mesh/DISPLAY/INDEX/NAME``), and only
+STL and COLLADA (.dae) files. A mesh the view cannot draw is skipped with one line in
+``problems``; the rest of the robot is drawn.
 """
 
 from __future__ import annotations
 
+import os
 import urllib.parse
-import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ros_tutorials_common import urdf
+from ros_tutorials_common.urdf import UrdfError
+
+__all__ = ["RobotModel", "UrdfError", "parse", "resolve_mesh"]
+
 MESH_SUFFIXES = (".stl", ".dae")
-MAX_LINKS = 1000
-MAX_VISUALS = 5000
-MAX_TEXT = 10 << 20  # characters of a robot description read
-DEFAULT_COLOR = [0.8, 0.8, 0.8, 1.0]
-
-
-class UrdfError(Exception):
-    """A robot description that is not a URDF; str() is one line."""
+MAX_VISUALS = 5000  # visuals the page is sent; the rest are left out, with one line
+DEFAULT_COLOR = [0.8, 0.8, 0.8, 1.0]  # a visual without a material, as rviz2 draws it
+REFUSED = "the robot description is not a valid URDF: "
 
 
 @dataclass
@@ -44,28 +47,19 @@ class RobotModel:
         return {"name": self.name, "links": self.links, "problems": self.problems}
 
 
-def numbers(text: str | None, count: int, default: list[float], what: str) -> list[float]:
-    if text is None:
-        return list(default)
-    try:
-        values = [float(word) for word in text.split()]
-    except ValueError:
-        raise UrdfError(f"{what}: {text!r} is not {count} numbers") from None
-    if len(values) != count:
-        raise UrdfError(f"{what}: {text!r} is not {count} numbers")
-    return values
-
-
 def resolve_mesh(uri: str, package_share: Any) -> Path:
-    """The file a mesh URI names (package:// through ``package_share(name)``, file://, or a
-    plain path); UrdfError if it is none."""
+    """The file a mesh URI names (package:// through ``package_share(name)``, and inside
+    that folder; file://, or a plain path); UrdfError if it is none."""
     parts = urllib.parse.urlsplit(uri)
     if parts.scheme == "package":
         try:
             share = Path(package_share(parts.netloc))
         except Exception:
             raise UrdfError(f"mesh {uri!r}: package {parts.netloc!r} not found") from None
-        path = share / urllib.parse.unquote(parts.path).lstrip("/")
+        inside = os.path.normpath(urllib.parse.unquote(parts.path).lstrip("/"))
+        if inside == ".." or inside.startswith(("../", "/")):
+            raise UrdfError(f"mesh {uri!r}: the path leaves package {parts.netloc!r}")
+        path = share / inside
     elif parts.scheme == "file":
         path = Path(urllib.parse.unquote(parts.path))
     elif not parts.scheme:
@@ -79,92 +73,53 @@ def resolve_mesh(uri: str, package_share: Any) -> Path:
     return path.resolve()
 
 
-def parse(text: str, package_share: Any) -> RobotModel:
-    """The model in a URDF's text; UrdfError (one line) if it is not a URDF."""
-    if len(text) > MAX_TEXT:
-        raise UrdfError(f"robot description larger than {MAX_TEXT} characters")
+def parse(text: str | bytes, package_share: Any) -> RobotModel:
+    """The model in a URDF's text; UrdfError (one line: REFUSED and urdf.parse's reason)
+    if it is not a valid URDF."""
     try:
-        root = ElementTree.fromstring(text)
-    except ElementTree.ParseError as error:
-        raise UrdfError(f"robot description is not XML: {error}") from None
-    if root.tag != "robot":
-        raise UrdfError(f"robot description is not a URDF: its root is <{root.tag}>, not <robot>")
-    colors = {}
-    for material in root.findall("material"):
-        color = material.find("color")
-        if material.get("name") and color is not None:
-            colors[material.get("name")] = numbers(
-                color.get("rgba"), 4, DEFAULT_COLOR, f"material {material.get('name')!r}"
-            )
-    model = RobotModel(root.get("name", ""), [])
-    visuals = 0
-    for link in root.findall("link")[:MAX_LINKS]:
-        name = link.get("name")
-        if not name:
-            raise UrdfError("robot description is not a URDF: a <link> has no name")
+        robot = urdf.parse(text)
+    except UrdfError as error:
+        raise UrdfError(f"{REFUSED}{error}") from None
+    model = RobotModel(robot.name, [])
+    count = 0
+    for name in robot.links:
         shapes = []
-        for visual in link.findall("visual"):
-            if visuals >= MAX_VISUALS:
-                model.problems.append(f"more than {MAX_VISUALS} visuals: the rest left out")
+        for visual in robot.visuals[name]:
+            if count >= MAX_VISUALS:
                 break
             try:
-                shape = _visual(visual, colors, model, package_share, name)
+                shapes.append(_shape(visual, model, package_share))
             except UrdfError as error:
                 model.problems.append(f"link {name!r}: {error}")
                 continue
-            if shape is not None:
-                shapes.append(shape)
-                visuals += 1
+            count += 1
         model.links.append({"name": name, "visuals": shapes})
-    if not model.links:
-        raise UrdfError("robot description is not a URDF: it has no <link>")
+    total = sum(len(visuals) for visuals in robot.visuals.values())
+    if total > MAX_VISUALS:
+        model.problems.append(f"{total} visuals: the first {MAX_VISUALS} are drawn")
     return model
 
 
-def _visual(
-    visual: ElementTree.Element,
-    colors: dict[str, list[float]],
-    model: RobotModel,
-    package_share: Any,
-    link: str,
-) -> dict[str, Any] | None:
-    where = f"visual of {link!r}"
-    origin = visual.find("origin")
-    xyz = numbers(origin.get("xyz") if origin is not None else None, 3, [0, 0, 0], where)
-    rpy = numbers(origin.get("rpy") if origin is not None else None, 3, [0, 0, 0], where)
-    shape: dict[str, Any] = {"xyz": xyz, "rpy": rpy, "color": DEFAULT_COLOR}
-    material = visual.find("material")
-    if material is not None:
-        color = material.find("color")
-        if color is not None:
-            shape["color"] = numbers(color.get("rgba"), 4, DEFAULT_COLOR, where)
-        elif material.get("name") in colors:
-            shape["color"] = colors[material.get("name")]
-    geometry = visual.find("geometry")
-    item = geometry[0] if geometry is not None and len(geometry) else None
-    if item is None:
-        raise UrdfError("a <visual> without <geometry>")
-    if item.tag == "box":
-        shape.update(type="box", size=numbers(item.get("size"), 3, [1, 1, 1], where))
-    elif item.tag == "cylinder":
-        radius = numbers(item.get("radius"), 1, [1], where)[0]
-        length = numbers(item.get("length"), 1, [1], where)[0]
-        shape.update(type="cylinder", radius=radius, length=length)
-    elif item.tag == "sphere":
-        shape.update(type="sphere", radius=numbers(item.get("radius"), 1, [1], where)[0])
-    elif item.tag == "mesh":
-        uri = item.get("filename", "")
-        path = resolve_mesh(uri, package_share)
+def _shape(visual: urdf.Visual, model: RobotModel, package_share: Any) -> dict[str, Any]:
+    """A visual as the page draws it."""
+    color = list(visual.color) if visual.color is not None else DEFAULT_COLOR
+    shape: dict[str, Any] = {"xyz": list(visual.xyz), "rpy": list(visual.rpy), "color": color}
+    geometry = visual.geometry
+    if geometry.type == "box":
+        shape.update(type="box", size=list(geometry.size))
+    elif geometry.type == "cylinder":
+        shape.update(type="cylinder", radius=geometry.radius, length=geometry.length)
+    elif geometry.type == "sphere":
+        shape.update(type="sphere", radius=geometry.radius)
+    else:
+        path = resolve_mesh(geometry.filename, package_share)
         if path not in model.meshes:
             model.meshes.append(path)
-        index = model.meshes.index(path)
         shape.update(
             type="mesh",
-            uri=uri,
-            mesh=f"{index}/{urllib.parse.quote(path.name)}",
+            uri=geometry.filename,
+            mesh=f"{model.meshes.index(path)}/{urllib.parse.quote(path.name)}",
             format=path.suffix.lower()[1:],
-            scale=numbers(item.get("scale"), 3, [1, 1, 1], where),
+            scale=list(geometry.scale),
         )
-    else:
-        raise UrdfError(f"<{item.tag}> is not a URDF geometry")
     return shape

@@ -13,9 +13,10 @@ from nav_msgs.msg import OccupancyGrid
 from sensor_msgs.msg import Image, LaserScan, PointCloud2, PointField
 from visualization_msgs.msg import Marker
 
+from ros_tutorials_common import urdf
 from rviz2 import encode
 from rviz2.config import ConfigError, default_config, load, parse
-from rviz2.robot_model import UrdfError
+from rviz2.robot_model import REFUSED, UrdfError
 from rviz2.robot_model import parse as parse_urdf
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -139,6 +140,7 @@ URDF = """<?xml version="1.0"?>
       <geometry><sphere radius="0.2"/></geometry>
       <material name="white"><color rgba="1 1 1 1"/></material>
     </visual>
+    <visual><geometry><box size="0.1 0.2 0.3"/></geometry><material name="white"/></visual>
   </link>
   <link name="gripper">
     <visual><geometry><mesh filename="package://rviz_test_pkg/meshes/finger.stl"
@@ -148,8 +150,21 @@ URDF = """<?xml version="1.0"?>
   </link>
   <link name="empty"/>
   <joint name="neck" type="continuous"><parent link="base_link"/><child link="head"/></joint>
+  <joint name="hand" type="fixed"><parent link="base_link"/><child link="gripper"/></joint>
+  <joint name="tail" type="fixed"><parent link="base_link"/><child link="empty"/></joint>
 </robot>
 """
+# What robot_state_publisher refuses, rviz2's RobotModel refuses with the same reason.
+CRAFTED = {
+    "an entity that expands": '<?xml version="1.0"?><!DOCTYPE r [<!ENTITY a "aaaaaaaaaa">'
+    '<!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;">]><robot name="&b;"><link name="l"/></robot>',
+    "too many elements": "<robot name='r'><link name='l'>"
+    + "<visual><geometry><box size='1 1 1'/></geometry></visual>" * 70_000
+    + "</link></robot>",
+    "too large": "<robot name='r'><link name='l'/>" + " " * (9 << 20) + "</robot>",
+    "two roots": "<robot name='r'><link name='a'/><link name='b'/></robot>",
+    "a visual without geometry": "<robot name='r'><link name='a'><visual/></link></robot>",
+}
 
 
 class TestUrdf:
@@ -172,9 +187,11 @@ class TestUrdf:
         base = links["base_link"][0]
         assert (base["type"], base["radius"], base["length"]) == ("cylinder", 0.2, 0.6)
         assert base["color"] == [0, 0, 0.8, 1]
-        head = links["head"][0]
+        head, box = links["head"]
         assert (head["type"], head["xyz"], head["rpy"]) == ("sphere", [0, 0, 0.1], [0, 1.5708, 0])
         assert head["color"] == [1, 1, 1, 1]
+        # a material coloured in one visual is known by its name to the visuals after it
+        assert (box["type"], box["size"], box["color"]) == ("box", [0.1, 0.2, 0.3], [1, 1, 1, 1])
         (finger,) = links["gripper"]
         assert (finger["format"], finger["scale"]) == ("stl", [0.1] * 3)
         assert finger["mesh"] == "0/finger.stl"
@@ -187,25 +204,68 @@ class TestUrdf:
     @pytest.mark.parametrize(
         ("text", "line"),
         [
-            ("<robot name='r'><link name='a'>", "robot description is not XML: "),
-            ("<sdf/>", "robot description is not a URDF: its root is <sdf>, not <robot>"),
-            ("<robot name='r'/>", "robot description is not a URDF: it has no <link>"),
+            ("<robot name='r'><link name='a'>", "not valid XML: "),
+            ("<sdf/>", "Could not find the 'robot' element in the xml file"),
+            ("<robot name='r'/>", "No link elements found in urdf file"),
             (
-                "<robot><link name='a'><visual><origin xyz='1 2'/><geometry><box/></geometry>"
-                "</visual></link></robot>",
-                None,
+                "<robot name='r'><link name='a'><visual><origin xyz='1 2'/><geometry><box "
+                "size='1 1 1'/></geometry></visual></link></robot>",
+                "link [a]: visual: origin xyz must be 3 numbers, not '1 2'",
+            ),
+            (
+                "<robot name='r'><link name='a'><visual><geometry><cone/></geometry></visual>"
+                "</link></robot>",
+                "link [a]: visual: unknown geometry type 'cone'",
+            ),
+            (
+                "<robot name='r'><link name='a'><visual><geometry><box/></geometry></visual>"
+                "</link></robot>",
+                "link [a]: visual: box has no size attribute",
+            ),
+            (
+                "<robot name='r'><link name='a'><visual><geometry><sphere radius='1'/>"
+                "</geometry><material name='red'/></visual></link></robot>",
+                "link 'a' material 'red' undefined.",
+            ),
+            (
+                "<robot name='r'><material name='m'><color rgba='2 0 0 1'/></material>"
+                "<link name='a'/></robot>",
+                "material [m]: color rgba must be 4 numbers from 0 to 1, not (2.0, 0.0, 0.0, 1.0)",
             ),
         ],
     )
-    def test_a_malformed_urdf_is_one_line(self, text: str, line: str | None) -> None:
-        if line is None:  # a bad visual: the model still loads, the problem is one line
-            model = parse_urdf(text, lambda name: Path("/"))
-            assert model.problems == ["link 'a': visual of 'a': '1 2' is not 3 numbers"]
-            return
+    def test_a_malformed_urdf_is_one_line(self, text: str, line: str) -> None:
         with pytest.raises(UrdfError) as error:
             parse_urdf(text, lambda name: Path("/"))
-        assert str(error.value).startswith(line)
+        assert str(error.value).startswith(REFUSED + line)
         assert "\n" not in str(error.value)
+
+    @pytest.mark.parametrize("what", sorted(CRAFTED))
+    def test_a_crafted_urdf_is_refused_as_robot_state_publisher_refuses_it(self, what: str) -> None:
+        """The one reader decides for both: rviz2 gives robot_state_publisher's reason."""
+        text = CRAFTED[what]
+        with pytest.raises(urdf.UrdfError) as reader:
+            urdf.parse(text)  # robot_state_publisher: "Unable to initialize ...: " + this
+        with pytest.raises(UrdfError) as error:
+            parse_urdf(text, lambda name: Path("/"))
+        assert str(error.value) == REFUSED + str(reader.value)
+        assert "\n" not in str(error.value) and len(str(error.value)) < 300
+
+    def test_a_mesh_outside_its_package_is_refused(self, tmp_path: Path) -> None:
+        package = tmp_path / "share" / "rviz_test_pkg"
+        (package / "meshes").mkdir(parents=True)
+        (tmp_path / "secret.stl").write_bytes(b"solid secret\nendsolid secret\n")
+        text = (
+            "<robot name='r'><link name='a'><visual><geometry>"
+            "<mesh filename='package://rviz_test_pkg/meshes/../../../secret.stl'/>"
+            "</geometry></visual></link></robot>"
+        )
+        model = parse_urdf(text, lambda name: package)
+        assert model.meshes == []  # never served
+        assert model.problems == [
+            "link 'a': mesh 'package://rviz_test_pkg/meshes/../../../secret.stl': the path "
+            "leaves package 'rviz_test_pkg'"
+        ]
 
 
 def cloud(count: int, rgb: bool = False) -> PointCloud2:

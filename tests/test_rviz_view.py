@@ -471,9 +471,11 @@ class TestBadInput:
             process = node_process(
                 str(BIN / "rviz2"), "--port", "0", "-f", "base_link", env=HEADLESS
             )
-            lines = process.wait_for_text("RobotModel: error: robot description is not XML")
+            lines = process.wait_for_text(
+                "RobotModel: error: the robot description is not a valid URDF: not valid XML"
+            )
             assert "Traceback" not in "\n".join(process.lines)
-            assert len([line for line in lines if "not XML" in line]) == 1
+            assert len([line for line in lines if "not valid XML" in line]) == 1
         finally:
             node.destroy_node()
 
@@ -650,6 +652,11 @@ ROVER = """<robot name="rover">
     <cylinder radius="0.1" length="0.06"/></geometry><material name="black"/></visual></link>
   <link name="laser"><visual><geometry><cylinder radius="0.06" length="0.08"/></geometry>
     <material name="black"/></visual></link>
+  <joint name="left" type="continuous"><parent link="base_link"/><child link="left_wheel"/>
+  </joint>
+  <joint name="right" type="continuous"><parent link="base_link"/><child link="right_wheel"/>
+  </joint>
+  <joint name="laser" type="fixed"><parent link="base_link"/><child link="laser"/></joint>
 </robot>
 """
 

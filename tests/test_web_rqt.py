@@ -351,3 +351,17 @@ def test_a_bag_time_line_keeps_a_bounded_even_sample_of_its_messages() -> None:
     for stamp in (5, 7, 9):
         few.add(stamp)
     assert few.stamps() == [5, 7, 9]
+
+
+@pytest.mark.parametrize(
+    "text", ["2", "-2.5", "true", "[1, 2]", "[1.5, 2.5]", "[a, b]", "[]", "hi"]
+)
+def test_the_page_sends_what_ros2_param_set_sends(text: str) -> None:
+    """A text typed into the page for a parameter of the type `ros2 param set` reads it as
+    is sent as the same ParameterValue: one table of types (ros2cmd.param.api)."""
+    from ros2cmd.param.api import described_type
+    from ros2cmd.param.verb.set import typed_value
+    from ros_tutorials_web.forms import parameter_value
+
+    sent = typed_value("p", text)
+    assert parameter_value(text, described_type(sent.type)) == sent

@@ -37,27 +37,43 @@ from ros_tutorials_common.bounded import InputError, parameter_problem, read_par
 
 if TYPE_CHECKING:  # rclpy and the messages load when a command runs, not with the parser
     from rcl_interfaces.msg import Parameter as ParameterMsg
+    from rcl_interfaces.msg import ParameterValue
     from rclpy.parameter_client import AsyncParameterClient
     from rclpy.task import Future
 
 
+def parameter_types() -> dict[str, Any]:
+    """Each parameter type as `ros2 param describe` and `list --param-type` name it, with
+    rclpy's Parameter.Type for it."""
+    from rclpy.parameter import Parameter
+
+    kind = Parameter.Type
+    return {
+        "boolean": kind.BOOL,
+        "integer": kind.INTEGER,
+        "double": kind.DOUBLE,
+        "string": kind.STRING,
+        "byte array": kind.BYTE_ARRAY,
+        "boolean array": kind.BOOL_ARRAY,
+        "integer array": kind.INTEGER_ARRAY,
+        "double array": kind.DOUBLE_ARRAY,
+        "string array": kind.STRING_ARRAY,
+        "not set": kind.NOT_SET,
+    }
+
+
 def described_type(code: int) -> str:
     """How `ros2 param describe` and `list --param-type` name a parameter's type."""
-    from rcl_interfaces.msg import ParameterType
+    return next((n for n, kind in parameter_types().items() if kind.value == code), "unknown")
 
-    names = {
-        ParameterType.PARAMETER_BOOL: "boolean",
-        ParameterType.PARAMETER_INTEGER: "integer",
-        ParameterType.PARAMETER_DOUBLE: "double",
-        ParameterType.PARAMETER_STRING: "string",
-        ParameterType.PARAMETER_BYTE_ARRAY: "byte array",
-        ParameterType.PARAMETER_BOOL_ARRAY: "boolean array",
-        ParameterType.PARAMETER_INTEGER_ARRAY: "integer array",
-        ParameterType.PARAMETER_DOUBLE_ARRAY: "double array",
-        ParameterType.PARAMETER_STRING_ARRAY: "string array",
-        ParameterType.PARAMETER_NOT_SET: "not set",
-    }
-    return names.get(code, "unknown")
+
+def parameter_value(type_name: str, value: Any) -> ParameterValue:
+    """``value`` as the ParameterValue of the type named ``type_name`` (described_type's
+    names), filled by rclpy's Parameter: TypeError if it is not of that type, AssertionError
+    if the message refuses it (an integer beyond int64)."""
+    from rclpy.parameter import Parameter
+
+    return Parameter("value", parameter_types()[type_name], value).get_parameter_value()
 
 
 # One AsyncParameterClient per (tool run, node): its six service clients live as long as the

@@ -8,7 +8,7 @@ const LEVELS = ["DEBUG", "INFO", "WARN", "ERROR", "FATAL"];
 
 const $ = (id) => document.getElementById(id);
 // What the page shows, for a reader (and for the browser test) to look at.
-const state = { frames: {}, pictures: {}, logs: [], topic: null, plot: [], connected: false, tf: null };
+const state = { frames: {}, pictures: {}, logs: [], topic: null, plot: [], connected: false, live: false, tf: null };
 window.viewerState = state;
 let socket = null;
 
@@ -22,14 +22,18 @@ function connect() {
   url.search = location.search;
   socket = new WebSocket(url);
   socket.binaryType = "arraybuffer";
+  // "live" once the viewer's first graph has come: until then the page knows nothing of the
+  // ROS graph, and a glance (or a screenshot) at that moment must not read as an empty one.
   socket.onopen = () => {
     state.connected = true;
-    setStatus("live", true);
+    state.live = false;
+    setStatus("connected: waiting for the graph\u2026", false);
     if (state.topic) send({ watch: state.topic });
     askFrames();
   };
   socket.onclose = () => {
     state.connected = false;
+    state.live = false;
     setStatus("disconnected: is the viewer still running? retrying\u2026", false);
     setTimeout(connect, 1000);
   };
@@ -131,6 +135,10 @@ function followPictures(pictures) {
 function showGraph(message) {
   $("graph").innerHTML = message.svg; // made by the viewer from names it escaped
   followPictures(message.pictures);
+  if (!state.live) {
+    state.live = true;
+    setStatus("live", true);
+  }
   const select = $("topic-select");
   const chosen = select.value;
   select.replaceChildren(new Option("choose a topic\u2026", ""));

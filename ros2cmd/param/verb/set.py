@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 from ros2cmd import completion
 from ros2cmd.errors import ToolError, ToolFailure
 from ros2cmd.graph import Graph
-from ros2cmd.param.api import add_node_argument, set_each, with_reason
+from ros2cmd.param.api import add_node_argument, parameter_value, set_each, with_reason
 from ros_tutorials_common.bounded import parameter_problem
 
 if TYPE_CHECKING:
@@ -43,8 +43,6 @@ def typed_value(name: str, text: str) -> ParameterValue:
     rclpy's get_parameter_value does (2 an integer, 2.0 a double, true a boolean, a list of
     one of those an array); anything else, a mixed list or a mapping too, is the text itself.
     """
-    from rcl_interfaces.msg import ParameterType, ParameterValue
-
     from ros2cmd.messages import parse_yaml
 
     try:
@@ -54,24 +52,23 @@ def typed_value(name: str, text: str) -> ParameterValue:
     for item in value if isinstance(value, list) else [value]:
         if isinstance(item, int) and (problem := parameter_problem(name, item)):
             raise ToolError(f"cannot set {problem}")  # beyond int64: rclpy fails an assert
-    if isinstance(value, bool):
-        return ParameterValue(type=ParameterType.PARAMETER_BOOL, bool_value=value)
-    if isinstance(value, int):
-        return ParameterValue(type=ParameterType.PARAMETER_INTEGER, integer_value=value)
-    if isinstance(value, float):
-        return ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=value)
+    kind = _type_name(value)
+    return parameter_value(kind, value if kind != "string" or isinstance(value, str) else text)
+
+
+def _type_name(value: object) -> str:
+    """The parameter type a value typed as YAML is sent as (described_type's names)."""
+    for kind, scalar in ((bool, "boolean"), (int, "integer"), (float, "double")):
+        if isinstance(value, kind):
+            return scalar
     if isinstance(value, list):
-        for kind, code, field in (
-            (bool, ParameterType.PARAMETER_BOOL_ARRAY, "bool_array_value"),
-            (int, ParameterType.PARAMETER_INTEGER_ARRAY, "integer_array_value"),
-            (float, ParameterType.PARAMETER_DOUBLE_ARRAY, "double_array_value"),
-            (str, ParameterType.PARAMETER_STRING_ARRAY, "string_array_value"),
+        for kind, array in (
+            (bool, "boolean array"),
+            (int, "integer array"),
+            (float, "double array"),
+            (str, "string array"),
         ):
             # rclpy's tests in its order: [] is a boolean array, [1, true] no integer array
-            if all(
-                isinstance(item, kind) and (kind is bool) == isinstance(item, bool)
-                for item in value
-            ):
-                return ParameterValue(type=code, **{field: value})
-    text_value = value if isinstance(value, str) else text
-    return ParameterValue(type=ParameterType.PARAMETER_STRING, string_value=text_value)
+            if all(isinstance(i, kind) and (kind is bool) == isinstance(i, bool) for i in value):
+                return array
+    return "string"
