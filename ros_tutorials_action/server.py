@@ -62,9 +62,10 @@ class FibonacciActionServer(Node):
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
             # The book's r.sleep(), looking every 0.1 s: a cancel, a new goal or Ctrl-C ends it.
-            end = time.monotonic() + self.get_parameter("step_period").value
+            step_period = self.get_parameter("step_period").value
+            end = time.monotonic() + step_period
             while time.monotonic() < end and not self.should_stop(goal_handle):
-                time.sleep(0.1)
+                time.sleep(min(step_period, 0.1))
         if goal_handle.is_cancel_requested:  # the final state (a stopped goal: partial result)
             goal_handle.canceled()
             self.get_logger().info(f"{ACTION_NAME}: Canceled")
