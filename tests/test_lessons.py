@@ -126,6 +126,7 @@ def test_a_lesson_carries_no_hardening(path):
             kinds = {ast.unparse(kw.value) for kw in call.keywords if kw.arg == "type"}
             assert kinds <= {"int", "float"}, ast.unparse(call)
     assert "rclpy.ok()" not in ast.unparse(tree), "rclpy's shutdown race is handled elsewhere"
+    assert "signal_handler_options" not in ast.unparse(tree), "Ctrl-C is rclpy's, as upstream"
     assert not {"nan", "inf", "1e6"} & set(re.findall(r"[\w.]+", path.read_text()))
     assert not re.search(r"^import re$", path.read_text(), re.M), "numbers are argparse's int"
     if "ActionClient(" in path.read_text():
