@@ -13,8 +13,9 @@ takes data from TARGET into SOURCE) at the latest common time and prints::
     ...
 
 Until the frames are there it logs "Waiting for transform SOURCE ->  TARGET: <tf2's reason>"
-at each look (RATE times a second, at most once a second). No frames: the usage, status 1; a RATE that is not a number: one line on
-stderr, status 2 (3 with junk after a number), as the C++ tool.
+at each look (RATE times a second, at most once a second). No frames: the usage, status 1; a
+RATE that is not a number: one line on stderr, status 2 (3 with junk after a number), as the
+C++ tool.
 """
 
 from __future__ import annotations
