@@ -33,6 +33,7 @@ from std_msgs.msg import String
 
 from ros_tutorials_common import bounded, urdf
 from ros_tutorials_common.ros.node_main import run_node, user_args
+from ros_tutorials_common.shutdown import program_main
 
 NAME = "joint_state_publisher"
 PARAMETERS = {  # name: (default, type), as upstream declares them
@@ -277,6 +278,7 @@ class JointStatePublisher(Node):
                     joint["forward"] = True
 
 
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)

@@ -30,6 +30,7 @@ from std_msgs.msg import String
 
 from ros_tutorials_common import bounded, urdf
 from ros_tutorials_common.ros.node_main import run_node, user_args
+from ros_tutorials_common.shutdown import program_main
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
 from tf2_ros.transform_broadcaster import TransformBroadcaster
 
@@ -189,6 +190,7 @@ class RobotStatePublisher(Node):
                 self.publish_fixed_transforms()
 
 
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = user_args(argv)

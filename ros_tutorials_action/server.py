@@ -12,7 +12,6 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
-from rclpy.signals import SignalHandlerOptions
 from ros_tutorials_interfaces.action import Fibonacci
 
 ACTION_NAME = "ros_tutorial_action"
@@ -25,7 +24,6 @@ class FibonacciActionServer(Node):
         super().__init__("action_server", **node_kwargs)
         self.declare_parameter("step_period", 1.0)  # seconds per term
         self.current_goal = None  # the goal accepted last: any other running goal stops
-        self.running = []  # the goals whose execute callback runs
         self.action_server = ActionServer(  # reentrant: requests are answered while a goal runs
             self, Fibonacci, ACTION_NAME, self.execute,
             goal_callback=self.on_goal, handle_accepted_callback=self.on_accepted,
@@ -48,11 +46,11 @@ class FibonacciActionServer(Node):
         goal_handle.execute()
 
     def should_stop(self, goal_handle) -> bool:  # the book: isPreemptRequested() || !ros::ok()
-        return goal_handle.is_cancel_requested or goal_handle is not self.current_goal
+        preempted = goal_handle.is_cancel_requested or goal_handle is not self.current_goal
+        return preempted or not self.context.ok()
 
     def execute(self, goal_handle) -> Fibonacci.Result:
         """The execute callback: compute the sequence, one term and one feedback per step."""
-        self.running.append(goal_handle)
         order, sequence = goal_handle.request.order, [0, 1]  # the seeds
         self.get_logger().info(
             f"{ACTION_NAME}: Executing, creating fibonacci sequence of order {order} "
@@ -63,10 +61,11 @@ class FibonacciActionServer(Node):
                 break
             sequence.append(sequence[-1] + sequence[-2])
             goal_handle.publish_feedback(Fibonacci.Feedback(sequence=sequence))
-            # The book's r.sleep(), in short sleeps: a cancel, a new goal or Ctrl-C ends it at once.
-            end = time.monotonic() + self.get_parameter("step_period").value
+            # The book's r.sleep(), looking every 0.1 s: a cancel, a new goal or Ctrl-C ends it.
+            step_period = self.get_parameter("step_period").value
+            end = time.monotonic() + step_period
             while time.monotonic() < end and not self.should_stop(goal_handle):
-                time.sleep(0.05)
+                time.sleep(min(step_period, 0.1))
         if goal_handle.is_cancel_requested:  # the final state (a stopped goal: partial result)
             goal_handle.canceled()
             self.get_logger().info(f"{ACTION_NAME}: Canceled")
@@ -76,32 +75,19 @@ class FibonacciActionServer(Node):
         else:
             goal_handle.succeed()
             self.get_logger().info(f"{ACTION_NAME}: Succeeded")
-        self.running.remove(goal_handle)
         return Fibonacci.Result(sequence=sequence)
-
-    def destroy_node(self) -> None:  # a running goal uses this node: stop it first (5 s at most)
-        self.current_goal = None  # every running goal stops, as if preempted
-        end = time.monotonic() + 5.0
-        while self.running and time.monotonic() < end:
-            time.sleep(0.05)
-        self.action_server.destroy()
-        super().destroy_node()
 
 
 def main(args: list[str] | None = None) -> None:
-    # No rclpy signal handler: Ctrl-C raises KeyboardInterrupt, ROS stays up until goals stop.
-    rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
+    rclpy.init(args=args)  # initialise ROS 2 (reads --ros-args)
     node = FibonacciActionServer()  # create the node and its action server
-    executor = MultiThreadedExecutor(num_threads=4)  # a goal runs in one thread, requests in others
-    executor.add_node(node)
     try:
-        while True:  # spin: wait for goals and execute them, in short spins ...
-            executor.spin_once(timeout_sec=0.1)  # ... so that Python sees Ctrl-C between two
+        # spin: wait for goals and execute them, a goal in one thread, requests in the others
+        rclpy.spin(node, executor=MultiThreadedExecutor(num_threads=4))
     except (KeyboardInterrupt, ExternalShutdownException):
-        pass  # Ctrl-C: the normal way to stop (exit status 0)
+        pass  # Ctrl-C or SIGTERM: the normal way to stop (exit status 0)
     finally:
-        node.destroy_node()  # stops the running goal first
-        executor.shutdown()
+        node.destroy_node()
         rclpy.try_shutdown()  # shut ROS 2 down
 
 

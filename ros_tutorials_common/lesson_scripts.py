@@ -12,6 +12,10 @@ the stop it is. Two ways in, one ``start``:
   ``python -m ros_tutorials_common.lesson_scripts ros_tutorials_topic.talker ARGS``, which runs
   the module as ``python -m ros_tutorials_topic.talker ARGS`` would.
 
+A lesson whose thread outlives its spin (the action server's goal, in the thread of rclpy's
+MultiThreadedExecutor) makes rclpy report that thread's calls on the context Ctrl-C or SIGTERM
+shut down: ``RaceReports`` keeps those reports off standard error, for both ways in.
+
 A lesson file is plain rclpy and handles none of this, and its package imports nothing of the
 project: a learner's copy behaves like the original (docs/lesson-files.md). The lesson is
 imported by the name given, after the defaults, so nothing here imports a lesson package (the
@@ -20,7 +24,10 @@ lessons sit above this floor).
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import importlib
+import os
 import runpy
 import signal
 import sys
@@ -98,6 +105,93 @@ def start(main: Callable[[], Any]) -> Any:
             signal.signal(signal.SIGINT, previous_handler)
 
 
+# What rclpy prints of a thread that carries on after its signal handler shut ROS down under
+# the spin (an action server's goal, in the executor's thread): rclpy's action server reports
+# the goal's feedback, final state and result failing on the shut-down context, and rcl each
+# log line it could not publish to /rosout.
+RACE_REPORTS = (
+    "Failed to publish log message to rosout: ",
+    "]: Error raised in execute callback: ",  # and the traceback rclpy prints after it
+    "]: Failed to send result response ",
+    "]: Goal state not set, assuming aborted.",
+)
+FOLLOWED_BY_TRACEBACK = RACE_REPORTS[1]
+LONGEST_LINE = 1 << 16  # a longer line is passed on in parts, never held whole
+
+
+class RaceReports:
+    """The process's standard error (fd 2) through a thread of its own that passes it on,
+    except, once ROS is down, ``RACE_REPORTS`` and the traceback after an execute callback's
+    (judged when read: one written just before the stop goes too). ``close`` (at exit, once
+    the threads Python waits for have ended) puts standard error back and passes on the rest.
+    What the process writes in the instant before it is killed (SIGKILL, a crash) may be lost
+    with the thread."""
+
+    def __init__(self) -> None:
+        self.target = os.dup(2)
+        read_end, write_end = os.pipe()
+        os.dup2(write_end, 2)
+        os.close(write_end)
+        self.reader = os.fdopen(read_end, "rb", buffering=0)
+        self.traceback: str | None = None  # the state of a traceback after a race report
+        self.thread = threading.Thread(target=self._pass_on, name="stderr", daemon=True)
+        self.thread.start()
+
+    def _pass_on(self) -> None:
+        pending = b""
+        while chunk := self.reader.read(LONGEST_LINE):
+            *lines, pending = (pending + chunk).split(b"\n")
+            if len(pending) >= LONGEST_LINE:
+                lines.append(pending)
+                pending = b""
+            kept = [line for line in lines if not self._race_report(line.decode(errors="replace"))]
+            self._write(b"".join(line + b"\n" for line in kept))
+        self._write(pending)
+
+    def _race_report(self, line: str) -> bool:
+        if self.traceback == "inside":  # its frames are indented; its last line, the error, not
+            self.traceback = "inside" if line.startswith(" ") else None
+            return True
+        if self.traceback == "expected" and line.startswith("Traceback "):
+            self.traceback = "inside"
+            return True
+        if not any(report in line for report in RACE_REPORTS) or _ros_is_up():
+            return False
+        if FOLLOWED_BY_TRACEBACK in line:
+            self.traceback = "expected"
+        return True
+
+    def _write(self, data: bytes) -> None:
+        with contextlib.suppress(OSError):  # the reader has gone: so has what it would read
+            while data:
+                data = data[os.write(self.target, data) :]
+
+    def close(self) -> None:
+        with contextlib.suppress(OSError):
+            sys.stderr.flush()
+        os.dup2(self.target, 2)  # closes the pipe's last write end: the thread reads its end
+        self.thread.join(timeout=5.0)
+
+    @classmethod
+    def for_this_process(cls) -> None:
+        """From now until the process ends (none when standard error cannot be piped)."""
+        if os.isatty(2):  # rcutils colours its lines for a terminal: the pipe still leads there
+            os.environ.setdefault("RCUTILS_COLORIZED_OUTPUT", "1")
+        try:
+            reports = cls()
+        except OSError:
+            return
+        atexit.register(reports.close)
+
+
+def _ros_is_up() -> bool:
+    rclpy = sys.modules.get("rclpy")  # the lesson's: no report of rclpy's comes before it
+    try:
+        return rclpy is not None and rclpy.ok()
+    except Exception:  # the interpreter is ending: so is ROS
+        return False
+
+
 def run(module: str) -> int | None:
     """A lesson's console script: ``module``'s main(), started as ``start`` says."""
     return start(lambda: importlib.import_module(module).main())
@@ -118,7 +212,12 @@ class _Package:
     def __getattr__(self, module: str) -> Callable[[], int | None]:
         if module.startswith("__"):
             raise AttributeError(module)
-        return lambda: run(f"{self.name}.{module}")
+
+        def script() -> int | None:
+            RaceReports.for_this_process()
+            return run(f"{self.name}.{module}")
+
+        return script
 
 
 def __getattr__(name: str) -> _Package:
@@ -131,4 +230,5 @@ def __getattr__(name: str) -> _Package:
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(f"usage: python -m {THIS} PACKAGE.MODULE [ARGS ...]")
+    RaceReports.for_this_process()
     run_as_main(sys.argv[1], sys.argv[2:])

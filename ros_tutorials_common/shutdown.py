@@ -1,7 +1,8 @@
 """How a program of this project ends: on Ctrl-C, on SIGTERM, and when its output cannot be
 written. The one design for the tools (``ros2``, the ROS 1 spellings, rosbag, rosrun, the
 launcher, view_frames), the toolkit's nodes (tf2_echo, static_transform_publisher, tf2_monitor,
-mimic, draw_square, turtle_teleop_key), turtlesim, and the start of a lesson
+robot_state_publisher, joint_state_publisher, mimic, draw_square, turtle_teleop_key), turtlesim,
+the web servers, and the start of a lesson
 (``lesson_scripts``); docs/dev/architecture.md ("How a program stops") has the table. Its rclpy
 half is ``ros_tutorials_common.ros`` (``init``, ``node_stopped``, ``run_node``, ``SpinThread``).
 
@@ -10,8 +11,8 @@ half is ``ros_tutorials_common.ros`` (``init``, ``node_stopped``, ``run_node``, 
   output that cannot be written (a full device: ENOSPC, EIO ...) with one line and 1. A
   program that runs until stopped catches the stop itself and returns 0.
 - ``StopSignals``: for a program that must finish its work before it ends (turtlesim's node and
-  its PNG, a bag's summary, an action goal's cancel): SIGINT and SIGTERM are noted, and the
-  program's loop asks.
+  its PNG, a bag's summary, an action goal's cancel, a web server's tabs): SIGINT and SIGTERM
+  are noted, and the program's loop asks, or is woken (``wake``).
 - ``terminate_as_ctrl_c``: SIGTERM as Ctrl-C, for a wait without ROS's signal handler.
 - ``is_shutdown_race``: what rclpy raises when its signal handler shut ROS down under a spin or
   a publish: the stop, not a failure.

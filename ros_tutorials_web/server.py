@@ -1,7 +1,8 @@
 """A web server of this project beside its ROS node: aiohttp (HTTP and WebSockets on asyncio)
 on the main thread, the node spun by an executor in a thread of its own, the guard
-(guard.py) in front of every route. Ctrl-C and SIGTERM stop the event loop at once, which
-then closes the tabs, stops the server and ends ROS in order.
+(guard.py) in front of every route. Ctrl-C and SIGTERM are noted by shutdown.py's
+``StopSignals``, whose wake ends the event loop's wait at once; the loop then closes the tabs,
+stops the server and ends ROS in order.
 
 Another tool's server (a 3D view, a sliders page) is run the same way::
 
@@ -21,7 +22,6 @@ Another tool's server (a 3D view, a sliders page) is run the same way::
 from __future__ import annotations
 
 import asyncio
-import signal
 import socket
 import threading
 from collections.abc import Callable, Sequence
@@ -33,6 +33,7 @@ from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
 from ros_tutorials_common.ros import init
+from ros_tutorials_common.shutdown import StopSignals
 from ros_tutorials_web.guard import Guard, greeting
 
 Make = Callable[[asyncio.AbstractEventLoop], tuple[Node, web.Application]]
@@ -42,8 +43,8 @@ async def serve(sock: socket.socket, guard: Guard, make: Make, exposed: str, pat
     """Serve until Ctrl-C or SIGTERM, with the ROS node spinning in a thread of its own."""
     loop = asyncio.get_running_loop()
     stop = asyncio.Event()
-    for signum in (signal.SIGINT, signal.SIGTERM):
-        loop.add_signal_handler(signum, stop.set)
+    signals = StopSignals()  # Ctrl-C and SIGTERM noted (in this thread): the first ends the wait
+    signals.wake = lambda: loop.call_soon_threadsafe(stop.set)
     node, app = make(loop)
     executor = SingleThreadedExecutor()
     executor.add_node(node)
@@ -82,6 +83,7 @@ async def serve(sock: socket.socket, guard: Guard, make: Make, exposed: str, pat
         thread.join()
         executor.shutdown()
         node.destroy_node()
+        signals.restore()
 
 
 def run(

@@ -19,6 +19,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import QoSProfile
 from ros_tutorials_interfaces.action import Fibonacci
+from test_action import stop_server
 
 from ros_tutorials_action.server import ACTION_NAME, REQUESTS, FibonacciActionServer
 
@@ -43,10 +44,7 @@ def server(context):
     )
     thread.start()
     yield node
-    stop.set()
-    thread.join()
-    node.destroy_node()
-    executor.shutdown()
+    stop_server(node, executor, stop, thread)
 
 
 @pytest.fixture

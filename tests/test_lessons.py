@@ -126,6 +126,7 @@ def test_a_lesson_carries_no_hardening(path):
             kinds = {ast.unparse(kw.value) for kw in call.keywords if kw.arg == "type"}
             assert kinds <= {"int", "float"}, ast.unparse(call)
     assert "rclpy.ok()" not in ast.unparse(tree), "rclpy's shutdown race is handled elsewhere"
+    assert "signal_handler_options" not in ast.unparse(tree), "Ctrl-C is rclpy's, as upstream"
     assert not {"nan", "inf", "1e6"} & set(re.findall(r"[\w.]+", path.read_text()))
     assert not re.search(r"^import re$", path.read_text(), re.M), "numbers are argparse's int"
     if "ActionClient(" in path.read_text():
@@ -238,3 +239,34 @@ def test_lessons_packages_run_through_the_lesson_start():
     assert line[:3] == [sys.executable, "-m", "ros_tutorials_common.lesson_scripts"]
     assert packages.module_of(line) == "ros_tutorials_topic.talker"
     assert packages.module_of(packages.command("tf2_ros", "tf2_echo")) == "tf2_ros.tf2_echo"
+
+
+@pytest.mark.parametrize("ros", ["up", "shut down"])
+def test_rclpys_reports_of_a_thread_after_the_stop_are_not_printed_where_a_lesson_starts(
+    tmp_path, ros
+):
+    """An action server's goal thread carries on after rclpy's signal handler shut ROS down,
+    and rclpy reports its calls on the shut-down context: where the lesson starts, those
+    reports (and the traceback after one) are dropped once ROS is down, and only then."""
+    reports = (
+        "[ERROR] [1.5] [server.action_server]: Error raised in execute callback: failed\n"
+        "Failed to publish log message to rosout: publisher's context is invalid, at x.c:1\n"
+        "Traceback (most recent call last):\n"
+        '  File "server.py", line 1, in execute\n'
+        "RCLError: Failed get goal status array: feedback publisher is invalid\n"
+        "[WARN] [1.5] [server.action_server]: Failed to send result response (the client "
+        "may have gone away)\n"
+    )
+    (tmp_path / "goal_thread.py").write_text(
+        "import os, sys, rclpy\n"
+        "rclpy.init()\n"
+        f"{'rclpy.shutdown()' if ros == 'shut down' else ''}\n"
+        f"os.write(2, {reports!r}.encode())\n"
+        "print('the lesson goes on', file=sys.stderr)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": f"{tmp_path}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    result = subprocess.run(
+        lesson_scripts.command("goal_thread"), capture_output=True, text=True, env=env, timeout=60
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == (reports if ros == "up" else "") + "the lesson goes on\n"

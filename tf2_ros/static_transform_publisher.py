@@ -19,14 +19,14 @@ import string
 import sys
 from collections.abc import Sequence
 
-import rclpy
 from geometry_msgs.msg import TransformStamped
 from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 
 from ros_tutorials_common.quaternion import quaternion_from_rpy
-from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.ros import run_node, user_args
 from ros_tutorials_common.ros.node_main import UNNAMED_LOGGER
+from ros_tutorials_common.shutdown import program_main
 from tf2_ros.static_transform_broadcaster import StaticTransformBroadcaster
 
 USAGE = """\
@@ -194,8 +194,16 @@ class StaticTransformPublisher(Node):
             raise SameFrames("child_frame_id cannot equal frame_id")
         self.broadcaster = StaticTransformBroadcaster(self)
         self.broadcaster.sendTransform(transform)
+        t, r = transform.transform.translation, transform.transform.rotation
+        self.get_logger().info(
+            "Spinning until stopped - publishing transform\n"
+            f"translation: ('{t.x:f}', '{t.y:f}', '{t.z:f}')\n"
+            f"rotation: ('{r.x:f}', '{r.y:f}', '{r.z:f}', '{r.w:f}')\n"
+            f"from '{transform.header.frame_id}' to '{transform.child_frame_id}'"
+        )
 
 
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     try:
@@ -207,28 +215,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     if wants_help:
         print(USAGE)
         return 0
-    init(argv)
-    node = None
     try:
-        node = StaticTransformPublisher(transform)
-        t, r = transform.transform.translation, transform.transform.rotation
-        node.get_logger().info(
-            "Spinning until stopped - publishing transform\n"
-            f"translation: ('{t.x:f}', '{t.y:f}', '{t.z:f}')\n"
-            f"rotation: ('{r.x:f}', '{r.y:f}', '{r.z:f}', '{r.w:f}')\n"
-            f"from '{transform.header.frame_id}' to '{transform.child_frame_id}'"
-        )
-        rclpy.spin(node)
+        return run_node(lambda: StaticTransformPublisher(transform), argv)
     except SameFrames:
         return 1
-    except BaseException as error:
-        if not node_stopped(error):  # Ctrl-C, SIGTERM: the normal end
-            raise
-    finally:
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
 
 
 if __name__ == "__main__":

@@ -13,8 +13,9 @@ takes data from TARGET into SOURCE) at the latest common time and prints::
     ...
 
 Until the frames are there it logs "Waiting for transform SOURCE ->  TARGET: <tf2's reason>"
-once a second. No frames: the usage, status 1; a RATE that is not a number: one line on
-stderr, status 2 (3 with junk after a number), as the C++ tool.
+at each look (RATE times a second, at most once a second). No frames: the usage, status 1; a
+RATE that is not a number: one line on stderr, status 2 (3 with junk after a number), as the
+C++ tool.
 """
 
 from __future__ import annotations
@@ -22,13 +23,12 @@ from __future__ import annotations
 import math
 import re
 import sys
-import time
 from collections.abc import Sequence
 
-import rclpy
+from rclpy.node import Node
 from rclpy.time import Time
 
-from ros_tutorials_common.ros import init, node_stopped, user_args
+from ros_tutorials_common.ros import run_node, user_args
 from ros_tutorials_common.shutdown import program_main
 from tf2_py import TransformException
 from tf2_ros.buffer import Buffer
@@ -108,13 +108,44 @@ def format_transform(transform: object) -> str:
     )
 
 
-def pause(seconds: float) -> None:
-    """Sleep SECONDS, less if ROS shuts down meanwhile (SIGTERM: rclpy's handler shuts it down
-    and raises nothing here). Not Thread.join(timeout): a Ctrl-C inside one marks the thread
-    stopped while it runs (Python 3.11), and it is then not waited for at the end."""
-    deadline = time.monotonic() + seconds
-    while rclpy.ok() and (left := deadline - time.monotonic()) > 0:
-        time.sleep(min(left, 0.1))
+class TransformEcho(Node):
+    """tf2_echo's node, spun by ``run_node``: the C++ tool's loop (wait for the frames, then
+    echo, a rate.sleep() after each look) as a timer at the echo rate, the first look at once."""
+
+    def __init__(self, source: str, target: str, period: float) -> None:
+        super().__init__("tf2_echo")
+        self.source, self.target = source, target
+        self.buffer = Buffer()
+        self.listener = TransformListener(self.buffer, self)  # its subscriptions: this spin
+        self.found = False  # the frames were there once: from then on, echo
+        self.printed = False
+        self.create_timer(period, self.look)
+        self.look()
+
+    def look(self) -> None:
+        if not self.found:
+            possible, reason = self.buffer.can_transform_core(self.source, self.target, Time())
+            if not possible:
+                self.get_logger().info(
+                    f"Waiting for transform {self.source} ->  {self.target}: {reason}",
+                    throttle_duration_sec=1.0,
+                )
+                return
+            self.found = True
+        try:
+            print(
+                format_transform(
+                    self.buffer.lookup_transform_core(self.source, self.target, Time())
+                )
+            )
+            self.printed = True
+        except TransformException as error:
+            now = self.get_clock().now().nanoseconds / 1e9
+            print(f"Failure at {now:.3f}" if self.printed else f"Failure at {now:g}")
+            print(f"Exception thrown:{error}")
+            print("The current list of frames is:")
+            print(self.buffer.all_frames_as_string())
+        sys.stdout.flush()
 
 
 @program_main  # `tf2_echo a b | head`
@@ -130,46 +161,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         if parsed is None:
             return status
         rate = parsed
-    period = min(1.0 / rate, 86400.0)  # Python's sleep refuses a period of 1e300 s
-    source, target = args[0], args[1]
-    init(argv)
-    node = listener = None
-    try:
-        node = rclpy.create_node("tf2_echo")
-        buffer = Buffer()
-        listener = TransformListener(buffer, node, spin_thread=True)
-        logger = node.get_logger()
-        while rclpy.ok():
-            possible, reason = buffer.can_transform_core(source, target, Time())
-            if possible:
-                break
-            logger.info(
-                f"Waiting for transform {source} ->  {target}: {reason}", throttle_duration_sec=1.0
-            )
-            pause(min(period, 1.0))
-        printed = False
-        while rclpy.ok():
-            try:
-                print(format_transform(buffer.lookup_transform_core(source, target, Time())))
-                printed = True
-            except TransformException as error:
-                now = node.get_clock().now().nanoseconds / 1e9
-                print(f"Failure at {now:.3f}" if printed else f"Failure at {now:g}")
-                print(f"Exception thrown:{error}")
-                print("The current list of frames is:")
-                print(buffer.all_frames_as_string())
-            sys.stdout.flush()
-            pause(period)
-    except BaseException as error:
-        if not node_stopped(error):  # Ctrl-C, SIGTERM: the normal end
-            raise
-    finally:
-        if listener is not None:  # its thread must be done with the node before it goes
-            listener.stop_spinning()
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
+    period = min(1.0 / rate, 86400.0)  # rclpy's timer refuses a period of 1e300 s
+    return run_node(lambda: TransformEcho(args[0], args[1], period), argv)
 
 
 if __name__ == "__main__":

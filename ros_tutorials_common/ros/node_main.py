@@ -193,8 +193,10 @@ def init(
 
 
 def run_node(make_node: Callable[[], Node], argv: Sequence[str] | None = None) -> int:
-    """A program that is one node (turtlesim's mimic, draw_square): ``init``, make the node,
-    spin it until Ctrl-C or shutdown, destroy it, shut ROS down; the exit status, 0."""
+    """A program that is one node (turtlesim's mimic, draw_square, the tf2 tools,
+    robot_state_publisher): ``init``, make the node, spin it until Ctrl-C or shutdown, destroy
+    it, shut ROS down; the exit status, 0. An error of MAKE_NODE's, or of a callback, raises
+    after the same end."""
     init(argv)
     executor = SingleThreadedExecutor()  # made first: Ctrl-C may come as soon as the node is up
     node = None
