@@ -31,6 +31,7 @@ from aiohttp import WSMsgType, web
 
 from joint_state_publisher.joint_state_publisher import JointStatePublisher, StartError
 from ros_tutorials_common.ros.node_main import user_args
+from ros_tutorials_common.shutdown import program_main
 from ros_tutorials_web import guard, server
 from ros_tutorials_web.commands import open_window
 
@@ -179,6 +180,7 @@ def parse_args(argv: Sequence[str]) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     args = parse_args(user_args(argv))

@@ -32,6 +32,7 @@ from collections.abc import Callable, Sequence
 from ros2cmd.ros1 import rqt as terminal
 from ros_tutorials_common import completion
 from ros_tutorials_common.ros import user_args
+from ros_tutorials_common.shutdown import program_main
 from ros_tutorials_web import guard, viewer
 
 
@@ -60,6 +61,7 @@ def _browser(
 ) -> Callable[[Sequence[str] | None], int]:
     """A command that serves the view and opens it at /rqt#fragment (+ what extra adds)."""
 
+    @program_main
     def command(argv: Sequence[str] | None = None) -> int:
         full = list(sys.argv if argv is None else [prog, *argv])
         parser = _parser(prog, description)

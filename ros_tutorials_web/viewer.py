@@ -67,6 +67,7 @@ from rclpy.serialization import deserialize_message
 
 from ros2cmd.messages import message_to_ordered, message_to_yaml
 from ros_tutorials_common.ros import user_args
+from ros_tutorials_common.shutdown import program_main
 from ros_tutorials_web import guard, server
 from ros_tutorials_web.frames import AUTO, MAX_NAME
 from ros_tutorials_web.guard import Guard
@@ -301,6 +302,7 @@ def make_app(
     return app
 
 
+@program_main
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if argv is None else argv)
     return serve(argv, parse_args(user_args(argv)))

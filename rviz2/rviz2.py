@@ -23,6 +23,8 @@ import asyncio
 import sys
 from collections.abc import Sequence
 
+from ros_tutorials_common.shutdown import program_main
+
 DEFAULT_PORT = 8090  # when free; else any free port
 EXPOSED = "see the tf frames, the robot and every topic the 3D view shows (rviz2 publishes nothing)"
 
@@ -45,6 +47,7 @@ def parse_args(argv: Sequence[str], prog: str) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
+@program_main
 def main(argv: Sequence[str] | None = None, prog: str = "rviz2") -> int:
     from aiohttp import web
 

@@ -206,6 +206,7 @@ COMMANDS = {
         False,
         True,
     ),
+    "rviz2 (a web server)": ([str(BIN / "rviz2"), "--port", "0"], False, False),
     "roslaunch union.launch (the launcher and its children)": (
         [str(BIN / "roslaunch"), "ros_tutorials_topic", "union.launch"],
         True,
