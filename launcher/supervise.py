@@ -351,6 +351,10 @@ class Supervisor:
         elif step.kind == "shutdown":
             self.say(f"shutting down: {step.text}")
             self.ending, self.shutdown_reason = True, step.text
+        elif step.kind == "error":  # as ros2 launch's LaunchService reports what an action raised
+            reason = f"Caught exception in launch (see debug for traceback): {step.text}"
+            self.say(reason, "ERROR")
+            self.ending, self.shutdown_reason, self.failed = True, reason, True
         elif step.call is not None:
             for result in step.call(info):  # a Python launch file's handler: logs and shutdowns
                 self.do_step(result, info)

@@ -121,3 +121,29 @@ def test_using_event_handlers_as_the_page_describes(node_process):
     assert "[INFO] [launch.user]: learner closed the turtlesim window" in launch.output
     assert "[INFO] [launch.user]: Launch was asked to shutdown: Window closed" in launch.output
     assert "Traceback" not in launch.output, launch.output[-4000:]
+
+
+def test_using_event_handlers_without_user_fails_as_ros2_launch(node_process, monkeypatch):
+    # In a container USER is often unset: the page's EnvironmentVariable(name='USER') has no
+    # default, so ros2 launch's handler fails when the window closes; it says so at ERROR,
+    # shuts down with that reason (OnShutdown logs it) and exits 1.
+    monkeypatch.delenv("USER", raising=False)
+    env = {key: value for key, value in WORKSPACE.items() if key != "USER"}
+    launch = node_process(
+        "-m", "ros2cmd", "launch", "launch_tutorial", "example_event_handlers_launch.py", env=env
+    )
+    launch.wait_for_text("[INFO] [launch.user]: Spawn finished")
+    os.kill(_pid(launch.output, "turtlesim_node-1"), signal.SIGINT)
+    assert launch.wait() == 1
+    # ros2 launch's line; here the launch file's line is named before the reason
+    failure = (
+        re.escape("Caught exception in launch (see debug for traceback): ")
+        + (r"\S+/example_event_handlers_launch\.py:\d+: ")
+        + re.escape("environment variable 'USER' does not exist")
+    )
+    lines = launch.output.splitlines()
+    assert [line for line in lines if re.fullmatch(rf"\[ERROR\] \[launch\]: {failure}", line)]
+    asked = rf"\[INFO\] \[launch\.user\]: Launch was asked to shutdown: {failure}"
+    assert [line for line in lines if re.fullmatch(asked, line)], launch.output[-3000:]
+    assert "Window closed" not in launch.output  # the handler's later actions do not run
+    assert "Traceback" not in launch.output, launch.output[-4000:]
