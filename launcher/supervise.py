@@ -422,6 +422,7 @@ class Supervisor:
         if self.ros2 and child.name == spec.label:  # its first start: ros2 launch's name
             self.started += 1
             child.name = f"{spec.process_name}-{self.started}"
+            child.log_path = child.log_path.with_name(f"{child.name}.log")  # the screen's name
         # As roslaunch: stderr (where ROS 2 logging writes) always reaches the screen,
         # stdout only with output="screen"; the log file gets both.
         to_screen = spec.output in ("screen", "both")

@@ -89,6 +89,12 @@ def test_using_substitutions_yaml_changes_the_background_after_two_seconds(node_
     assert "Spawning turtle [turtle2] at x=[5.000000], y=[2.000000]" in launch.output
     value = ok("ros2", "param", "get", "/turtlesim2/sim", "background_r")
     assert value == "Integer value is: 200\n"
+    # Each process's output (the `ros2` commands' is not on the screen) is in the log folder
+    # under the name the screen gives it: ros2-2 is the spawn, ros2-3 and ros2-4 set the colour.
+    log_dir = Path(re.search(r"All log files can be found below (\S+)", launch.output)[1])
+    assert "turtlesim.srv.Spawn_Response(name='turtle2')" in (log_dir / "ros2-2.log").read_text()
+    for name in ("ros2-3", "ros2-4"):
+        assert (log_dir / f"{name}.log").read_text() == "Set parameter successful\n"
     assert launch.interrupt() == 130
 
 
