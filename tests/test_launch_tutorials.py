@@ -60,6 +60,10 @@ def test_multisim_launch_py_starts_two_simulators(node_process):
             launch.output
         )
     assert "[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)" in launch.output
+    # ros2 launch says nothing else of its own while it stops them
+    assert [line for line in launch.output.splitlines() if line.startswith("[INFO] [launch]")] == (
+        lines[:2]
+    )
     assert "Traceback" not in launch.output, launch.output[-4000:]
 
 
@@ -126,6 +130,7 @@ def test_using_event_handlers_as_the_page_describes(node_process):
     assert launch.wait() == 0
     assert "[INFO] [launch.user]: learner closed the turtlesim window" in launch.output
     assert "[INFO] [launch.user]: Launch was asked to shutdown: Window closed" in launch.output
+    assert "[INFO] [launch]: " not in launch.output.split("Spawn finished")[1]  # no line of its own
     assert "Traceback" not in launch.output, launch.output[-4000:]
 
 
