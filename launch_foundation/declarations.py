@@ -57,8 +57,10 @@ AT_START = When()
 @dataclass
 class Step:
     """Something the launch does besides starting a process, at a time ``when`` says: print a
-    message ("log"), shut the launch down ("shutdown", with its reason), or call a function of
-    a Python launch file with the event ("call"; it returns more steps, done at once)."""
+    message ("log"), shut the launch down ("shutdown", with its reason; "error", when an action
+    of an event handler failed: ros2 launch's ERROR line, the reason, exit status 1), or call a
+    function of a Python launch file with the event ("call"; it returns more steps, done at
+    once)."""
 
     when: When
     kind: str

@@ -349,8 +349,13 @@ class Supervisor:
         if step.kind == "log":
             self.say(step.text, who="launch.user")
         elif step.kind == "shutdown":
-            self.say(f"shutting down: {step.text}")
+            if not self.ros2:  # ros2 launch's Shutdown event says nothing of its own
+                self.say(f"shutting down: {step.text}")
             self.ending, self.shutdown_reason = True, step.text
+        elif step.kind == "error":  # as ros2 launch's LaunchService reports what an action raised
+            reason = f"Caught exception in launch (see debug for traceback): {step.text}"
+            self.say(reason, "ERROR")
+            self.ending, self.shutdown_reason, self.failed = True, reason, True
         elif step.call is not None:
             for result in step.call(info):  # a Python launch file's handler: logs and shutdowns
                 self.do_step(result, info)
@@ -418,6 +423,7 @@ class Supervisor:
         if self.ros2 and child.name == spec.label:  # its first start: ros2 launch's name
             self.started += 1
             child.name = f"{spec.process_name}-{self.started}"
+            child.log_path = child.log_path.with_name(f"{child.name}.log")  # the screen's name
         # As roslaunch: stderr (where ROS 2 logging writes) always reaches the screen,
         # stdout only with output="screen"; the log file gets both.
         to_screen = spec.output in ("screen", "both")
@@ -634,7 +640,7 @@ class Supervisor:
         for child in self.children:
             child.restart_at = None
         alive = [child for child in self.children if child.process is not None]
-        if alive:
+        if alive and not self.ros2:  # ros2 launch prints each one's end instead (below)
             self.say(f"stopping {len(alive)} process(es)")
         for child in alive:
             self._escalate(child)
@@ -652,7 +658,7 @@ class Supervisor:
                     self._escalate(child)
             self.hurry = False
             time.sleep(POLL_SECONDS)
-        if count:
+        if count and not self.ros2:
             self.say(f"all {count} process(es) stopped")
 
     def _say_escalation(self, child: Child, then: signal.Signals, seconds: str) -> None:

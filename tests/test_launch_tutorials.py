@@ -60,6 +60,10 @@ def test_multisim_launch_py_starts_two_simulators(node_process):
             launch.output
         )
     assert "[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)" in launch.output
+    # ros2 launch says nothing else of its own while it stops them
+    assert [line for line in launch.output.splitlines() if line.startswith("[INFO] [launch]")] == (
+        lines[:2]
+    )
     assert "Traceback" not in launch.output, launch.output[-4000:]
 
 
@@ -89,6 +93,12 @@ def test_using_substitutions_yaml_changes_the_background_after_two_seconds(node_
     assert "Spawning turtle [turtle2] at x=[5.000000], y=[2.000000]" in launch.output
     value = ok("ros2", "param", "get", "/turtlesim2/sim", "background_r")
     assert value == "Integer value is: 200\n"
+    # Each process's output (the `ros2` commands' is not on the screen) is in the log folder
+    # under the name the screen gives it: ros2-2 is the spawn, ros2-3 and ros2-4 set the colour.
+    log_dir = Path(re.search(r"All log files can be found below (\S+)", launch.output)[1])
+    assert "turtlesim.srv.Spawn_Response(name='turtle2')" in (log_dir / "ros2-2.log").read_text()
+    for name in ("ros2-3", "ros2-4"):
+        assert (log_dir / f"{name}.log").read_text() == "Set parameter successful\n"
     assert launch.interrupt() == 130
 
 
@@ -120,4 +130,31 @@ def test_using_event_handlers_as_the_page_describes(node_process):
     assert launch.wait() == 0
     assert "[INFO] [launch.user]: learner closed the turtlesim window" in launch.output
     assert "[INFO] [launch.user]: Launch was asked to shutdown: Window closed" in launch.output
+    assert "[INFO] [launch]: " not in launch.output.split("Spawn finished")[1]  # no line of its own
+    assert "Traceback" not in launch.output, launch.output[-4000:]
+
+
+def test_using_event_handlers_without_user_fails_as_ros2_launch(node_process, monkeypatch):
+    # In a container USER is often unset: the page's EnvironmentVariable(name='USER') has no
+    # default, so ros2 launch's handler fails when the window closes; it says so at ERROR,
+    # shuts down with that reason (OnShutdown logs it) and exits 1.
+    monkeypatch.delenv("USER", raising=False)
+    env = {key: value for key, value in WORKSPACE.items() if key != "USER"}
+    launch = node_process(
+        "-m", "ros2cmd", "launch", "launch_tutorial", "example_event_handlers_launch.py", env=env
+    )
+    launch.wait_for_text("[INFO] [launch.user]: Spawn finished")
+    os.kill(_pid(launch.output, "turtlesim_node-1"), signal.SIGINT)
+    assert launch.wait() == 1
+    # ros2 launch's line; here the launch file's line is named before the reason
+    failure = (
+        re.escape("Caught exception in launch (see debug for traceback): ")
+        + (r"\S+/example_event_handlers_launch\.py:\d+: ")
+        + re.escape("environment variable 'USER' does not exist")
+    )
+    lines = launch.output.splitlines()
+    assert [line for line in lines if re.fullmatch(rf"\[ERROR\] \[launch\]: {failure}", line)]
+    asked = rf"\[INFO\] \[launch\.user\]: Launch was asked to shutdown: {failure}"
+    assert [line for line in lines if re.fullmatch(asked, line)], launch.output[-3000:]
+    assert "Window closed" not in launch.output  # the handler's later actions do not run
     assert "Traceback" not in launch.output, launch.output[-4000:]

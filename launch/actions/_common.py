@@ -68,7 +68,7 @@ def lazy_step(
 ) -> Step:
     """A step of an event handler whose text is performed when the event happens, with the
     event in ``context.locals``; a substitution that fails then shuts the launch down with
-    its one line, as it would end ros2 launch."""
+    its one line at ERROR, as it ends ros2 launch (status 1)."""
 
     def call(info: dict) -> list[Step]:
         from launch.event_handlers import first_event
@@ -80,7 +80,7 @@ def lazy_step(
         try:
             return [Step(context.when, kind, text(), where=action.where)]
         except LaunchError as error:
-            return [Step(context.when, "shutdown", str(error), where=action.where)]
+            return [Step(context.when, "error", str(error), where=action.where)]
 
     return Step(context.when, "call", kind, call=call, where=action.where)
 

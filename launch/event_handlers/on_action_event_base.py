@@ -98,7 +98,7 @@ def run_handler_function(
         )
     except Exception as error:  # the launch file's code: its own line, then shut down
         line = _user_line(error) or handler.where
-        return [Step(when, "shutdown", f"{line}: the event handler raised "
+        return [Step(when, "error", f"{line}: the event handler raised "
                      f"{type(error).__name__}: {error}")]  # fmt: skip
     steps = []
     results = result if isinstance(result, (list, tuple)) else [result] if result else []

@@ -48,5 +48,5 @@ class EnvironmentVariable(Substitution):
         if value is not None:
             return value
         if self.default_value is None:
-            raise SubstitutionFailure(f"{self.where}: environment variable {name} is not set")
+            raise SubstitutionFailure(f"{self.where}: environment variable '{name}' does not exist")
         return perform(self.default_value, context)
