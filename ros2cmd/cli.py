@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 from ros2cmd.errors import ToolError, rclpy_error
 from ros2cmd.sub_verbs import VERB_HELP
 from ros_tutorials_common import shutdown
-from ros_tutorials_common.cli import EXIT_INTERRUPTED, positive_seconds
+from ros_tutorials_common.cli import EXIT_INTERRUPTED, JazzyArgumentParser, positive_seconds
 from ros_tutorials_common.dds import environment_problem
 from ros_tutorials_common.wait import Interrupted
 
@@ -116,7 +116,7 @@ def help_parser() -> argparse.ArgumentParser:
 
 
 def _ros2_parser() -> tuple[argparse.ArgumentParser, argparse._SubParsersAction]:
-    parser = argparse.ArgumentParser(
+    parser = JazzyArgumentParser(  # its verbs' and their commands' parsers are JazzyArgumentParser
         prog="ros2",
         description="ros2 is an extensible command-line tool for ROS 2.",
         epilog="Call `ros2 <command> -h` for more detailed usage.",

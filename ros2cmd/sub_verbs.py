@@ -7,6 +7,8 @@ from __future__ import annotations
 import argparse
 from types import ModuleType
 
+from ros_tutorials_common.cli import JazzyRawDescriptionHelpFormatter
+
 # Each verb's line in `ros2 -h`, ros2cli's words: the verbs register their parsers with it, and
 # `ros2 -h` prints it without loading any verb's module (cli.help_parser).
 VERB_HELP = {
@@ -50,7 +52,7 @@ def add_sub_verbs(
         if listed_in_description:
             texts = {
                 "description": module.HELP,
-                "formatter_class": argparse.RawDescriptionHelpFormatter,
+                "formatter_class": JazzyRawDescriptionHelpFormatter,
             }
         else:
             texts = {"help": module.HELP}

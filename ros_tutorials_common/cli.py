@@ -1,6 +1,6 @@
 """Command-line plumbing shared by the tutorial clients and the tools: argument types that
-refuse bad values with a clear usage error, and the exit status of an interrupted command
-(how a program ends: shutdown.py).
+refuse bad values with a clear usage error, the exit status of an interrupted command (how a
+program ends: shutdown.py), and help laid out as ROS 2 Jazzy's tools print it on any Python.
 
     parser.add_argument("order", type=signed_int(32))
     parser.add_argument("--timeout", type=positive_seconds, default=5.0)
@@ -20,6 +20,43 @@ MAX_SECONDS = 1e6
 # What the book's C++ clients read with atoll: ASCII digits with an optional sign. Python's int()
 # would also take "1_000", " 5 " and Arabic-Indic digits; the clients refuse those.
 _INTEGER = re.compile(r"[+-]?[0-9]+")
+
+
+class JazzyHelpFormatter(argparse.HelpFormatter):
+    """Help laid out by Python 3.12's argparse, ROS 2 Jazzy's (Ubuntu 24.04), on every Python.
+
+    Python 3.13's argparse measures a sub-command at its own deeper indent (the help column of
+    `ros2 -h` moves right and `interface` no longer has a line of its own) and names an option's
+    value once (`-s, --storage {mcap}`). Here, as on 3.12, a sub-command is measured at its
+    parent's indent and every spelling of an option names its value (`-s {mcap}, --storage
+    {mcap}`). On 3.10 to 3.12 this is argparse's own layout.
+    """
+
+    def add_argument(self, action: argparse.Action) -> None:
+        widest = self._action_max_length
+        super().add_argument(action)
+        if action.help is not argparse.SUPPRESS:
+            shown = [action, *getattr(action, "_get_subactions", list)()]
+            longest = max(len(self._format_action_invocation(each)) for each in shown)
+            self._action_max_length = max(widest, longest + self._current_indent)
+
+    def _format_action_invocation(self, action: argparse.Action) -> str:
+        if not action.option_strings or action.nargs == 0:
+            return super()._format_action_invocation(action)
+        value = self._format_args(action, self._get_default_metavar_for_optional(action))
+        return ", ".join(f"{option} {value}" for option in action.option_strings)
+
+
+class JazzyRawDescriptionHelpFormatter(JazzyHelpFormatter, argparse.RawDescriptionHelpFormatter):
+    """JazzyHelpFormatter, with the description printed as written (`ros2 topic -h`)."""
+
+
+class JazzyArgumentParser(argparse.ArgumentParser):
+    """A parser whose help is JazzyHelpFormatter's unless told otherwise; its sub-parsers
+    (add_subparsers makes them of the parser's own class) are too."""
+
+    def __init__(self, *args, formatter_class=JazzyHelpFormatter, **kwargs) -> None:
+        super().__init__(*args, formatter_class=formatter_class, **kwargs)
 
 
 def signed_int(bits: int) -> Callable[[str], int]:

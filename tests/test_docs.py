@@ -141,3 +141,20 @@ def test_the_readme_fits_and_points_to_the_course():
     assert count <= README_MAX_LINES, f"README.md has {count} lines, at most {README_MAX_LINES}"
     assert "(docs/README.md)" in readme
     assert "make run" in readme and "make test" in readme
+
+
+def test_the_readme_names_the_pythons_the_whole_suite_passed_on():
+    """The README's Prerequisites name as the Python to use exactly those whose whole suite
+    passed, as the table in docs/dev/testing.md ("Pythons") records each run."""
+    table = (DOCS / "dev" / "testing.md").read_text().split("\n## Pythons\n", 1)[1]
+    rows = re.findall(r"^\| 3\..*$", table, re.M)
+    results = [re.match(r"\| (3\.\d+)\.\d+ \| (passed|not passed|not run) \|", row) for row in rows]
+    assert rows and all(results), f"a Python row without passed, not passed or not run: {rows}"
+    passed = {found[1] for found in results if found[2] == "passed"}
+    readme = (ROOT / "README.md").read_text()
+    line = re.search(r"^- Linux x86_64 with Python (.+?) \(`python3`", readme, re.M)
+    assert line, "the README's Prerequisites no longer say which Python"
+    named = set(re.findall(r"3\.\d+", line[1]))
+    assert named == passed, (
+        f"README names {sorted(named)}; the whole suite passed on {sorted(passed)}"
+    )

@@ -3,12 +3,17 @@ ros2cli does, and a verb it does not have is a usage error naming the ones it ha
 
 from __future__ import annotations
 
+import argparse
 import os
 import subprocess
 import sys
+from collections.abc import Iterator
 
 import pytest
 from helpers import run
+
+from ros2cmd import cli
+from ros_tutorials_common.cli import JazzyHelpFormatter
 
 
 def test_ros2_help_lists_the_verbs_of_ros2cli():
@@ -66,3 +71,27 @@ def test_ros2_launch_does_not_load_rclpy():
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().splitlines()[-1] == "False"
+
+
+def _parsers(parser: argparse.ArgumentParser) -> Iterator[argparse.ArgumentParser]:
+    """The parser and every verb's and command's parser below it."""
+    yield parser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in dict.fromkeys(action.choices.values()):  # `wtf` is doctor's parser too
+                yield from _parsers(sub)
+
+
+def test_help_is_laid_out_as_jazzy_prints_it_on_any_python(capsys):
+    """ROS 2 Jazzy's help is Python 3.12's argparse layout (Ubuntu 24.04). Python 3.13's moves
+    `ros2 -h`'s help column and names an option's value once; `ros2` keeps Jazzy's layout."""
+    whole = cli.build_parser()
+    for parser in _parsers(whole):
+        assert issubclass(parser.formatter_class, JazzyHelpFormatter), parser.prog
+    assert "\n    interface\n              Show information about ROS interfaces\n" in (
+        cli.help_parser().format_help()
+    )
+    with pytest.raises(SystemExit):
+        whole.parse_args(["bag", "info", "-h"])
+    shown = capsys.readouterr().out
+    assert "\n  -s {mcap,sqlite3}, --storage {mcap,sqlite3}\n" in shown, shown

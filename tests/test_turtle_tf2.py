@@ -81,7 +81,11 @@ def test_demo_turtle2_follows_turtle1_and_view_frames_draws_the_tree(
         turtles.until(
             "turtle2", lambda at: math.dist(at, TURTLE1) < 1.0, "turtle2 to reach turtle1"
         )
-        shown = run("ros2", "run", "tf2_tools", "view_frames", cwd=str(tmp_path))
+        # view_frames listens 5 s by design, then starts its layout: FOLLOW_TIMEOUT, not run's
+        # 30 s, which a 6-worker suite on a loaded 2-core machine can use up.
+        shown = run(
+            "ros2", "run", "tf2_tools", "view_frames", cwd=str(tmp_path), timeout=FOLLOW_TIMEOUT
+        )
         # The page's tf2_echo: turtle1 seen from turtle2, which has just reached it.
         echo = ros2(node_process, "run", "tf2_ros", "tf2_echo", "turtle2", "turtle1")
         try:

@@ -25,6 +25,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from ros2cmd.sub_verbs import VERB_HELP
+from ros_tutorials_common.cli import JazzyRawDescriptionHelpFormatter
 
 if TYPE_CHECKING:  # the checks load with the command, not to build the parser
     from ros2cmd.doctor.api import Report, Result
@@ -144,7 +145,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
             name,
             help=VERB_HELP[name],
             description=HELP,
-            formatter_class=argparse.RawDescriptionHelpFormatter,
+            formatter_class=JazzyRawDescriptionHelpFormatter,
         )
         group = parser.add_mutually_exclusive_group()
         group.add_argument("--report", "-r", action="store_true", help="Print all reports.")

@@ -13,6 +13,7 @@ from ros2cmd.sub_verbs import VERB_HELP, add_sub_verbs
 from ros2cmd.topic.verb import bw, delay, echo, find, hz, info, pub
 from ros2cmd.topic.verb import list as list_verb
 from ros2cmd.topic.verb import type as type_verb
+from ros_tutorials_common.cli import JazzyRawDescriptionHelpFormatter
 
 # `ros2 topic -h` lists them in this order.
 SUB_VERBS = {
@@ -34,7 +35,7 @@ def register(verbs: argparse._SubParsersAction, common: argparse.ArgumentParser)
         "topic",
         help=VERB_HELP["topic"],
         description=VERB_HELP["topic"],
-        formatter_class=argparse.RawDescriptionHelpFormatter,
+        formatter_class=JazzyRawDescriptionHelpFormatter,
     )
     parser.add_argument(
         "--include-hidden-topics", action="store_true", help="Consider hidden topics as well"
