@@ -296,6 +296,19 @@ def test_old_data_is_refused_with_tf2s_warning(capfd):
     ) in err
 
 
+def test_a_full_cache_keeps_its_window_as_old_entries_are_dropped():
+    """At 100 Hz into a 1 s cache, over many times its length: every insert after the first
+    second drops one entry, the pruned ones are removed in bulk, and the data reads back."""
+    cache = TimeCache(max_storage=10**9)
+    for step in range(5_000):
+        cache.insert(step * 10**7, (1, (float(step), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+        assert len(cache._stamps) <= 2 * len(cache) + 64
+    assert len(cache) == 102  # 1 s before the previous newest, and the newest
+    assert cache.get_data(0) == (4999 * 10**7, (1, (4999.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+    assert cache.get_data(4900 * 10**7 + 5 * 10**6)[1][1] == (4900.5, 0.0, 0.0)
+    assert cache.oldest_stamp() == 4898 * 10**7
+
+
 def test_memory_is_bounded_by_the_cache_length():
     cache = TimeCache(max_storage=10 * 10**9)
     entry = (1, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))

@@ -14,6 +14,7 @@ rotation).
 from __future__ import annotations
 
 import math
+from array import array
 from bisect import bisect_right
 
 from ros_tutorials_common.quaternion import Quaternion, Vector
@@ -24,6 +25,7 @@ Entry = tuple[int, Vector, Quaternion]
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
 ZERO: Vector = (0.0, 0.0, 0.0)
 NANOSECONDS = 1_000_000_000
+WIDTH = 7  # the values of one entry in TimeCache's array: translation and rotation
 
 
 def display_time(nanoseconds: int) -> str:
@@ -70,18 +72,27 @@ class CacheMiss(Exception):
 
 
 class TimeCache:
-    """A frame's transforms over the last ``max_storage`` nanoseconds, oldest first."""
+    """A frame's transforms over the last ``max_storage`` nanoseconds, oldest first.
 
-    __slots__ = ("_entries", "_stamps", "_start", "max_storage")
+    Kept in flat arrays (stamps, parents, and seven doubles a transform: translation, rotation),
+    not as Python objects: a fast broadcaster's 10 s of data is then a few arrays rather than
+    a million tuples and floats, each allocated on insert and freed when pruned."""
+
+    __slots__ = ("_parents", "_stamps", "_start", "_values", "max_storage")
 
     def __init__(self, max_storage: int) -> None:
         self.max_storage = max_storage
-        self._stamps: list[int] = []
-        self._entries: list[Entry] = []
+        self._stamps = array("q")
+        self._parents = array("q")
+        self._values = array("d")  # WIDTH values an entry: x, y, z, qx, qy, qz, qw
         self._start = 0  # entries before this are pruned, removed in bulk (see _prune)
 
     def __len__(self) -> int:
         return len(self._stamps) - self._start
+
+    def _entry(self, index: int) -> Entry:
+        v, at = self._values, index * WIDTH
+        return self._parents[index], (v[at], v[at + 1], v[at + 2]), tuple(v[at + 3 : at + 7])
 
     def insert(self, stamp: int, entry: Entry) -> bool:
         """Add a transform; False when it is older than the cache keeps (tf2's TF_OLD_DATA)."""
@@ -89,55 +100,66 @@ class TimeCache:
         if len(stamps) > self._start:
             horizon = stamps[-1] - self.max_storage
             if stamps[self._start] < horizon:
-                self._prune(stamps[-1])
+                self._prune(horizon)
             if stamp < horizon:
                 return False
-        if not stamps or stamp >= stamps[-1]:
-            position = len(stamps)
+        end = len(stamps)  # after _prune, which may have dropped the pruned entries
+        if not end or stamp >= stamps[-1]:
+            position = end
         else:
             position = bisect_right(stamps, stamp, self._start)
         same = position - 1
         while same >= self._start and stamps[same] == stamp:
-            if self._entries[same] == entry:
+            if self._entry(same) == entry:
                 return True  # the very same data again: kept once, as tf2 does
             same -= 1
-        stamps.insert(position, stamp)
-        self._entries.insert(position, entry)
+        parent, translation, rotation = entry
+        if position == end:
+            stamps.append(stamp)
+            self._parents.append(parent)
+            self._values.extend(translation)
+            self._values.extend(rotation)
+        else:
+            stamps.insert(position, stamp)
+            self._parents.insert(position, parent)
+            at = position * WIDTH
+            self._values[at:at] = array("d", (*translation, *rotation))
         return True
 
-    def _prune(self, latest: int) -> None:
+    def _prune(self, horizon: int) -> None:
         stamps, start = self._stamps, self._start
-        horizon = latest - self.max_storage
         while start < len(stamps) and stamps[start] < horizon:
             start += 1
-        # Drop the pruned entries when they are half the list: memory stays within twice the
-        # cache, and a fast broadcaster does not pay a list shift on every message.
+        # Drop the pruned entries when they are half the arrays: memory stays within twice the
+        # cache, and a fast broadcaster does not pay a shift on every message.
         if start > 32 and 2 * start > len(stamps):
             del stamps[:start]
-            del self._entries[:start]
+            del self._parents[:start]
+            del self._values[: start * WIDTH]
             start = 0
         self._start = start
 
     def get_data(self, time: int) -> tuple[int, Entry]:
         """(stamp, entry) at TIME (0: the newest), interpolated between two entries with one
         parent; raises CacheMiss with tf2's message when TIME is outside the data."""
-        stamps, entries, start = self._stamps, self._entries, self._start
-        if start == len(stamps):
+        stamps, start = self._stamps, self._start
+        last = len(stamps) - 1
+        if start > last:
             raise CacheMiss("")  # tf2 says nothing more for an empty cache
         if time == 0:
-            return stamps[-1], entries[-1]
-        if len(stamps) - start == 1:
+            return stamps[last], self._entry(last)
+        if last == start:
             if stamps[start] == time:
-                return time, entries[start]
+                return time, self._entry(start)
             raise CacheMiss(
                 f"Lookup would require extrapolation at time {display_time(time)}, "
                 f"but only time {display_time(stamps[start])} is in the buffer"
             )
-        latest, earliest = stamps[-1], stamps[start]
+        latest, earliest = stamps[last], stamps[start]
         if time == latest:
-            return time, entries[-1]
+            return time, self._entry(last)
         if time == earliest:
-            return time, entries[start]
+            return time, self._entry(start)
         if time > latest:
             raise CacheMiss(
                 "Lookup would require extrapolation into the future.  Requested time "
@@ -150,7 +172,7 @@ class TimeCache:
             )
         newer = bisect_right(stamps, time, start)
         older = newer - 1
-        old, new = entries[older], entries[newer]
+        old, new = self._entry(older), self._entry(newer)
         if old[0] != new[0]:  # the parent changed in between: the older data holds
             return stamps[older], old
         span = stamps[newer] - stamps[older]
@@ -164,7 +186,7 @@ class TimeCache:
     def latest_time_and_parent(self) -> tuple[int, int]:
         if self._start == len(self._stamps):
             return 0, 0
-        return self._stamps[-1], self._entries[-1][0]
+        return self._stamps[-1], self._parents[-1]
 
     def latest_stamp(self) -> int:
         return self._stamps[-1] if len(self) else 0
@@ -173,8 +195,9 @@ class TimeCache:
         return self._stamps[self._start] if len(self) else 0
 
     def clear(self) -> None:
-        self._stamps.clear()
-        self._entries.clear()
+        del self._stamps[:]
+        del self._parents[:]
+        del self._values[:]
         self._start = 0
 
 
